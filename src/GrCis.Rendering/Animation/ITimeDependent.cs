@@ -1,0 +1,14 @@
+using System;
+
+namespace Rendering;
+
+/// <summary>Anything animated. Each render thread gets its own <see cref="ICloneable.Clone"/> ("clone on write").</summary>
+public interface ITimeDependent : ICloneable
+{
+  double Start { get; set; }
+
+  double End { get; set; }
+
+  /// <summary>Current time; setting it moves the object (and its time-dependent parts).</summary>
+  double Time { get; set; }
+}

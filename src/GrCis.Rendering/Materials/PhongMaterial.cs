@@ -1,0 +1,74 @@
+using System;
+
+namespace Rendering;
+
+/// <summary>Phong material: ambient, diffuse and specular coefficients, shininess, transparency and index of refraction.</summary>
+[Serializable]
+public class PhongMaterial : IMaterial
+{
+  public double[] Color { get; set; }
+
+  /// <summary>Ambient coefficient.</summary>
+  public double Ka { get; set; }
+
+  /// <summary>Diffuse coefficient.</summary>
+  public double Kd { get; set; }
+
+  /// <summary>Specular coefficient (also the weight of the mirrored ray).</summary>
+  public double Ks { get; set; }
+
+  /// <summary>Specular exponent (shininess).</summary>
+  public int H { get; set; }
+
+  public double Kt { get; set; }
+
+  /// <summary>Weight of Schlick's Fresnel approximation: 0 = pure Phong, 1 = full Schlick.</summary>
+  public double Sch { get; set; }
+
+  /// <summary>Cosine of the critical angle for total internal reflection (0 when n ≤ 1).</summary>
+  public double cosTotal;
+
+  double refraction;
+
+  /// <summary>Absolute index of refraction; also updates <see cref="cosTotal"/>.</summary>
+  public double n
+  {
+    get => refraction;
+    set
+    {
+      refraction = value;
+      cosTotal = value > 1.0 ? Math.Sqrt(value * value - 1.0) / value : 0.0;
+    }
+  }
+
+  public PhongMaterial(double[] color, double ka, double kd, double ks, int h, double schlick = 1.0)
+  {
+    ArgumentNullException.ThrowIfNull(color);
+    Color = color;
+    Ka = ka;
+    Kd = kd;
+    Ks = ks;
+    H = h;
+    Kt = 0.0;
+    Sch = schlick;
+    n = 1.5;
+  }
+
+  /// <summary>The default material: warm yellow, ka 0.2, kd 0.7, ks 0.2, h 16.</summary>
+  public PhongMaterial() : this(new[] { 1.0, 0.9, 0.4 }, 0.2, 0.7, 0.2, 16) { }
+
+  public PhongMaterial(PhongMaterial m)
+  {
+    ArgumentNullException.ThrowIfNull(m);
+    Color = (double[])m.Color.Clone();
+    Ka = m.Ka;
+    Kd = m.Kd;
+    Ks = m.Ks;
+    H = m.H;
+    Kt = m.Kt;
+    Sch = m.Sch;
+    n = m.n;
+  }
+
+  public virtual object Clone() => new PhongMaterial(this);
+}

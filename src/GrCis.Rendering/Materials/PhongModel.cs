@@ -1,0 +1,88 @@
+using System;
+using MathSupport;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// The Phong reflectance model as GrCis defines it, with an optional Schlick weight that moves
+/// energy from the diffuse and transmitted parts into the specular one at grazing angles.
+/// </summary>
+[Serializable]
+public class PhongModel : IReflectanceModel
+{
+  public IMaterial DefaultMaterial() => new PhongMaterial();
+
+  public double[]? ColorReflection(Intersection intersection, Vector3d input, Vector3d output, ReflectionComponent comp) =>
+    ColorReflection(intersection.Material!, intersection.Normal, input, output, comp);
+
+  public double[]? ColorReflection(IMaterial material, Vector3d normal, Vector3d input, Vector3d output, ReflectionComponent comp)
+  {
+    if (material is not PhongMaterial mat)
+      return null;
+
+    int bands = mat.Color.Length;
+    double[] result = new double[bands];
+    bool viewOut = Vector3d.Dot(output, normal) > 0.0;
+
+    // Ambient light has no direction.
+    if (input.X == 0.0 && input.Y == 0.0 && input.Z == 0.0)
+    {
+      double coef = viewOut ? mat.Ka : mat.Ka * mat.Kt;
+      for (int i = 0; i < bands; i++)
+        result[i] = coef * mat.Color[i];
+      return result;
+    }
+
+    input.Normalize();
+    double cosAlpha = Vector3d.Dot(input, normal);
+    bool lightOut = cosAlpha > 0.0;
+    double ks = mat.Ks, kd = mat.Kd, kt = mat.Kt;
+
+    if (mat.Sch > 0.0)
+    {
+      // Schlick: more mirror at grazing angles, taken from diffuse and transmission.
+      double u = Math.Abs(cosAlpha);
+      double s = 1.0 - u;
+      s = mat.Sch * s * s * s * s * s;
+      ks += s * (kd + kt);
+      kd *= 1.0 - s;
+      kt *= 1.0 - s;
+    }
+
+    Vector3d r = Vector3d.Zero;
+    double coefficient = 1.0;
+    if (viewOut == lightOut)
+    {
+      if ((comp & ReflectionComponent.SPECULAR_REFLECTION) != 0)
+      {
+        r = 2.0 * cosAlpha * normal - input;
+        if (!lightOut && -cosAlpha <= mat.cosTotal)
+        {
+          // Total internal reflection takes the transmitted energy.
+          ks += kt;
+          if (ks + kd > 1.0)
+            ks = 1.0 - kd;
+        }
+      }
+    }
+    else if ((comp & ReflectionComponent.SPECULAR_REFRACTION) != 0)
+    {
+      r = Geometry.SpecularRefraction(normal, mat.n, input);
+      coefficient = kt;
+    }
+
+    double diffuse = (comp & ReflectionComponent.DIFFUSE) != 0 ? coefficient * kd * Math.Abs(cosAlpha) : 0.0;
+    double specular = 0.0;
+    if (r.X != 0.0 || r.Y != 0.0 || r.Z != 0.0)
+    {
+      double cosBeta = Vector3d.Dot(r, output);
+      if (cosBeta > 0.0)
+        specular = coefficient * ks * Geometry.IntPow(cosBeta, mat.H);
+    }
+
+    for (int i = 0; i < bands; i++)
+      result[i] = diffuse * mat.Color[i] + specular;
+    return result;
+  }
+}

@@ -1,0 +1,42 @@
+using System;
+using System.Globalization;
+
+namespace OpenTK.Mathematics;
+
+/// <summary>Single-precision 3D vector (OpenTK's name), for animated properties and meshes.</summary>
+[Serializable]
+public struct Vector3 : IEquatable<Vector3>
+{
+  public float X, Y, Z;
+
+  public static readonly Vector3 Zero = new(0, 0, 0);
+  public static readonly Vector3 One = new(1, 1, 1);
+  public static readonly Vector3 UnitX = new(1, 0, 0);
+  public static readonly Vector3 UnitY = new(0, 1, 0);
+  public static readonly Vector3 UnitZ = new(0, 0, 1);
+
+  public Vector3(float x, float y, float z) { X = x; Y = y; Z = z; }
+  public Vector3(float value) { X = Y = Z = value; }
+
+  public readonly float Length => MathF.Sqrt(X * X + Y * Y + Z * Z);
+  public readonly float LengthSquared => X * X + Y * Y + Z * Z;
+  public void Normalize() { float s = 1f / Length; X *= s; Y *= s; Z *= s; }
+  public readonly Vector3 Normalized() { float s = 1f / Length; return new(X * s, Y * s, Z * s); }
+  public static float Dot(Vector3 a, Vector3 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
+  public static Vector3 Cross(Vector3 a, Vector3 b) => new(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
+  public static Vector3 Lerp(Vector3 a, Vector3 b, float t) => a + (b - a) * t;
+
+  public static Vector3 operator +(Vector3 a, Vector3 b) => new(a.X + b.X, a.Y + b.Y, a.Z + b.Z);
+  public static Vector3 operator -(Vector3 a, Vector3 b) => new(a.X - b.X, a.Y - b.Y, a.Z - b.Z);
+  public static Vector3 operator -(Vector3 a) => new(-a.X, -a.Y, -a.Z);
+  public static Vector3 operator *(Vector3 a, float s) => new(a.X * s, a.Y * s, a.Z * s);
+  public static Vector3 operator *(float s, Vector3 a) => new(a.X * s, a.Y * s, a.Z * s);
+  public static Vector3 operator /(Vector3 a, float s) => new(a.X / s, a.Y / s, a.Z / s);
+  public static bool operator ==(Vector3 a, Vector3 b) => a.Equals(b);
+  public static bool operator !=(Vector3 a, Vector3 b) => !a.Equals(b);
+
+  public readonly bool Equals(Vector3 other) => X == other.X && Y == other.Y && Z == other.Z;
+  public override readonly bool Equals(object? obj) => obj is Vector3 v && Equals(v);
+  public override readonly int GetHashCode() => HashCode.Combine(X, Y, Z);
+  public override readonly string ToString() => string.Format(CultureInfo.CurrentCulture, "({0}, {1}, {2})", X, Y, Z);
+}

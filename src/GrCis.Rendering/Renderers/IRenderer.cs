@@ -1,0 +1,25 @@
+namespace Rendering;
+
+/// <summary>Turns an image function into pixels (sampling, gamma). Re-entrant: threads share one instance.</summary>
+public interface IRenderer
+{
+  IImageFunction? ImageFunction { get; set; }
+
+  int Width { get; set; }
+
+  int Height { get; set; }
+
+  /// <summary>Display gamma applied to the output (1 = linear).</summary>
+  double Gamma { get; set; }
+
+  /// <summary>Adaptive-refinement level (0 = off).</summary>
+  int Adaptive { get; set; }
+
+  Progress? ProgressData { get; set; }
+
+  /// <summary>Linear (gamma-free) colour of one pixel.</summary>
+  void RenderPixel(int x, int y, double[] color);
+
+  /// <summary>Renders pixels [x1, x2) × [y1, y2) into <paramref name="image"/> (linear colours).</summary>
+  void RenderRectangle(Imaging.FloatImage image, int x1, int y1, int x2, int y2);
+}

@@ -1,0 +1,108 @@
+using System.Collections.Generic;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// An inner node combining its children by a set operation, folded left to right:
+/// ((c1 # c2) # c3) … The ray is transformed into each child's space (affine maps keep the
+/// ray parameter t), and each binary step merges two sorted hit lists, keeping a hit where
+/// the combined inside/outside state changes.
+/// </summary>
+public class CSGInnerNode : DefaultSceneNode
+{
+  public SetOperation Operation { get; }
+
+  /// <summary>Optional bounding volume tested before the children.</summary>
+  public IBoundingVolume? BoundingVolume;
+
+  // An empty left operand empties the result (intersection, difference): stop early.
+  readonly bool shortCircuit;
+
+  // An empty right operand changes nothing (union, xor, difference): skip it.
+  readonly bool trivial;
+
+  public CSGInnerNode(SetOperation op)
+  {
+    Operation = op;
+    shortCircuit = !(Result(false, false) || Result(false, true));
+    trivial = Result(true, false) && !Result(false, false);
+  }
+
+  /// <summary>The set operation on inside flags of the left and right operands.</summary>
+  public bool Result(bool left, bool right) => Operation switch
+  {
+    SetOperation.Union => left || right,
+    SetOperation.Intersection => left && right,
+    SetOperation.Difference => left && !right,
+    _ => left ^ right,
+  };
+
+  public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
+  {
+    if (Children.Count == 0)
+      return null;
+    if (BoundingVolume != null && BoundingVolume.Intersect(p0, p1) < -0.5)
+      return null;
+
+    LinkedList<Intersection>? result = null;
+    foreach (ISceneNode child in Children)
+    {
+      Matrix4d m = child.FromParent;
+      LinkedList<Intersection>? partial = child.Intersect(Vector3d.TransformPosition(p0, m), Vector3d.TransformVector(p1, m));
+
+      if (result == null)
+        result = partial ?? new LinkedList<Intersection>();
+      else if (!(trivial && (partial == null || partial.Count == 0)))
+        result = Merge(result, partial);
+
+      if (shortCircuit && result.Count == 0)
+        break;
+    }
+    return result;
+  }
+
+  /// <summary>One binary step: boundaries of (left # right), both lists sorted by T.</summary>
+  LinkedList<Intersection> Merge(LinkedList<Intersection> left, LinkedList<Intersection>? right)
+  {
+    var result = new LinkedList<Intersection>();
+    LinkedListNode<Intersection>? l = left.First;
+    LinkedListNode<Intersection>? r = right?.First;
+
+    // A list that starts with an exit means the ray starts inside that operand.
+    bool insideLeft = l != null && !l.Value.Enter;
+    bool insideRight = r != null && !r.Value.Enter;
+    bool inside = Result(insideLeft, insideRight);
+
+    while (l != null || r != null)
+    {
+      double tl = l?.Value.T ?? double.PositiveInfinity;
+      double tr = r?.Value.T ?? double.PositiveInfinity;
+      double t = System.Math.Min(tl, tr);
+      Intersection? first = null;
+
+      // On a tie both advance and the left operand's hit represents them.
+      if (tr == t)
+      {
+        first = r!.Value;
+        insideRight = first.Enter;
+        r = r.Next;
+      }
+      if (tl == t)
+      {
+        first = l!.Value;
+        insideLeft = first.Enter;
+        l = l.Next;
+      }
+
+      bool now = Result(insideLeft, insideRight);
+      if (now != inside)
+      {
+        inside = now;
+        first!.Enter = now;
+        result.AddLast(first);
+      }
+    }
+    return result;
+  }
+}

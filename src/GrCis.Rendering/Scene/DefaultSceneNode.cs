@@ -1,0 +1,130 @@
+using System;
+using System.Collections.Generic;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// Base of every scene node: transform to the parent, children, attributes inherited
+/// from the parents, textures collected along the path from the root.
+/// </summary>
+public class DefaultSceneNode : ISceneNode
+{
+  protected Dictionary<string, object?>? attributes;
+  Matrix4d toParent = Matrix4d.Identity;
+  Matrix4d fromParent = Matrix4d.Identity;
+
+  public ISceneNode? Parent { get; set; }
+
+  public virtual Matrix4d ToParent
+  {
+    get => toParent;
+    set
+    {
+      toParent = value;
+      fromParent = value.Inverted();
+    }
+  }
+
+  public virtual Matrix4d FromParent
+  {
+    get => fromParent;
+    set
+    {
+      fromParent = value;
+      toParent = value.Inverted();
+    }
+  }
+
+  public ICollection<ISceneNode> Children { get; protected set; } = new LinkedList<ISceneNode>();
+
+  public ISceneNode? ObjectRoot { get; set; }
+
+  public virtual object? GetAttribute(string name)
+  {
+    if (attributes != null && attributes.TryGetValue(name, out object? value) && value != null)
+      return value;
+    return Parent?.GetAttribute(name);
+  }
+
+  public virtual object? GetLocalAttribute(string name) =>
+    attributes != null && attributes.TryGetValue(name, out object? value) ? value : null;
+
+  public virtual void SetAttribute(string name, object? value)
+  {
+    ArgumentNullException.ThrowIfNull(name);
+    attributes ??= new Dictionary<string, object?>();
+    attributes[name] = value;
+  }
+
+  /// <summary>Local → world: <c>ToParent * Parent.ToWorld()</c>; the root's own space is the world.</summary>
+  public virtual Matrix4d ToWorld() => Parent == null ? Matrix4d.Identity : ToParent * Parent.ToWorld();
+
+  /// <summary>Local → object root; the world when no object root is set.</summary>
+  public virtual Matrix4d ToObject()
+  {
+    Matrix4d m = Matrix4d.Identity;
+    ISceneNode? node = this;
+    while (node != null && node.Parent != null && node != ObjectRoot)
+    {
+      m *= node.ToParent;
+      node = node.Parent;
+    }
+    return m;
+  }
+
+  /// <summary>Textures of all ancestors (outermost first) followed by this node's own.</summary>
+  public virtual LinkedList<ITexture>? GetTextures()
+  {
+    LinkedList<ITexture>? list = Parent?.GetTextures();
+    object? own = GetLocalAttribute(PropertyName.TEXTURE);
+    if (own == null)
+      return list;
+    list = list == null ? new LinkedList<ITexture>() : new LinkedList<ITexture>(list);
+    switch (own)
+    {
+      case ITexture t:
+        list.AddLast(t);
+        break;
+      case IEnumerable<ITexture> many:
+        foreach (ITexture t in many)
+          list.AddLast(t);
+        break;
+    }
+    return list;
+  }
+
+  /// <summary>Adds a child with its local → parent transform.</summary>
+  public virtual void InsertChild(ISceneNode child, Matrix4d toParent)
+  {
+    ArgumentNullException.ThrowIfNull(child);
+    Children.Add(child);
+    child.Parent = this;
+    child.ToParent = toParent;
+  }
+
+  public virtual LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1) => null;
+
+  public virtual void CompleteIntersection(Intersection inter) { }
+
+  /// <summary>Scripts may add several textures with this helper.</summary>
+  public void AddTexture(ITexture texture)
+  {
+    ArgumentNullException.ThrowIfNull(texture);
+    object? own = GetLocalAttribute(PropertyName.TEXTURE);
+    switch (own)
+    {
+      case null:
+        SetAttribute(PropertyName.TEXTURE, texture);
+        break;
+      case ITexture t:
+        SetAttribute(PropertyName.TEXTURE, new List<ITexture> { t, texture });
+        break;
+      case List<ITexture> l:
+        l.Add(texture);
+        break;
+      default:
+        throw new InvalidOperationException($"Attribute '{PropertyName.TEXTURE}' holds a {own.GetType().Name}, not a texture.");
+    }
+  }
+}

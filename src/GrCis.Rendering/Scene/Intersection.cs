@@ -1,0 +1,164 @@
+using System;
+using System.Collections.Generic;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// One ray–solid hit. The solid fills the cheap part (T, Enter, Front, local coordinates);
+/// <see cref="Complete"/> fills the rest only for the hit that is actually shaded.
+/// </summary>
+public class Intersection : IComparable<Intersection>
+{
+  /// <summary>Thickness of thin shells (one-sided solids).</summary>
+  public const double SHELL_THICKNESS = 1.0e-5;
+
+  /// <summary>Minimal distance of a secondary hit from the ray origin.</summary>
+  public const double RAY_EPSILON = 1.0e-4;
+
+  public const double RAY_EPSILON2 = RAY_EPSILON * RAY_EPSILON;
+
+  /// <summary>The ray enters the solid's interior here.</summary>
+  public bool Enter;
+
+  /// <summary>The ray hits the surface from its front (against the local normal).</summary>
+  public bool Front;
+
+  /// <summary>Ray parameter of the hit.</summary>
+  public double T;
+
+  public ISolid? Solid;
+
+  /// <summary>Anything the solid wants to remember until completion.</summary>
+  public object? SolidData;
+
+  public Vector3d CoordLocal;
+  public Vector3d NormalLocal;
+
+  // Filled by Complete().
+  public Vector3d CoordWorld;
+  public Vector3d CoordObject;
+  public Vector2d TextureCoord;
+  public Vector3d Normal;
+  public Vector3d TangentU;
+  public Vector3d TangentV;
+  public Matrix4d LocalToWorld;
+  public Matrix4d WorldToLocal;
+  public Matrix4d LocalToObject;
+  public double[]? SurfaceColor;
+  public IReflectanceModel? ReflectanceModel;
+  public IMaterial? Material;
+  public LinkedList<ITexture>? Textures;
+
+  public bool completed;
+  public bool textureApplied;
+
+  public Intersection() { }
+
+  public Intersection(ISolid? s) => Solid = s;
+
+  /// <summary>Copy of the cheap (pre-completion) part; used when CSG changes Enter.</summary>
+  public Intersection(Intersection i)
+  {
+    Enter = i.Enter;
+    Front = i.Front;
+    T = i.T;
+    Solid = i.Solid;
+    SolidData = i.SolidData;
+    CoordLocal = i.CoordLocal;
+    NormalLocal = i.NormalLocal;
+  }
+
+  public int CompareTo(Intersection? other) => other == null ? 1 : T.CompareTo(other.T);
+
+  /// <summary>
+  /// Computes world coordinates, normal (facing the side the ray came from), material,
+  /// surface colour and textures, resolving attributes up the scene hierarchy.
+  /// </summary>
+  public void Complete()
+  {
+    if (completed)
+      return;
+    if (Solid != null)
+    {
+      LocalToWorld = Solid.ToWorld();
+      WorldToLocal = LocalToWorld.Inverted();
+      LocalToObject = Solid.ToObject();
+      CompleteWith(LocalToWorld, WorldToLocal, LocalToObject);
+      return;
+    }
+    SurfaceColor ??= new double[] { 0.0, 0.0, 0.0 };
+    completed = true;
+  }
+
+  /// <summary>Completion with transforms that the caller already knows (the prepared fast path).</summary>
+  public void CompleteWith(in Matrix4d localToWorld, in Matrix4d worldToLocal, in Matrix4d localToObject)
+  {
+    if (completed)
+      return;
+    LocalToWorld = localToWorld;
+    WorldToLocal = worldToLocal;
+    LocalToObject = localToObject;
+    if (Solid != null)
+    {
+      CoordWorld = Vector3d.TransformPosition(CoordLocal, LocalToWorld);
+      CoordObject = Vector3d.TransformPosition(CoordLocal, LocalToObject);
+
+      ReflectanceModel = Solid.GetAttribute(PropertyName.REFLECTANCE_MODEL) as IReflectanceModel ?? new PhongModel();
+      Material = Solid.GetAttribute(PropertyName.MATERIAL) as IMaterial ?? ReflectanceModel.DefaultMaterial();
+      if (SurfaceColor == null)
+      {
+        double[]? color = Solid.GetAttribute(PropertyName.COLOR) as double[] ?? Material.Color;
+        SurfaceColor = color != null ? (double[])color.Clone() : null;
+      }
+      Textures = Solid.GetTextures();
+
+      Solid.CompleteIntersection(this);
+      Normal.Normalize();
+      if (Enter != Front)
+        Normal = -Normal;
+    }
+    SurfaceColor ??= new double[] { 0.0, 0.0, 0.0 };
+    completed = true;
+  }
+
+  /// <summary>The first hit in front of the ray origin (farther than <see cref="RAY_EPSILON"/>), or null.</summary>
+  public static Intersection? FirstIntersection(LinkedList<Intersection>? list, ref Vector3d p1)
+  {
+    if (list == null)
+      return null;
+    double len2 = p1.LengthSquared;
+    foreach (Intersection i in list)
+      if (i.T > 0.0 && i.T * i.T * len2 > RAY_EPSILON2)
+        return i;
+    return null;
+  }
+
+  /// <summary>Like <see cref="FirstIntersection"/> but skips solids marked <see cref="PropertyName.NO_SHADOW"/> (shadow rays).</summary>
+  public static Intersection? FirstRealIntersection(LinkedList<Intersection>? list, ref Vector3d p1)
+  {
+    if (list == null)
+      return null;
+    double len2 = p1.LengthSquared;
+    foreach (Intersection i in list)
+      if (i.T > 0.0 && i.T * i.T * len2 > RAY_EPSILON2 &&
+          (i.Solid == null || i.Solid.GetLocalAttribute(PropertyName.NO_SHADOW) == null))
+        return i;
+    return null;
+  }
+
+  /// <summary>True when this hit lies beyond ray parameter <paramref name="t"/> by more than the epsilon.</summary>
+  public bool Far(double t, ref Vector3d p1)
+  {
+    if (T <= t)
+      return false;
+    double d = T - t;
+    return d * d * p1.LengthSquared > RAY_EPSILON2;
+  }
+
+  /// <summary>Number of primary and secondary rays cast (statistics; updated without locking).</summary>
+  public static long countRays;
+
+  /// <summary>Number of intersection queries (statistics).</summary>
+  public static long countIntersections;
+}
