@@ -17,7 +17,7 @@ public interface IRenderer
 
   Progress? ProgressData { get; set; }
 
-  /// <summary>Linear (gamma-free) colour of one pixel.</summary>
+  /// <summary>Display colour of one pixel: gamma applied and clamped to [0, 1] (as GrCis does).</summary>
   void RenderPixel(int x, int y, double[] color);
 
   /// <summary>Renders pixels [x1, x2) × [y1, y2) into <paramref name="image"/> (linear colours).</summary>

@@ -1,0 +1,34 @@
+using System;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>A constant background: the scene's BackgroundColor, else its own colour, else a dark default.</summary>
+[Serializable]
+public class DefaultBackground : IBackground
+{
+  public static readonly double[] DEFAULT_COLOR = { 0.0, 0.02, 0.03 };
+
+  public double[]? Color;
+
+  readonly IRayScene? scene;
+
+  public DefaultBackground(double[] color)
+  {
+    ArgumentNullException.ThrowIfNull(color);
+    Color = (double[])color.Clone();
+  }
+
+  /// <summary>Follows the scene's <see cref="IRayScene.BackgroundColor"/> (read at render time).</summary>
+  public DefaultBackground(IRayScene? rtsc = null) => scene = rtsc;
+
+  public long GetColor(Vector3d p1, double[] color)
+  {
+    double[]? src = scene?.BackgroundColor is { Length: > 0 } sc ? sc
+      : Color is { Length: > 0 } ? Color
+      : DEFAULT_COLOR;
+    for (int i = 0; i < color.Length; i++)
+      color[i] = src[Math.Min(i, src.Length - 1)];
+    return 1L;
+  }
+}

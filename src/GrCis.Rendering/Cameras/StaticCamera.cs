@@ -1,0 +1,102 @@
+using System;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// A pinhole camera: position, viewing direction, up vector and horizontal field of view.
+/// Image x grows to the right, y downwards; pixel (x, y) has its centre at (x + 0.5, y + 0.5).
+/// </summary>
+[Serializable]
+public class StaticCamera : ICamera
+{
+  protected double width = 640.0;
+  protected double height = 480.0;
+
+  public Vector3d center;
+  public Vector3d direction;
+  public Vector3d up = Vector3d.UnitY;
+
+  /// <summary>Horizontal field of view in radians.</summary>
+  public double hAngle = 1.0;
+
+  // Image plane at distance 1: upper-left corner and per-pixel steps.
+  protected Vector3d origin, dx, dy;
+
+  public StaticCamera(Vector3d cen, Vector3d dir, double ang)
+  {
+    center = cen;
+    direction = dir.Normalized();
+    hAngle = AngleToRadians(ang);
+    Width = 300;
+    Height = 400;
+  }
+
+  public StaticCamera(Vector3d cen, Vector3d dir, Vector3d upv, double ang)
+  {
+    center = cen;
+    direction = dir.Normalized();
+    up = upv;
+    hAngle = AngleToRadians(ang);
+    Width = 300;
+    Height = 400;
+  }
+
+  // GrCis converts degrees through single precision; keep that for identical images.
+  static double AngleToRadians(double degrees) => MathHelper.DegreesToRadians((float)degrees);
+
+  public double AspectRatio
+  {
+    get => width / height;
+    set
+    {
+      if (value <= 0.0)
+        throw new ArgumentOutOfRangeException(nameof(value), value, "Aspect ratio must be positive.");
+      height = width / value;
+      Prepare();
+    }
+  }
+
+  public double Width
+  {
+    get => width;
+    set
+    {
+      if (value <= 0.0)
+        throw new ArgumentOutOfRangeException(nameof(value), value, "Width must be positive.");
+      width = value;
+      Prepare();
+    }
+  }
+
+  public double Height
+  {
+    get => height;
+    set
+    {
+      if (value <= 0.0)
+        throw new ArgumentOutOfRangeException(nameof(value), value, "Height must be positive.");
+      height = value;
+      Prepare();
+    }
+  }
+
+  /// <summary>Recomputes the image-plane frame after a change of size or orientation.</summary>
+  protected virtual void Prepare()
+  {
+    Vector3d left = Vector3d.Cross(direction, up).Normalized();
+    Vector3d top = Vector3d.Cross(left, direction).Normalized();
+    double halfWidth = Math.Tan(0.5 * hAngle);
+    double halfHeight = halfWidth / AspectRatio;
+    origin = center + direction + top * halfHeight + left * halfWidth;
+    dx = left * (-2.0 * halfWidth / width);
+    dy = top * (-2.0 * halfHeight / height);
+  }
+
+  public virtual bool GetRay(double x, double y, out Vector3d p0, out Vector3d p1)
+  {
+    p0 = center;
+    p1 = (origin + x * dx + y * dy - center).Normalized();
+    return true;
+  }
+}

@@ -1,0 +1,19 @@
+namespace Rendering.Execution;
+
+/// <summary>How to execute a render: threads, tiles and the seed every sample stream derives from.</summary>
+public sealed record RenderOptions
+{
+  /// <summary>Worker threads; 0 = one per processor.</summary>
+  public int Threads { get; init; }
+
+  /// <summary>Tile side in pixels.</summary>
+  public int TileSize { get; init; } = 32;
+
+  /// <summary>Seed of all sample randomness; the image depends on it, not on threads or tile order.</summary>
+  public long Seed { get; init; }
+
+  /// <summary>Frame number, mixed into the per-pixel seeds so frames differ.</summary>
+  public int Frame { get; init; }
+
+  public int EffectiveThreads => Threads > 0 ? Threads : System.Environment.ProcessorCount;
+}

@@ -1,0 +1,7 @@
+namespace Rendering.Execution;
+
+/// <summary>A progress report: how many tiles are done, and which one just finished.</summary>
+public readonly record struct RenderProgress(int TilesDone, int TilesTotal, Tile LastTile)
+{
+  public double Fraction => TilesTotal == 0 ? 1.0 : (double)TilesDone / TilesTotal;
+}

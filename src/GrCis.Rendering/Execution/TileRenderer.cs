@@ -1,0 +1,104 @@
+using System;
+using System.Collections.Generic;
+using System.Threading;
+using Rendering.Imaging;
+
+namespace Rendering.Execution;
+
+/// <summary>
+/// Renders an image in tiles on worker threads. Every pixel's randomness is derived from
+/// (seed, frame, pixel) in <see cref="MT.StartPixel"/>, so the image is bit-identical for any
+/// number of threads and any tile order. Cancellation keeps every tile finished so far.
+/// </summary>
+public static class TileRenderer
+{
+  /// <summary>Tiles of an image in row-major order.</summary>
+  public static List<Tile> MakeTiles(int width, int height, int tileSize)
+  {
+    if (tileSize < 1)
+      throw new ArgumentOutOfRangeException(nameof(tileSize), tileSize, "Tile size must be positive.");
+    var tiles = new List<Tile>();
+    for (int y = 0; y < height; y += tileSize)
+      for (int x = 0; x < width; x += tileSize)
+        tiles.Add(new Tile(x, y, Math.Min(x + tileSize, width), Math.Min(y + tileSize, height)));
+    return tiles;
+  }
+
+  /// <summary>
+  /// Renders <paramref name="scene"/> through <paramref name="renderer"/> into a new linear image.
+  /// Returns the image even when cancelled (unfinished tiles stay black); check the token to know.
+  /// </summary>
+  public static FloatImage Render(
+    IRayScene scene,
+    IImageFunction imageFunction,
+    ImageSynthesizer renderer,
+    RenderOptions options,
+    Action<RenderProgress>? progress = null,
+    CancellationToken cancel = default)
+  {
+    ArgumentNullException.ThrowIfNull(scene);
+    ArgumentNullException.ThrowIfNull(imageFunction);
+    ArgumentNullException.ThrowIfNull(renderer);
+    ArgumentNullException.ThrowIfNull(options);
+
+    int width = renderer.Width, height = renderer.Height;
+    var image = new FloatImage(width, height);
+    renderer.ImageFunction = imageFunction;
+    imageFunction.Width = width;
+    imageFunction.Height = height;
+
+    List<Tile> tiles = MakeTiles(width, height, options.TileSize);
+    int next = -1, done = 0;
+    int threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tiles.Count));
+    Exception? failure = null;
+    object progressLock = new();
+
+    void Work()
+    {
+      MT.InitThreadData();
+      MT.SetRendering(scene, imageFunction, renderer);
+      MT.seed = options.Seed;
+      MT.frame = options.Frame;
+      try
+      {
+        int k;
+        while (!cancel.IsCancellationRequested && Volatile.Read(ref failure) == null &&
+               (k = Interlocked.Increment(ref next)) < tiles.Count)
+        {
+          Tile t = tiles[k];
+          renderer.RenderRectangle(image, t.X1, t.Y1, t.X2, t.Y2);
+          int d = Interlocked.Increment(ref done);
+          if (progress != null)
+            lock (progressLock)
+              progress(new RenderProgress(d, tiles.Count, t));
+        }
+      }
+      catch (Exception e)
+      {
+        Interlocked.CompareExchange(ref failure, e, null);
+      }
+      finally
+      {
+        MT.SetRendering(null, null, null);
+      }
+    }
+
+    if (threads == 1)
+      Work();
+    else
+    {
+      var workers = new Thread[threads];
+      for (int i = 0; i < threads; i++)
+      {
+        workers[i] = new Thread(Work) { IsBackground = true, Name = $"grcis-render-{i}" };
+        workers[i].Start();
+      }
+      foreach (Thread w in workers)
+        w.Join();
+    }
+
+    if (failure != null)
+      throw new RenderException($"Rendering failed: {failure.Message}", failure);
+    return image;
+  }
+}

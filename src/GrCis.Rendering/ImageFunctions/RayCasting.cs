@@ -1,0 +1,98 @@
+using System;
+using System.Collections.Generic;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>Ray casting: the first hit lit by every light, without shadows or secondary rays.</summary>
+[Serializable]
+public class RayCasting : IImageFunction
+{
+  protected const long HASH_LIGHT = 101L;
+  protected const long HASH_TEXTURE = 11L;
+
+  protected IRayScene? scene;
+
+  public RayCasting(IRayScene? sc = null) => scene = sc;
+
+  /// <summary>The scene: the one given to the constructor, else the thread's current scene.</summary>
+  public IRayScene Scene
+  {
+    get => scene ?? MT.scene ?? throw new InvalidOperationException("The image function has no scene to render.");
+    set => scene = value;
+  }
+
+  public virtual double Width
+  {
+    get => Scene.Camera?.Width ?? 0.0;
+    set { if (Scene.Camera != null) Scene.Camera.Width = value; }
+  }
+
+  public virtual double Height
+  {
+    get => Scene.Camera?.Height ?? 0.0;
+    set { if (Scene.Camera != null) Scene.Camera.Height = value; }
+  }
+
+  /// <summary>First hit of the ray, or null. Overridden by the prepared fast path.</summary>
+  protected virtual Intersection? FirstHit(Vector3d p0, Vector3d p1)
+  {
+    Intersection.countRays++;
+    LinkedList<Intersection>? list = Scene.Intersectable?.Intersect(p0, p1);
+    return Intersection.FirstIntersection(list, ref p1);
+  }
+
+  /// <summary>Completes the hit and applies its textures; returns the hash of the solid and texture cells.</summary>
+  protected static long CompleteAndTexture(Intersection i)
+  {
+    i.Complete();
+    long hash = i.Solid?.GetHashCode() ?? 0L;
+    if (i.Textures != null)
+      foreach (ITexture tex in i.Textures)
+        hash = hash * HASH_TEXTURE + tex.Apply(i);
+    return hash;
+  }
+
+  public virtual long GetSample(double x, double y, double[] color)
+  {
+    IRayScene sc = Scene;
+    Array.Clear(color);
+    if (sc.Camera == null || !sc.Camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))
+      return 1L;
+
+    Intersection? i = FirstHit(p0, p1);
+    if (i == null)
+    {
+      if (sc.BackgroundColor != null)
+        Array.Copy(sc.BackgroundColor, color, Math.Min(color.Length, sc.BackgroundColor.Length));
+      return 0L;
+    }
+
+    long hash = CompleteAndTexture(i);
+    double[] surface = i.SurfaceColor!;
+    if (sc.Sources == null || sc.Sources.Count == 0)
+    {
+      Array.Copy(surface, color, Math.Min(color.Length, surface.Length));
+      return hash;
+    }
+
+    Vector3d viewer = -p1.Normalized();
+    IMaterial material = (IMaterial)i.Material!.Clone();
+    material.Color = surface;
+    i.Material = material;
+
+    foreach (ILightSource source in sc.Sources)
+    {
+      double[]? intensity = source.GetIntensity(i, out Vector3d dir);
+      if (intensity == null)
+        continue;
+      double[]? reflection = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
+      if (reflection == null)
+        continue;
+      for (int b = 0; b < color.Length; b++)
+        color[b] += intensity[Math.Min(b, intensity.Length - 1)] * reflection[Math.Min(b, reflection.Length - 1)];
+      hash = hash * HASH_LIGHT + source.GetHashCode();
+    }
+    return hash;
+  }
+}

@@ -1,0 +1,189 @@
+using System;
+using System.Collections.Generic;
+using MathSupport;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// Whitted ray tracing: local Phong lighting with shadow rays, then mirrored and refracted rays
+/// recursively while their importance stays above <see cref="MinImportance"/> and the depth below
+/// <see cref="MaxLevel"/>. Solids with a <see cref="PropertyName.RECURSION"/> attribute shade themselves.
+/// </summary>
+[Serializable]
+public class RayTracing : RayCasting
+{
+  protected const long HASH_REFRACT = 13L;
+  protected const long HASH_REFLECT = 17L;
+  protected const long HASH_RECURSION = 101L;
+
+  /// <summary>Maximal depth of secondary rays.</summary>
+  public int MaxLevel = 12;
+
+  /// <summary>Secondary rays weaker than this are not traced.</summary>
+  public double MinImportance = 0.05;
+
+  public bool DoShadows = true;
+  public bool DoReflections = true;
+  public bool DoRefractions = true;
+
+  /// <summary>Honour solids' <see cref="RecursionFunction"/> attributes.</summary>
+  public bool DoRecursion = true;
+
+  public RayTracing(IRayScene? sc = null) : base(sc) { }
+
+  public override long GetSample(double x, double y, double[] color)
+  {
+    Array.Clear(color);
+    ICamera? camera = Scene.Camera;
+    if (camera == null || !camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))
+      return 11L;
+    return shade(0, 1.0, ref p0, ref p1, color);
+  }
+
+  /// <summary>True when something (not marked NO_SHADOW) lies between the point and the light at <c>p0 + dir</c>.</summary>
+  protected virtual bool Occluded(Vector3d p0, Vector3d dir)
+  {
+    Intersection.countRays++;
+    LinkedList<Intersection>? list = Scene.Intersectable?.Intersect(p0, dir);
+    Intersection? si = Intersection.FirstRealIntersection(list, ref dir);
+    return si != null && !si.Far(1.0, ref dir);
+  }
+
+  /// <summary>Colour seen along the ray <c>p0 + t p1</c>, written to <paramref name="color"/>; returns the path hash.</summary>
+  protected virtual long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
+  {
+    IRayScene sc = Scene;
+    Vector3d direction = p1;
+    Intersection? i = FirstHit(p0, direction);
+    if (i == null)
+    {
+      if (sc.Background != null)
+        return sc.Background.GetColor(p1, color);
+      FillBackground(sc, color);
+      return 1L;
+    }
+
+    long hash = CompleteAndTexture(i);
+    int bands = color.Length;
+    Array.Clear(color);
+
+    if (DoRecursion && i.Solid?.GetAttribute(PropertyName.RECURSION) is RecursionFunction recursion)
+      return ShadeRecursion(recursion, i, depth, importance, ref p1, color, hash);
+
+    Vector3d viewer = -p1.Normalized();
+    double[] surface = i.SurfaceColor!;
+
+    if (sc.Sources == null || sc.Sources.Count == 0)
+      AddScaled(color, surface, 1.0);
+    else
+    {
+      IMaterial material = (IMaterial)i.Material!.Clone();
+      material.Color = surface;
+      i.Material = material;
+
+      foreach (ILightSource source in sc.Sources)
+      {
+        double[]? intensity = source.GetIntensity(i, out Vector3d dir);
+        if (intensity == null)
+          continue;
+        if (DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0) && Occluded(i.CoordWorld, dir))
+          continue;
+        double[]? reflection = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
+        if (reflection == null)
+          continue;
+        for (int b = 0; b < bands; b++)
+          color[b] += intensity[Math.Min(b, intensity.Length - 1)] * reflection[Math.Min(b, reflection.Length - 1)];
+        hash = hash * HASH_LIGHT + source.GetHashCode();
+      }
+    }
+
+    if (depth++ >= MaxLevel || (!DoReflections && !DoRefractions))
+      return hash;
+
+    double[] comp = new double[bands];
+    Vector3d origin = i.CoordWorld;
+
+    if (DoReflections)
+    {
+      Vector3d r = Geometry.SpecularReflection(i.Normal, viewer);
+      double[]? ks = i.ReflectanceModel!.ColorReflection(i, viewer, r, ReflectionComponent.SPECULAR_REFLECTION);
+      if (ks != null)
+      {
+        double maxK = ks[0];
+        for (int b = 1; b < ks.Length; b++)
+          maxK = Math.Max(maxK, ks[b]);
+        double newImportance = importance * maxK;
+        if (newImportance >= MinImportance)
+        {
+          hash += HASH_REFLECT * shade(depth, newImportance, ref origin, ref r, comp);
+          for (int b = 0; b < bands; b++)
+            color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
+        }
+      }
+    }
+
+    if (DoRefractions)
+    {
+      double kt = i.Material!.Kt;
+      double newImportance = importance * kt;
+      if (newImportance < MinImportance)
+        return hash;
+      Vector3d r = Geometry.SpecularRefraction(i.Normal, i.Material.n, viewer);
+      if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0)
+        return hash;
+      hash += HASH_REFRACT * shade(depth, newImportance, ref origin, ref r, comp);
+      AddScaled(color, comp, kt);
+    }
+
+    return hash;
+  }
+
+  /// <summary>Custom shading by the solid's <see cref="RecursionFunction"/>.</summary>
+  long ShadeRecursion(RecursionFunction recursion, Intersection i, int depth, double importance, ref Vector3d p1, double[] color, long hash)
+  {
+    hash += HASH_RECURSION * recursion(i, p1, importance, out RayRecursion rr);
+    if (rr == null)
+      return hash;
+
+    if (rr.DirectContribution is { Length: > 0 } direct)
+      AddScaled(color, direct, 1.0);
+
+    if (rr.Rays == null)
+      return hash;
+
+    double[] comp = new double[color.Length];
+    foreach (RayRecursion.RayContribution ray in rr.Rays)
+    {
+      if (depth++ >= MaxLevel)
+        break;
+      Vector3d o = ray.p0, d = ray.p1;
+      hash += HASH_REFLECT * shade(depth, ray.importance, ref o, ref d, comp);
+      if (ray.coefficient == null)
+        AddScaled(color, comp, 1.0);
+      else
+        for (int b = 0; b < color.Length; b++)
+          color[b] += comp[b] * ray.coefficient[Math.Min(b, ray.coefficient.Length - 1)];
+    }
+    return hash;
+  }
+
+  static void FillBackground(IRayScene sc, double[] color)
+  {
+    double[]? bg = sc.BackgroundColor;
+    if (bg == null || bg.Length == 0)
+    {
+      Array.Clear(color);
+      return;
+    }
+    for (int b = 0; b < color.Length; b++)
+      color[b] = bg[Math.Min(b, bg.Length - 1)];
+  }
+
+  /// <summary>color += k · src; a one-element src adds the same value to every band.</summary>
+  protected static void AddScaled(double[] color, double[] src, double k)
+  {
+    for (int b = 0; b < color.Length; b++)
+      color[b] += k * src[Math.Min(b, src.Length - 1)];
+  }
+}

@@ -1,0 +1,27 @@
+using System;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>Light that reaches every point from no particular direction.</summary>
+[Serializable]
+public class AmbientLightSource : ILightSource
+{
+  public double[] intensity;
+
+  public Vector3d? position { get => null; set { } }
+
+  public AmbientLightSource(double intens) => intensity = new[] { intens, intens, intens };
+
+  public AmbientLightSource(double[] intens)
+  {
+    ArgumentNullException.ThrowIfNull(intens);
+    intensity = (double[])intens.Clone();
+  }
+
+  public virtual double[]? GetIntensity(Intersection intersection, out Vector3d dir)
+  {
+    dir = Vector3d.Zero;
+    return intensity;
+  }
+}

@@ -1,0 +1,66 @@
+using System;
+using Rendering.Imaging;
+
+namespace Rendering;
+
+/// <summary>
+/// Shared part of the image synthesizers: size, gamma and the split between the linear pixel
+/// colour (what the framebuffer stores) and the display colour (gamma and clamp).
+/// </summary>
+public abstract class ImageSynthesizer : IRenderer
+{
+  public IImageFunction? ImageFunction { get; set; }
+
+  public int Width { get; set; } = 640;
+
+  public int Height { get; set; } = 480;
+
+  /// <summary>Display gamma; values ≤ 0.001 mean linear output.</summary>
+  public double Gamma { get; set; } = 2.2;
+
+  public int Adaptive { get; set; } = 1;
+
+  public Progress? ProgressData { get; set; }
+
+  /// <summary>Samples one pixel's linear colour; sets <see cref="MT"/>'s pixel and sample rank.</summary>
+  public abstract void RenderPixelLinear(int x, int y, double[] color);
+
+  /// <summary>Samples per pixel this synthesizer takes at most.</summary>
+  public abstract int SamplesPerPixel { get; }
+
+  public void RenderPixel(int x, int y, double[] color)
+  {
+    RenderPixelLinear(x, y, color);
+    ApplyGamma(color, Gamma);
+  }
+
+  /// <summary>c ← clamp(c^(1/gamma), 0, 1); gamma ≤ 0.001 leaves the colour linear.</summary>
+  public static void ApplyGamma(Span<double> color, double gamma)
+  {
+    if (gamma <= 0.001)
+      return;
+    double inv = 1.0 / gamma;
+    for (int b = 0; b < color.Length; b++)
+      color[b] = Math.Clamp(Math.Pow(color[b], inv), 0.0, 1.0);
+  }
+
+  public void RenderRectangle(FloatImage image, int x1, int y1, int x2, int y2)
+  {
+    ArgumentNullException.ThrowIfNull(image);
+    double[] color = new double[image.Bands];
+    for (int y = y1; y < y2; y++)
+    {
+      if (ProgressData is { Continue: false })
+        return;
+      for (int x = x1; x < x2; x++)
+      {
+        RenderPixelLinear(x, y, color);
+        image.SetPixel(x, y, color);
+      }
+    }
+  }
+
+  /// <summary>The image function to sample, with a clear message when none was set.</summary>
+  protected IImageFunction Function =>
+    ImageFunction ?? MT.imageFunction ?? throw new InvalidOperationException("The renderer has no image function.");
+}
