@@ -5,6 +5,9 @@ using static GrCis.Rendering.Tests.Solids.SolidTestSupport;
 
 namespace GrCis.Rendering.Tests.Solids;
 
+// GrCis.Rendering.Tests.Math (main's math tests) would otherwise shadow System.Math here.
+using Math = System.Math;
+
 public class SphereTests
 {
   [Fact]
@@ -41,7 +44,7 @@ public class SphereTests
     // Naive b² − 4ac loses everything here; the stable form keeps ~1e-9 relative accuracy.
     var hits = Hits(new Sphere(), new Vector3d(0.5, 0, -1e7), new Vector3d(0, 0, 1));
     Assert.Equal(2, hits.Count);
-    double half = System.Math.Sqrt(0.75);
+    double half = Math.Sqrt(0.75);
     Assert.Equal(1e7 - half, hits[0].T, 6);
     Assert.Equal(1e7 + half, hits[1].T, 6);
   }
