@@ -7,6 +7,9 @@ using static GrCis.Rendering.Tests.Solids.SolidTestSupport;
 
 namespace GrCis.Rendering.Tests.Solids;
 
+// GrCis.Rendering.Tests.Math (main's math tests) would otherwise shadow System.Math here.
+using Math = System.Math;
+
 public class TorusTests
 {
   readonly ITestOutputHelper output;
