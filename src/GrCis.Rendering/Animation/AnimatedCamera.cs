@@ -46,7 +46,7 @@ public class AnimatedCamera : StaticCamera, ITimeDependent
   {
     time = newTime;
     double period = End - Start;
-    double angle = period != 0.0 ? MathHelper.TwoPi * (time - Start) / period : 0.0;
+    double angle = period != 0.0 ? 2.0 * Math.PI * (time - Start) / period : 0.0;
     // Row vectors: rotating by −angle about y takes +x towards +z.
     Vector3d radial = Vector3d.TransformVector(center0 - lookAt, Matrix4d.CreateRotationY(-angle));
     center = lookAt + radial;

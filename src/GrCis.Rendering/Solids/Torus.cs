@@ -22,6 +22,14 @@ public class Torus : DefaultSceneNode, ISolid
   /// <summary>Radius of the tube (r).</summary>
   public double smallRadius = 0.5;
 
+  /// <summary>
+  /// Whether a ray that starts on this torus's surface (a shadow, reflected or refracted ray) may hit
+  /// this torus again. GrCis's torus solver loses exactly those roots, so old scenes were lit as if a
+  /// torus never shadowed or mirrored itself; false (the default) keeps that look. Set true for
+  /// the physically right image: self-shadowing and self-reflection, e.g. inside the hole.
+  /// </summary>
+  public bool SelfHits;
+
   public Torus(double bigRadius, double smallRadius)
   {
     this.bigRadius = bigRadius;
@@ -30,6 +38,8 @@ public class Torus : DefaultSceneNode, ISolid
 
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
+    if (!SelfHits && StartsOnSurface(p0))
+      return null;
     Span<double> u = stackalloc double[4];
     Span<bool> enter = stackalloc bool[4];
     int n = Solve(p0, p1, u, enter, out Vector3d center, out Vector3d dir, out double sMid, out double length);
@@ -48,6 +58,20 @@ public class Torus : DefaultSceneNode, ISolid
       });
     }
     return result;
+  }
+
+  /// <summary>True when <paramref name="p0"/> lies on the surface (within rounding of a computed hit point).</summary>
+  internal bool StartsOnSurface(Vector3d p0)
+  {
+    // Distance to the tube about the nearer circle point, and about the opposite one: a spindle
+    // torus's inner lemon belongs to the tube of the far side.
+    double R = Math.Abs(bigRadius), r = Math.Abs(smallRadius);
+    double rho = Math.Sqrt(p0.X * p0.X + p0.Y * p0.Y);
+    double z2 = p0.Z * p0.Z;
+    double near = Math.Sqrt((rho - R) * (rho - R) + z2) - r;
+    double far = Math.Sqrt((rho + R) * (rho + R) + z2) - r;
+    double tolerance = 1.0e-7 * (R + r);
+    return Math.Abs(near) <= tolerance || Math.Abs(far) <= tolerance;
   }
 
   /// <summary>

@@ -1,6 +1,6 @@
 using OpenTK.Mathematics;
 
-namespace GrCis.Rendering.Tests.Math;
+namespace GrCis.Rendering.Tests.MathTypes;
 
 public class Matrix4dTests
 {

@@ -309,3 +309,33 @@ public class TorusTests
     Assert.True(tangencyMismatches <= raysPerKind / 5, $"too many tangency mismatches: {tangencyMismatches}");
   }
 }
+
+public class TorusSelfHitTests
+{
+  // A ray leaving the outer equator inwards, through the tube, the hole and the far tube.
+  static readonly OpenTK.Mathematics.Vector3d OnSurface = new(1.5, 0, 0);
+  static readonly OpenTK.Mathematics.Vector3d Inwards = new(-1, 0, 0);
+
+  [Fact]
+  public void Ray_from_the_surface_does_not_hit_the_same_torus_by_default_like_GrCis()
+  {
+    var torus = new global::Rendering.Torus(1.0, 0.5);
+    Assert.Null(torus.Intersect(OnSurface, Inwards));
+  }
+
+  [Fact]
+  public void Ray_from_the_surface_sees_the_far_side_when_self_hits_are_enabled()
+  {
+    var torus = new global::Rendering.Torus(1.0, 0.5) { SelfHits = true };
+    var hits = torus.Intersect(OnSurface, Inwards)!;
+    // Surface points along the x axis: 1.5 (start), 0.5, -0.5, -1.5 → t = 0, 1, 2, 3.
+    Assert.Equal(new[] { 0.0, 1.0, 2.0, 3.0 }, System.Linq.Enumerable.Select(hits, h => System.Math.Round(h.T, 9)));
+  }
+
+  [Fact]
+  public void Ray_from_just_off_the_surface_is_not_treated_as_a_surface_ray()
+  {
+    var torus = new global::Rendering.Torus(1.0, 0.5);
+    Assert.NotNull(torus.Intersect(new OpenTK.Mathematics.Vector3d(1.5001, 0, 0), Inwards));
+  }
+}
