@@ -36,13 +36,14 @@ internal static class ScriptCompiler
 
   static int serial;
 
-  public static CompiledScript CompileScript(string path, string source, string key, IReadOnlyList<ScriptModule> modules)
+  public static CompiledScript CompileScript(string path, string source, string key, IReadOnlyList<ScriptModule> modules, bool optimize)
   {
     SyntaxTree tree = CSharpSyntaxTree.ParseText(SourceText.From(source, Encoding.UTF8), scriptParseOptions, path);
     var options = new CSharpCompilationOptions(
       OutputKind.DynamicallyLinkedLibrary,
       usings: DefaultImports,
-      optimizationLevel: OptimizationLevel.Release,
+      // Debug code keeps every frame (no JIT inlining), so a runtime error always maps to its script line.
+      optimizationLevel: optimize ? OptimizationLevel.Release : OptimizationLevel.Debug,
       allowUnsafe: true,
       nullableContextOptions: NullableContextOptions.Disable,
       concurrentBuild: false);
