@@ -103,7 +103,7 @@ public sealed class ScriptHost : IDisposable
 
     lock (sync)
     {
-      string hash = Hash(sb.Append(string.Join("|", modules.Select(m => m.ContentHash))).ToString());
+      string hash = Hash(sb.ToString());
       ScriptModule? existing = modules.FirstOrDefault(m => m.ContentHash == hash);
       if (existing != null)
         return existing;
