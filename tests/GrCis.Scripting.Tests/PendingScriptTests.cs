@@ -24,6 +24,12 @@ public class PendingScriptTests
     "Fu", "Fv", "Color2",
   };
 
+  /// <summary>Pending names the library really lacks now; errors about any other name are real errors.</summary>
+  static readonly HashSet<string> StillMissing = PendingNames
+    .Where(n => !typeof(IRayScene).Assembly.GetTypes().Any(t => t.IsPublic && t.Name == n) &&
+                !typeof(IRayScene).Assembly.GetTypes().Any(t => t.IsPublic && t.Name == "CheckerTexture" && t.GetMember(n).Length > 0))
+    .ToHashSet();
+
   static string Pending(string name) => Path.Combine(TestData.Root, "pending", name);
 
   /// <summary>
@@ -43,7 +49,7 @@ public class PendingScriptTests
         // Missing type (CS0246) or name (CS0103) of a pending class, or the follow-ups in a script class
         // deriving from one: its base constructor call (CS1729) and inherited fields (CS0103).
         bool missing = d.Id is "CS0246" or "CS0103" or "CS1729" &&
-                       PendingNames.Any(n => d.Message.Contains($"'{n}'", StringComparison.Ordinal));
+                       StillMissing.Any(n => d.Message.Contains($"'{n}'", StringComparison.Ordinal));
         Assert.True(missing, $"unexpected error in pending script: {d}");
       }
       return null;
