@@ -19,7 +19,7 @@ public class BadInputTests
   [Theory]
   [InlineData("No such scene", "unknown scene 'No such scene'")]
   [InlineData("Five bals", "did you mean 'Five balls'?")]
-  [InlineData("sphere plane", "did you mean 'Sphere on the plane'?")]
+  [InlineData("plane sphere", "did you mean 'Sphere on the plane'?")]
   public void Unknown_scene_is_a_usage_error_with_suggestions(string scene, string fragment)
   {
     using var dir = new TempDirectory();
