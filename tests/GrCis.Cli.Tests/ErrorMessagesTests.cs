@@ -19,6 +19,26 @@ public class ErrorMessagesTests
     public int Line { get; }
   }
 
+  /// <summary>Shaped like Rendering.MeshFormatException: LineNumber, and the location already in the message.</summary>
+  sealed class LocatedMessageException : FormatException
+  {
+    public LocatedMessageException(string fileName, int lineNumber, string problem) : base($"{fileName}({lineNumber}): {problem}")
+    {
+      FileName = fileName;
+      LineNumber = lineNumber;
+    }
+
+    public string FileName { get; }
+    public int LineNumber { get; }
+  }
+
+  [Fact]
+  public void Mesh_format_error_with_line_number_prints_its_location_once()
+  {
+    var e = new RenderException("Rendering failed", new LocatedMessageException("cube.obj", 9, "vertex index 12 out of range"));
+    Assert.Equal("cube.obj(9): vertex index 12 out of range", ErrorMessages.OneLine(e));
+  }
+
   [Fact]
   public void Malformed_obj_line_prints_as_file_line_message()
   {
