@@ -88,7 +88,7 @@ public class CsgSolidTests
   {
     readonly double tol;
     public Tol(double tol) => this.tol = tol;
-    public bool Equals(double a, double b) => Math.Abs(a - b) <= tol;
+    public bool Equals(double a, double b) => System.Math.Abs(a - b) <= tol;
     public int GetHashCode(double d) => 0;
   }
 }

@@ -64,7 +64,7 @@ public class TorusTests
   [Fact]
   public void Torus_world_normal_under_rotation_and_scale()
   {
-    var root = Place(new Torus(2, 0.5), Matrix4d.RotateX(Math.PI / 2) * Matrix4d.Scale(2) * Matrix4d.CreateTranslation(0, 0, 10));
+    var root = Place(new Torus(2, 0.5), Matrix4d.RotateX(System.Math.PI / 2) * Matrix4d.Scale(2) * Matrix4d.CreateTranslation(0, 0, 10));
     // RX(π/2) maps local z to world −y... the tube top (0,2,0.5) → local z axis goes to world y? check on the ray.
     Vector3d p0 = new Vector3d(-20, 0, 10), p1 = new Vector3d(1, 0, 0);
     Intersection i = First(root, p0, p1);
@@ -90,7 +90,7 @@ public class TorusTests
     Vector3d p0 = new Vector3d(0.1, 0, -5), p1 = new Vector3d(0, 0, 1);
     var hits = Hits(root, p0, p1);
     Assert.Equal(4, hits.Count);
-    double[] z = { -Math.Sqrt(0.84), -0.8, 0.8, Math.Sqrt(0.84) };
+    double[] z = { -System.Math.Sqrt(0.84), -0.8, 0.8, System.Math.Sqrt(0.84) };
     for (int k = 0; k < 4; k++)
     {
       Assert.Equal(5 + z[k], hits[k].T, 10);
@@ -113,11 +113,11 @@ public class TorusTests
     double disc = b * b - a * c;
     if (disc <= 0)
       return roots;
-    double t0 = (-b - Math.Sqrt(disc)) / a, t1 = (-b + Math.Sqrt(disc)) / a;
+    double t0 = (-b - System.Math.Sqrt(disc)) / a, t1 = (-b + System.Math.Sqrt(disc)) / a;
     double G(double t)
     {
       Vector3d p = p0 + t * p1;
-      double rho = Math.Sqrt(p.X * p.X + p.Y * p.Y);
+      double rho = System.Math.Sqrt(p.X * p.X + p.Y * p.Y);
       double A = (rho - R) * (rho - R) + p.Z * p.Z - r * r;
       double B = (rho + R) * (rho + R) + p.Z * p.Z - r * r;
       return A * B;
@@ -180,7 +180,7 @@ public class TorusTests
     {
       bool matched = false;
       foreach (double s in shorter)
-        if (Math.Abs(s - t) <= pairTol) { matched = true; break; }
+        if (System.Math.Abs(s - t) <= pairTol) { matched = true; break; }
       if (!matched)
         extra.Add(t);
     }
@@ -189,7 +189,7 @@ public class TorusTests
     extra.Sort();
     for (int i = 0; i < extra.Count; i += 2)
     {
-      maxGap = Math.Max(maxGap, extra[i + 1] - extra[i]);
+      maxGap = System.Math.Max(maxGap, extra[i + 1] - extra[i]);
       if (extra[i + 1] - extra[i] > pairTol)
         return false;
     }
@@ -229,7 +229,7 @@ public class TorusTests
         double R = 0.3 + 2.7 * rnd.NextDouble();
         double r = kind switch
         {
-          "thin torus" => R * Math.Pow(10, -3 + 1.5 * rnd.NextDouble()),
+          "thin torus" => R * System.Math.Pow(10, -3 + 1.5 * rnd.NextDouble()),
           "spindle/horn" => R * (1.0 + rnd.NextDouble()),
           _ => R * (0.05 + 0.9 * rnd.NextDouble()),
         };
@@ -244,20 +244,20 @@ public class TorusTests
             break;
           case "inside tube":
           {
-            double phi = rnd.NextDouble() * 2 * Math.PI;
-            p0 = new Vector3d(R * Math.Cos(phi), R * Math.Sin(phi), 0) + RandomUnit() * r * 0.9 * rnd.NextDouble();
+            double phi = rnd.NextDouble() * 2 * System.Math.PI;
+            p0 = new Vector3d(R * System.Math.Cos(phi), R * System.Math.Sin(phi), 0) + RandomUnit() * r * 0.9 * rnd.NextDouble();
             dir = RandomUnit();
             break;
           }
           case "grazing":
           {
             // A random surface point, a tangent direction tilted by a tiny angle.
-            double phi = rnd.NextDouble() * 2 * Math.PI, psi = rnd.NextDouble() * 2 * Math.PI;
-            Vector3d radial = new Vector3d(Math.Cos(phi), Math.Sin(phi), 0);
-            Vector3d normal = radial * Math.Cos(psi) + Vector3d.UnitZ * Math.Sin(psi);
+            double phi = rnd.NextDouble() * 2 * System.Math.PI, psi = rnd.NextDouble() * 2 * System.Math.PI;
+            Vector3d radial = new Vector3d(System.Math.Cos(phi), System.Math.Sin(phi), 0);
+            Vector3d normal = radial * System.Math.Cos(psi) + Vector3d.UnitZ * System.Math.Sin(psi);
             Vector3d q = radial * R + normal * r;
             Vector3d tangent = Vector3d.Cross(normal, RandomUnit()).Normalized();
-            dir = (tangent + normal * (rnd.NextDouble() * 2 - 1) * Math.Pow(10, -1 - 5 * rnd.NextDouble())).Normalized();
+            dir = (tangent + normal * (rnd.NextDouble() * 2 - 1) * System.Math.Pow(10, -1 - 5 * rnd.NextDouble())).Normalized();
             p0 = q - dir * (2 * size * rnd.NextDouble() + 0.01 * size);
             break;
           }
@@ -267,7 +267,7 @@ public class TorusTests
             if (rnd.NextDouble() < 0.3) dir = RandomUnit();
             break;
         }
-        Vector3d p1 = dir * Math.Pow(10, -2 + 4 * rnd.NextDouble());   // unnormalised on purpose
+        Vector3d p1 = dir * System.Math.Pow(10, -2 + 4 * rnd.NextDouble());   // unnormalised on purpose
 
         var torus = new Torus(R, r);
         var ours = Hits(torus, p0, p1);
@@ -286,7 +286,7 @@ public class TorusTests
           bool ok = ourT.Count > refT.Count
             ? ExtraRootsArePairsNear(ourT, refT, pairTol, out double gap)
             : ExtraRootsArePairsNear(refT, ourT, pairTol, out gap);
-          maxPairGap = Math.Max(maxPairGap, gap * p1.Length / size);
+          maxPairGap = System.Math.Max(maxPairGap, gap * p1.Length / size);
           if (ourT.Count > refT.Count) oursMore++;
           Assert.True(ok, $"{kind}: R={R}, r={r}, p0={p0}, p1={p1}: ours {string.Join(",", ourT)} vs reference {string.Join(",", refT)}");
           tangencyMismatches++;
@@ -295,9 +295,9 @@ public class TorusTests
         }
         for (int k = 0; k < ourT.Count; k++)
         {
-          double err = Math.Abs(ourT[k] - refT[k]) * p1.Length / size;
-          maxRelError = Math.Max(maxRelError, err);
-          maxByKind[kind] = Math.Max(maxByKind.GetValueOrDefault(kind), err);
+          double err = System.Math.Abs(ourT[k] - refT[k]) * p1.Length / size;
+          maxRelError = System.Math.Max(maxRelError, err);
+          maxByKind[kind] = System.Math.Max(maxByKind.GetValueOrDefault(kind), err);
           Assert.True(err <= tTolerance, $"{kind}: root {k} differs by {err:E2} (R={R}, r={r}, p0={p0}, p1={p1})");
           Assert.Equal(reference[k].enter, ours[k].Enter);
         }

@@ -1,0 +1,30 @@
+using System;
+using System.IO;
+using System.Threading;
+
+namespace GrCis.Cli;
+
+/// <summary>Where a command reads and writes: the real console in <c>Main</c>, captured writers in tests.</summary>
+public sealed class CliEnvironment
+{
+  public CliEnvironment(TextWriter output, TextWriter error)
+  {
+    Out = output ?? throw new ArgumentNullException(nameof(output));
+    Error = error ?? throw new ArgumentNullException(nameof(error));
+  }
+
+  /// <summary>Results (the final summary line, <c>list</c> output).</summary>
+  public TextWriter Out { get; }
+
+  /// <summary>Errors and progress.</summary>
+  public TextWriter Error { get; }
+
+  /// <summary>True when stderr is a terminal: show a live progress bar instead of plain lines.</summary>
+  public bool Interactive { get; init; }
+
+  /// <summary>Relative paths (and the default output file) resolve against this directory.</summary>
+  public string WorkingDirectory { get; init; } = Directory.GetCurrentDirectory();
+
+  /// <summary>Signalled by Ctrl+C; a cancelled render writes nothing.</summary>
+  public CancellationToken Cancel { get; init; }
+}

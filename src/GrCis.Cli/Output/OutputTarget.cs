@@ -1,0 +1,121 @@
+using System;
+using System.IO;
+using Rendering.Imaging;
+
+namespace GrCis.Cli.Output;
+
+/// <summary>
+/// The file a render goes to. Checked before rendering (so a long render does not fail at the end)
+/// and written atomically (temporary sibling, then rename): a failed or interrupted save leaves no
+/// file behind and never a half-written one.
+/// </summary>
+public sealed class OutputTarget
+{
+  public OutputTarget(string fullPath, OutputFormat format)
+  {
+    FullPath = fullPath;
+    Format = format;
+  }
+
+  public string FullPath { get; }
+
+  public OutputFormat Format { get; }
+
+  /// <summary>
+  /// Resolves <c>-o</c> and <c>--format</c>: without <c>-o</c> the file is <c>{stem}.png</c> (or .pfm)
+  /// in <paramref name="workingDirectory"/>; without <c>--format</c> the extension decides.
+  /// </summary>
+  /// <exception cref="UsageException">Unknown format or extension.</exception>
+  public static OutputTarget Resolve(string? output, string? format, string defaultStem, string workingDirectory)
+  {
+    OutputFormat? explicitFormat = format == null ? null : ParseFormat(format);
+    if (string.IsNullOrWhiteSpace(output))
+    {
+      OutputFormat f = explicitFormat ?? OutputFormat.Png;
+      return new OutputTarget(Path.Combine(workingDirectory, defaultStem + Extension(f)), f);
+    }
+
+    string full = Path.GetFullPath(output, workingDirectory);
+    if (explicitFormat is OutputFormat given)
+      return new OutputTarget(full, given);
+    string ext = Path.GetExtension(full).ToLowerInvariant();
+    return ext switch
+    {
+      ".png" => new OutputTarget(full, OutputFormat.Png),
+      ".pfm" => new OutputTarget(full, OutputFormat.Pfm),
+      "" => throw new UsageException($"output file '{output}' has no extension; use .png or .pfm (or --format)"),
+      _ => throw new UsageException($"cannot write '{ext}' files ('{output}'); use .png or .pfm (or --format)"),
+    };
+  }
+
+  static OutputFormat ParseFormat(string format) => format.Trim().ToLowerInvariant() switch
+  {
+    "png" => OutputFormat.Png,
+    "pfm" => OutputFormat.Pfm,
+    _ => throw new UsageException($"unknown --format '{format}'; use png or pfm"),
+  };
+
+  static string Extension(OutputFormat f) => f == OutputFormat.Pfm ? ".pfm" : ".png";
+
+  /// <summary>Fails early when the file cannot be written: missing directory, a directory in the way, no permission.</summary>
+  /// <exception cref="CliFailure">The file could not be created; nothing is left behind.</exception>
+  public void CheckWritable()
+  {
+    if (Directory.Exists(FullPath))
+      throw new CliFailure($"cannot write '{FullPath}': it is a directory");
+    string? dir = Path.GetDirectoryName(FullPath);
+    if (string.IsNullOrEmpty(dir) || !Directory.Exists(dir))
+      throw new CliFailure($"cannot write '{FullPath}': directory '{dir}' does not exist");
+
+    // Probe with the same kind of sibling file the atomic save creates, and remove it at once.
+    string probe = Path.Combine(dir, "." + Path.GetFileName(FullPath) + ".probe-" + Guid.NewGuid().ToString("N")[..12]);
+    try
+    {
+      using var fs = new FileStream(probe, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1, FileOptions.DeleteOnClose);
+    }
+    catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+    {
+      throw new CliFailure($"cannot write '{FullPath}': {Reason(e)}", e);
+    }
+    finally
+    {
+      TryDelete(probe);
+    }
+  }
+
+  /// <summary>Writes the image: PNG with display gamma and GrCis's truncating quantization, or linear PFM.</summary>
+  /// <exception cref="CliFailure">The save failed; any existing file is unchanged and no temporary file remains.</exception>
+  public void Save(FloatImage image, double gamma)
+  {
+    try
+    {
+      if (Format == OutputFormat.Pfm)
+        PfmWriter.Save(FullPath, image);
+      else
+        PngFile.Save(FullPath, Rgb8Image.FromFloatImage(image, gamma, Quantization.Truncate));
+    }
+    catch (ImageSaveException e)
+    {
+      throw new CliFailure($"cannot write '{FullPath}': {Reason(e.InnerException ?? e)}", e);
+    }
+  }
+
+  static string Reason(Exception e) => e switch
+  {
+    UnauthorizedAccessException => "permission denied",
+    _ => e.Message,
+  };
+
+  static void TryDelete(string path)
+  {
+    try
+    {
+      if (File.Exists(path))
+        File.Delete(path);
+    }
+    catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+    {
+      // Best effort: DeleteOnClose normally removed it already.
+    }
+  }
+}

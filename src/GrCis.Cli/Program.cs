@@ -1,0 +1,100 @@
+using System;
+using System.CommandLine;
+using System.IO;
+using System.Threading;
+using GrCis.Cli.Commands;
+using Rendering.Execution;
+
+namespace GrCis.Cli;
+
+/// <summary>
+/// Entry point of <c>grcis</c>. <see cref="Run(string[], TextWriter, TextWriter)"/> is the whole
+/// program with its console passed in, so tests run it in-process.
+/// </summary>
+public static class Program
+{
+  public static int Main(string[] args)
+  {
+    using var cts = new CancellationTokenSource();
+    Console.CancelKeyPress += (_, e) =>
+    {
+      // First Ctrl+C stops the render cleanly (nothing is written); a second one kills the process.
+      if (!cts.IsCancellationRequested)
+      {
+        e.Cancel = true;
+        cts.Cancel();
+      }
+    };
+    var env = new CliEnvironment(Console.Out, Console.Error)
+    {
+      Interactive = !Console.IsErrorRedirected && !Console.IsOutputRedirected &&
+                    Environment.GetEnvironmentVariable("TERM") is not "dumb",
+      Cancel = cts.Token,
+    };
+    return Run(args, env);
+  }
+
+  /// <summary>Runs <c>grcis</c> with plain (non-interactive) progress, writing to the given writers.</summary>
+  public static int Run(string[] args, TextWriter output, TextWriter error) =>
+    Run(args, new CliEnvironment(output, error));
+
+  public static int Run(string[] args, CliEnvironment env)
+  {
+    ArgumentNullException.ThrowIfNull(args);
+    ArgumentNullException.ThrowIfNull(env);
+    try
+    {
+      RootCommand root = BuildRoot(env);
+      ParseResult parse = root.Parse(args);
+      if (parse.Errors.Count > 0)
+        return Fail(env, ExitCodes.Usage, parse.Errors[0].Message + " (see 'grcis --help')");
+
+      var config = new InvocationConfiguration
+      {
+        Output = env.Out,
+        Error = env.Error,
+        EnableDefaultExceptionHandler = false,
+        ProcessTerminationTimeout = null,
+      };
+      return parse.Invoke(config);
+    }
+    catch (UsageException e)
+    {
+      return Fail(env, ExitCodes.Usage, e.Message);
+    }
+    catch (CliFailure e)
+    {
+      return Fail(env, ExitCodes.Failure, e.Message);
+    }
+    catch (RenderException e)
+    {
+      return Fail(env, ExitCodes.Failure, "render failed: " + ErrorMessages.OneLine(e.InnerException ?? e));
+    }
+    catch (Exception e) when (e is not OutOfMemoryException)
+    {
+      // Scene construction and loaders (OBJ meshes, scripts) report here, with file(line) when they know it.
+      return Fail(env, ExitCodes.Failure, ErrorMessages.OneLine(e));
+    }
+    finally
+    {
+      env.Out.Flush();
+      env.Error.Flush();
+    }
+  }
+
+  static RootCommand BuildRoot(CliEnvironment env)
+  {
+    var root = new RootCommand("grcis: the GrCis ray tracer on .NET")
+    {
+      new RenderCommand().Build(env),
+      ListCommand.Build(env),
+    };
+    return root;
+  }
+
+  static int Fail(CliEnvironment env, int code, string message)
+  {
+    env.Error.WriteLine("grcis: error: " + message);
+    return code;
+  }
+}

@@ -1,0 +1,155 @@
+using System.IO;
+using System.Linq;
+using System.Threading;
+using Rendering;
+using Rendering.Imaging;
+
+namespace GrCis.Cli.Tests;
+
+public class RenderCommandTests
+{
+  [Fact]
+  public void Render_default_scene_writes_a_png_of_the_requested_size()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "render", "--size", "64x48", "-o", "out.png", "--threads", "2");
+
+    Assert.Equal(0, run.ExitCode);
+    Assert.Equal("", run.Error.Split('\n').FirstOrDefault(l => l.StartsWith("grcis: error")) ?? "");
+    Rgb8Image image = PngFile.Load(dir.File("out.png"));
+    Assert.Equal(64, image.Width);
+    Assert.Equal(48, image.Height);
+    Assert.True(image.Data.Distinct().Count() > 10, "the render should not be a flat image");
+    Assert.Equal(new[] { dir.File("out.png") }, dir.AllFiles());
+  }
+
+  [Fact]
+  public void Final_line_names_file_size_spp_and_time()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "render", "--size", "40x30", "--spp", "4", "-o", "s.png");
+
+    Assert.Equal(0, run.ExitCode);
+    string line = Assert.Single(run.Out.Split('\n', System.StringSplitOptions.RemoveEmptyEntries));
+    Assert.Contains(dir.File("s.png"), line);
+    Assert.Contains("40x30", line);
+    Assert.Contains("spp 4", line);
+    Assert.Matches(@"\d+\.\d\d s", line);
+  }
+
+  [Fact]
+  public void Redirected_progress_is_plain_lines_up_to_100_percent()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "render", "--size", "96x64", "-o", "p.png");
+
+    Assert.Equal(0, run.ExitCode);
+    Assert.Contains(run.ErrorLines, l => l.EndsWith("100% (6/6 tiles)"));
+    Assert.DoesNotContain('\u001b', run.Error);
+  }
+
+  [Fact]
+  public void Quiet_render_prints_no_progress()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "render", "--size", "16x16", "-o", "q.png", "-q");
+    Assert.Equal(0, run.ExitCode);
+    Assert.Equal("", run.Error);
+  }
+
+  [Fact]
+  public void Without_output_the_file_is_the_scene_slug_in_the_working_directory()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "render", "--size", "20x10", "-q");
+
+    Assert.Equal(0, run.ExitCode);
+    Assert.Equal(new[] { dir.File("sphere-on-the-plane.png") }, dir.AllFiles());
+  }
+
+  [Fact]
+  public void Named_scene_is_found_ignoring_case_and_spaces()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "render", "five BALLS", "--size", "20x10", "-q");
+
+    Assert.Equal(0, run.ExitCode);
+    Assert.True(File.Exists(dir.File("five-balls.png")));
+  }
+
+  [Fact]
+  public void Pfm_extension_writes_a_linear_float_map()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "render", "--size", "8x6", "-o", "lin.pfm", "-q");
+
+    Assert.Equal(0, run.ExitCode);
+    byte[] bytes = File.ReadAllBytes(dir.File("lin.pfm"));
+    Assert.StartsWith("PF\n8 6\n-1.0\n", System.Text.Encoding.ASCII.GetString(bytes, 0, 12));
+    Assert.Equal(12 + 8 * 6 * 3 * 4, bytes.Length);
+  }
+
+  [Fact]
+  public void Same_seed_gives_identical_png_bytes_on_1_and_3_threads()
+  {
+    using var dir = new TempDirectory();
+    string[] common = { "render", "--size", "48x32", "--spp", "4", "--jitter", "1", "--seed", "7", "-q" };
+    Assert.Equal(0, CliRun.Of(dir.Path, [.. common, "-t", "1", "-o", "a.png"]).ExitCode);
+    Assert.Equal(0, CliRun.Of(dir.Path, [.. common, "-t", "3", "-o", "b.png"]).ExitCode);
+    Assert.Equal(File.ReadAllBytes(dir.File("a.png")), File.ReadAllBytes(dir.File("b.png")));
+  }
+
+  [Fact]
+  public void Switching_off_shadows_changes_the_image()
+  {
+    using var dir = new TempDirectory();
+    Assert.Equal(0, CliRun.Of(dir.Path, "render", "--size", "64x48", "-q", "-o", "a.png").ExitCode);
+    Assert.Equal(0, CliRun.Of(dir.Path, "render", "--size", "64x48", "-q", "-o", "b.png", "--no-shadows").ExitCode);
+    Assert.NotEqual(File.ReadAllBytes(dir.File("a.png")), File.ReadAllBytes(dir.File("b.png")));
+  }
+
+  [Fact]
+  public void Cancelled_render_exits_130_and_writes_nothing()
+  {
+    using var dir = new TempDirectory();
+    using var cts = new CancellationTokenSource();
+    cts.Cancel();
+    CliRun run = CliRun.Of(dir.Path, cts.Token, "render", "--size", "64x48", "-o", "c.png", "-q");
+
+    Assert.Equal(ExitCodes.Cancelled, run.ExitCode);
+    Assert.Contains("cancelled", Assert.Single(run.ErrorLines));
+    Assert.Empty(dir.AllFiles());
+  }
+
+  [Fact]
+  public void Existing_output_is_replaced_whole()
+  {
+    using var dir = new TempDirectory();
+    File.WriteAllText(dir.File("o.png"), "old");
+    Assert.Equal(0, CliRun.Of(dir.Path, "render", "--size", "10x10", "-o", "o.png", "-q").ExitCode);
+    Assert.Equal(10, PngFile.Load(dir.File("o.png")).Width);
+    Assert.Single(dir.AllFiles());
+  }
+
+  [Fact]
+  public void List_prints_every_built_in_scene_one_per_line()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "list");
+
+    Assert.Equal(0, run.ExitCode);
+    string[] lines = run.Out.Split('\n', System.StringSplitOptions.RemoveEmptyEntries | System.StringSplitOptions.TrimEntries);
+    Assert.Equal(Scenes.Names, lines);
+    Assert.Contains(Scenes.DefaultSceneName, lines);
+  }
+
+  [Fact]
+  public void Help_exits_zero_and_lists_the_render_options()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "render", "--help");
+    Assert.Equal(0, run.ExitCode);
+    foreach (string option in new[] { "--output", "--size", "--spp", "--jitter", "--threads", "--seed", "--gamma", "--no-shadows", "--no-reflections", "--no-refractions" })
+      Assert.Contains(option, run.Out);
+  }
+}
