@@ -43,7 +43,9 @@ public sealed class RenderJob
   /// <summary>The image function the settings select: Whitted ray tracing with the three switches.</summary>
   public static RayTracing CreateImageFunction(IRayScene scene, RenderSettings settings)
   {
-    var rt = new RayTracing(scene);
+    ArgumentNullException.ThrowIfNull(scene);
+    // Unbound: it shades MT.scene, so each render worker uses its own clone of an animated scene.
+    var rt = new RayTracing();
     ApplySwitches(rt, settings);
     return rt;
   }
@@ -89,8 +91,17 @@ public sealed class RenderJob
 
     // What TileRenderer does at the start of a render; done here too so probes work before any render.
     synth.ImageFunction = function;
-    function.Width = settings.Width;
-    function.Height = settings.Height;
+    IRayScene? callerScene = MT.scene;
+    MT.scene = scene; // an unbound function reaches the camera through MT.scene
+    try
+    {
+      function.Width = settings.Width;
+      function.Height = settings.Height;
+    }
+    finally
+    {
+      MT.scene = callerScene;
+    }
     return new RenderJob(scene, function, synth, settings, sceneName, param);
   }
 

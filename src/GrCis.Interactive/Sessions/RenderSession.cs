@@ -123,7 +123,7 @@ public sealed class RenderSession : IDisposable
       if (InstrumentedRayTracing.CanInstrument(function))
       {
         counter = new CountingObserver();
-        function = new InstrumentedRayTracing((RayTracing)function, job.Scene, counter);
+        function = new InstrumentedRayTracing((RayTracing)function, counter);
       }
       inner.ImageFunction = function;
 
@@ -184,7 +184,7 @@ public sealed class RenderSession : IDisposable
       () =>
       {
         MT.InitThreadData();
-        MT.SetRendering(job.Scene, job.ImageFunction, renderer);
+        MT.SetRendering(SceneCloner.CloneForWorker(job.Scene), job.ImageFunction, renderer);
         MT.seed = options.Seed;
         MT.frame = options.Frame;
         return new double[target.Bands];

@@ -9,6 +9,7 @@ namespace GrCis.Interactive;
 /// <see cref="RayTracing"/> that reports each ray to a <see cref="RayObserver"/> and otherwise shades
 /// exactly like its template (every override calls the base), so images are bit-identical.
 /// Used only where rays are wanted (statistics, probe, extra views); plain renders pay nothing.
+/// Not bound to a scene: it shades the thread's <see cref="MT.scene"/>, i.e. each worker's clone.
 /// </summary>
 internal sealed class InstrumentedRayTracing : RayTracing
 {
@@ -25,7 +26,7 @@ internal sealed class InstrumentedRayTracing : RayTracing
 
   readonly RayObserver observer;
 
-  public InstrumentedRayTracing(RayTracing template, IRayScene scene, RayObserver observer) : base(scene)
+  public InstrumentedRayTracing(RayTracing template, RayObserver observer)
   {
     ArgumentNullException.ThrowIfNull(template);
     this.observer = observer ?? throw new ArgumentNullException(nameof(observer));

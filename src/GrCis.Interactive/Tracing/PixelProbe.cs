@@ -27,7 +27,9 @@ public static class PixelProbe
     try
     {
       MT.InitThreadData();
-      MT.SetRendering(job.Scene, job.ImageFunction, job.Renderer);
+      // A clone for time-dependent scenes, so a motion-blur function cannot move the job's scene.
+      IRayScene scene = SceneCloner.CloneForWorker(job.Scene);
+      MT.SetRendering(scene, job.ImageFunction, job.Renderer);
       MT.seed = job.Options.Seed;
       MT.frame = job.Options.Frame;
 
@@ -47,8 +49,8 @@ public static class PixelProbe
       long hash;
       if (InstrumentedRayTracing.CanInstrument(job.ImageFunction))
       {
-        var observer = new ProbeObserver(job.Scene);
-        var tracer = new InstrumentedRayTracing((RayTracing)job.ImageFunction, job.Scene, observer);
+        var observer = new ProbeObserver(scene);
+        var tracer = new InstrumentedRayTracing((RayTracing)job.ImageFunction, observer);
         MT.imageFunction = tracer;
         hash = tracer.GetSample(x + 0.5, y + 0.5, sample);
         tree = observer.Root;

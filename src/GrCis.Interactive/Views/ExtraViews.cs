@@ -43,7 +43,7 @@ public sealed class ExtraViews
     RayTracing template = known
       ? (RayTracing)job.ImageFunction
       : new RayTracing { DoShadows = false, DoReflections = false, DoRefractions = false, DoRecursion = false };
-    var tracer = new InstrumentedRayTracing(template, job.Scene, observer);
+    var tracer = new InstrumentedRayTracing(template, observer);
 
     ImageSynthesizer renderer = job.Renderer;
     IImageFunction? saved = renderer.ImageFunction;
@@ -54,8 +54,6 @@ public sealed class ExtraViews
     finally
     {
       renderer.ImageFunction = saved;
-      job.ImageFunction.Width = job.Width;
-      job.ImageFunction.Height = job.Height;
     }
     return new ExtraViews(job.Width, job.Height, observer, known);
   }
