@@ -1,0 +1,114 @@
+using System;
+using System.Collections.Generic;
+using System.Collections.Immutable;
+using System.IO;
+using System.Linq;
+using System.Reflection;
+using System.Text;
+using System.Threading;
+using System.Threading.Tasks;
+using Microsoft.CodeAnalysis;
+using Microsoft.CodeAnalysis.CSharp;
+using Microsoft.CodeAnalysis.Emit;
+using Microsoft.CodeAnalysis.Text;
+
+namespace GrCis.Scripting.Compilation;
+
+/// <summary>
+/// Compiles scene scripts (Roslyn's script dialect, as a script compilation with a globals type) and
+/// modules (regular compilations) to in-memory assemblies with portable PDBs, loaded into collectible
+/// contexts. This is what Roslyn's CSharpScript does internally, minus its non-collectible loader.
+/// </summary>
+internal static class ScriptCompiler
+{
+  /// <summary>Namespaces a script sees without a <c>using</c> (GrCis's list; OpenTK's vector types live in OpenTK.Mathematics).</summary>
+  public static readonly ImmutableArray<string> DefaultImports = ImmutableArray.Create(
+    "System", "System.Diagnostics", "System.Collections.Generic", "OpenTK.Mathematics",
+    "MathSupport", "Rendering", "Utilities");
+
+  static readonly CSharpParseOptions scriptParseOptions =
+    new(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Script);
+
+  static readonly CSharpParseOptions moduleParseOptions =
+    new(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Regular);
+
+  static readonly EmitOptions emitOptions = new(debugInformationFormat: DebugInformationFormat.PortablePdb);
+
+  static int serial;
+
+  public static CompiledScript CompileScript(string path, string source, string key, IReadOnlyList<ScriptModule> modules)
+  {
+    SyntaxTree tree = CSharpSyntaxTree.ParseText(SourceText.From(source, Encoding.UTF8), scriptParseOptions, path);
+    var options = new CSharpCompilationOptions(
+      OutputKind.DynamicallyLinkedLibrary,
+      usings: DefaultImports,
+      optimizationLevel: OptimizationLevel.Release,
+      allowUnsafe: true,
+      nullableContextOptions: NullableContextOptions.Disable,
+      concurrentBuild: false);
+
+    string assemblyName = $"GrCisScript{Interlocked.Increment(ref serial)}_{key[..12]}";
+    CSharpCompilation compilation = CSharpCompilation.CreateScriptCompilation(
+      assemblyName, tree, References(modules), options,
+      previousScriptCompilation: null, returnType: typeof(object), globalsType: typeof(ScriptGlobals));
+
+    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, path);
+
+    IMethodSymbol entry = compilation.GetEntryPoint(CancellationToken.None)
+      ?? throw new InvalidOperationException($"{path}: the script compilation has no entry point.");
+    var context = new ScriptLoadContext(assemblyName, ModuleMap(modules));
+    Assembly assembly = context.LoadFromStream(pe, pdb);
+    string typeName = entry.ContainingType.MetadataName;
+    if (entry.ContainingNamespace is { IsGlobalNamespace: false } ns)
+      typeName = ns.ToDisplayString() + "." + typeName;
+    MethodInfo method = assembly.GetType(typeName, throwOnError: true)!.GetMethod(entry.MetadataName, BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Static)
+      ?? throw new InvalidOperationException($"{path}: the script entry point {entry.MetadataName} was not found.");
+    var factory = method.CreateDelegate<Func<object?[], Task<object?>>>();
+    return new CompiledScript(path, key, factory, context, warnings);
+  }
+
+  public static ScriptModule CompileModule(string directory, IReadOnlyList<string> files, IReadOnlyList<string> sources,
+                                           string hash, IReadOnlyList<ScriptModule> earlier)
+  {
+    var trees = new List<SyntaxTree>(files.Count);
+    for (int i = 0; i < files.Count; i++)
+      trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(sources[i], Encoding.UTF8), moduleParseOptions, files[i]));
+
+    var options = new CSharpCompilationOptions(
+      OutputKind.DynamicallyLinkedLibrary,
+      optimizationLevel: OptimizationLevel.Release,
+      allowUnsafe: true,
+      nullableContextOptions: NullableContextOptions.Disable,
+      concurrentBuild: false);
+
+    string dirName = new string(Path.GetFileName(directory.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar))
+      .Select(c => char.IsLetterOrDigit(c) ? c : '_').ToArray());
+    string assemblyName = $"GrCisModule{Interlocked.Increment(ref serial)}_{dirName}_{hash[..12]}";
+    CSharpCompilation compilation = CSharpCompilation.Create(assemblyName, trees, References(earlier), options);
+
+    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory);
+    byte[] image = pe.ToArray();
+    var context = new ScriptLoadContext(assemblyName, ModuleMap(earlier));
+    Assembly assembly = context.LoadFromStream(new MemoryStream(image), pdb);
+    return new ScriptModule(directory, files, hash, assembly, MetadataReference.CreateFromImage(image), context, warnings);
+  }
+
+  static (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) Emit(CSharpCompilation compilation, string path)
+  {
+    var pe = new MemoryStream();
+    var pdb = new MemoryStream();
+    EmitResult result = compilation.Emit(pe, pdb, options: emitOptions);
+    List<ScriptDiagnostic> diagnostics = DiagnosticFormatter.Convert(result.Diagnostics, path);
+    if (!result.Success)
+      throw new ScriptCompilationException(path, diagnostics);
+    pe.Position = 0;
+    pdb.Position = 0;
+    return (pe, pdb, diagnostics);
+  }
+
+  static IEnumerable<MetadataReference> References(IReadOnlyList<ScriptModule> modules) =>
+    modules.Count == 0 ? FrameworkReferences.All : FrameworkReferences.All.Concat(modules.Select(m => m.Reference));
+
+  static Dictionary<string, Assembly> ModuleMap(IReadOnlyList<ScriptModule> modules) =>
+    modules.ToDictionary(m => m.AssemblyName, m => m.Assembly);
+}

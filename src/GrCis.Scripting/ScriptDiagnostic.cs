@@ -1,0 +1,37 @@
+namespace GrCis.Scripting;
+
+/// <summary>One compiler message about a script or module source file (1-based line and column).</summary>
+public sealed class ScriptDiagnostic
+{
+  public ScriptDiagnostic(string path, int line, int column, string severity, string id, string message)
+  {
+    Path = path;
+    Line = line;
+    Column = column;
+    Severity = severity;
+    Id = id;
+    Message = message;
+  }
+
+  /// <summary>Source file the message is about.</summary>
+  public string Path { get; }
+
+  /// <summary>1-based line in the user's file.</summary>
+  public int Line { get; }
+
+  /// <summary>1-based column.</summary>
+  public int Column { get; }
+
+  /// <summary>"error" or "warning".</summary>
+  public string Severity { get; }
+
+  /// <summary>Compiler id such as CS0103.</summary>
+  public string Id { get; }
+
+  public string Message { get; }
+
+  public bool IsError => Severity == "error";
+
+  /// <summary>The MSBuild-style form <c>path(line,col): error CSxxxx: message</c>.</summary>
+  public override string ToString() => $"{Path}({Line},{Column}): {Severity} {Id}: {Message}";
+}

@@ -1,0 +1,46 @@
+using System.Collections.Generic;
+using System.Reflection;
+using GrCis.Scripting.Compilation;
+using Microsoft.CodeAnalysis;
+
+namespace GrCis.Scripting;
+
+/// <summary>
+/// A folder of ordinary C# files (with namespaces) compiled into an in-memory assembly that scene
+/// scripts reference: a GrCis extension module used without rebuilding the program.
+/// </summary>
+public sealed class ScriptModule
+{
+  internal ScriptModule(string directory, IReadOnlyList<string> files, string contentHash, Assembly assembly,
+                        MetadataReference reference, ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings)
+  {
+    Directory = directory;
+    Files = files;
+    ContentHash = contentHash;
+    Assembly = assembly;
+    Reference = reference;
+    LoadContext = loadContext;
+    Warnings = warnings;
+  }
+
+  /// <summary>Full path of the module folder.</summary>
+  public string Directory { get; }
+
+  /// <summary>The source files compiled (full paths, ordinal order).</summary>
+  public IReadOnlyList<string> Files { get; }
+
+  /// <summary>SHA-256 over the files' paths and contents (hex).</summary>
+  public string ContentHash { get; }
+
+  /// <summary>The loaded module assembly.</summary>
+  public Assembly Assembly { get; }
+
+  /// <summary>Compiler warnings (the module compiled).</summary>
+  public IReadOnlyList<ScriptDiagnostic> Warnings { get; }
+
+  public string AssemblyName => Assembly.GetName().Name!;
+
+  internal MetadataReference Reference { get; }
+
+  internal ScriptLoadContext LoadContext { get; }
+}

@@ -1,0 +1,88 @@
+using System;
+using System.Collections.Generic;
+using Utilities;
+
+namespace GrCis.Scripting;
+
+/// <summary>
+/// Strict reading of a script's <c>param</c> string. <see cref="Util.TryParse(Dictionary{string, string}, string, ref double)"/>
+/// quietly keeps the default when a value does not parse; these getters instead throw a
+/// <see cref="ScriptParameterException"/> that says which parameter, which value and what was expected.
+/// A missing key gives the default. Usable from scripts (<c>new GrCis.Scripting.ScriptParameters(param)</c>)
+/// and from hosts that want to check a parameter string up front.
+/// </summary>
+public sealed class ScriptParameters
+{
+  public ScriptParameters(string? param)
+  {
+    Text = param ?? "";
+    Values = Util.ParseKeyValueList(Text);
+  }
+
+  /// <summary>The original parameter text.</summary>
+  public string Text { get; }
+
+  /// <summary>The parsed key → value map (bare keys map to "").</summary>
+  public Dictionary<string, string> Values { get; }
+
+  public bool Contains(string key) => Values.ContainsKey(key);
+
+  public double GetDouble(string key, double defaultValue)
+  {
+    double v = defaultValue;
+    return !Values.ContainsKey(key) || Util.TryParse(Values, key, ref v) ? v : throw Bad(key, "a number (e.g. 1.5)");
+  }
+
+  public int GetInt(string key, int defaultValue)
+  {
+    int v = defaultValue;
+    return !Values.ContainsKey(key) || Util.TryParse(Values, key, ref v) ? v : throw Bad(key, "a whole number (e.g. 4)");
+  }
+
+  public long GetLong(string key, long defaultValue)
+  {
+    long v = defaultValue;
+    return !Values.ContainsKey(key) || Util.TryParse(Values, key, ref v) ? v : throw Bad(key, "a whole number (e.g. 4)");
+  }
+
+  /// <summary>A bare key means true.</summary>
+  public bool GetBool(string key, bool defaultValue)
+  {
+    bool v = defaultValue;
+    return !Values.ContainsKey(key) || Util.TryParse(Values, key, ref v) ? v : throw Bad(key, "yes/no, true/false, 1/0 or the bare key");
+  }
+
+  public string GetString(string key, string defaultValue) =>
+    Values.TryGetValue(key, out string? v) ? v : defaultValue;
+
+  /// <summary>One of <paramref name="allowed"/> (case-insensitive), returned in its listed spelling.</summary>
+  public string GetChoice(string key, string defaultValue, params string[] allowed)
+  {
+    if (!Values.TryGetValue(key, out string? v))
+      return defaultValue;
+    foreach (string a in allowed)
+      if (string.Equals(a, v, StringComparison.OrdinalIgnoreCase))
+        return a;
+    throw Bad(key, "one of " + string.Join(", ", allowed));
+  }
+
+  ScriptParameterException Bad(string key, string expected) => new(key, Values[key], expected);
+}
+
+/// <summary>A parameter value in the script's <c>param</c> string has the wrong form.</summary>
+public sealed class ScriptParameterException : Exception
+{
+  public ScriptParameterException(string key, string value, string expected)
+    : base($"parameter '{key}' has the value '{value}', expected {expected}")
+  {
+    Key = key;
+    Value = value;
+    Expected = expected;
+  }
+
+  public string Key { get; }
+
+  public string Value { get; }
+
+  public string Expected { get; }
+}

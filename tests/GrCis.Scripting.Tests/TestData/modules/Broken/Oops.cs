@@ -1,0 +1,7 @@
+namespace Broken
+{
+  public class Oops
+  {
+    public int Value => missing;
+  }
+}
