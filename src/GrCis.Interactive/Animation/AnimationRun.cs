@@ -1,0 +1,88 @@
+using System;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Text.RegularExpressions;
+using System.Threading;
+using System.Threading.Tasks;
+using Rendering;
+using Rendering.Execution;
+using Rendering.Imaging;
+
+namespace GrCis.Interactive;
+
+/// <summary>
+/// Renders the frames of an animated scene the way <c>grcis animate</c> does: frame k at
+/// <see cref="AnimationTimeline.FrameTime"/>, the scene's time set before the frame, and the tile
+/// renderer (one clone of the scene per worker) with the frame number mixed into the seeds.
+/// Optionally saves each frame (atomically) to a pattern like <c>out####.png</c>.
+/// </summary>
+public sealed partial class AnimationRun
+{
+  public AnimationRun(RenderJob job, AnimationTimeline timeline)
+  {
+    Job = job ?? throw new ArgumentNullException(nameof(job));
+    Timeline = timeline ?? throw new ArgumentNullException(nameof(timeline));
+  }
+
+  public RenderJob Job { get; }
+
+  public AnimationTimeline Timeline { get; }
+
+  /// <summary>Raised after each frame (on the rendering thread).</summary>
+  public event EventHandler<FrameRenderedEventArgs>? FrameRendered;
+
+  /// <summary>A timeline from the script's overrides, falling back to the given range.</summary>
+  public static AnimationTimeline TimelineFor(SceneOverrides? overrides, double start, double end, double fps) =>
+    new(overrides?.Start ?? start, overrides?.End ?? end, overrides?.Fps ?? fps);
+
+  /// <summary>The image of one frame (a still at the frame's time).</summary>
+  public FloatImage RenderFrame(int frame, CancellationToken cancel = default)
+  {
+    double time = Timeline.FrameTime(frame);
+    SceneTime.Set(Job.Scene, time);
+    return TileRenderer.Render(Job.Scene, Job.ImageFunction, Job.Renderer, Job.Settings.ToRenderOptions(frame), null, cancel);
+  }
+
+  /// <summary>Renders every frame in order; stops between frames when cancelled. Returns the frames rendered.</summary>
+  public Task<int> RunAsync(string? outputPattern = null, CancellationToken cancel = default) =>
+    Task.Factory.StartNew(() => Run(outputPattern, cancel), cancel, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+
+  int Run(string? pattern, CancellationToken cancel)
+  {
+    var clock = Stopwatch.StartNew();
+    int total = Timeline.FrameCount, done = 0;
+    for (int k = 0; k < total && !cancel.IsCancellationRequested; k++)
+    {
+      FloatImage image = RenderFrame(k, cancel);
+      if (cancel.IsCancellationRequested)
+        break; // a half-rendered frame is neither saved nor reported
+      string? file = null;
+      if (pattern != null)
+      {
+        file = FrameFileName(pattern, k);
+        string? dir = Path.GetDirectoryName(Path.GetFullPath(file));
+        if (dir != null)
+          Directory.CreateDirectory(dir);
+        PngFile.Save(file, Rgb8Image.FromFloatImage(image, Job.Renderer.Gamma > 0.001 ? Job.Renderer.Gamma : 1.0));
+      }
+      done++;
+      FrameRendered?.Invoke(this, new FrameRenderedEventArgs(k, Timeline.FrameTime(k), image, done, total, clock.Elapsed, file));
+    }
+    return done;
+  }
+
+  /// <summary>Replaces the last run of '#' with the zero-padded frame number (appends it when there is none).</summary>
+  public static string FrameFileName(string pattern, int frame)
+  {
+    ArgumentException.ThrowIfNullOrEmpty(pattern);
+    MatchCollection runs = Hashes().Matches(pattern);
+    if (runs.Count == 0)
+      return Path.ChangeExtension(pattern, null) + frame.ToString("D4", CultureInfo.InvariantCulture) + Path.GetExtension(pattern);
+    Match m = runs[^1];
+    return pattern[..m.Index] + frame.ToString("D" + m.Length, CultureInfo.InvariantCulture) + pattern[(m.Index + m.Length)..];
+  }
+
+  [GeneratedRegex("#+")]
+  private static partial Regex Hashes();
+}

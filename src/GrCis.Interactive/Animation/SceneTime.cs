@@ -1,0 +1,49 @@
+using System.Collections.Generic;
+using Rendering;
+
+namespace GrCis.Interactive;
+
+/// <summary>
+/// Sets the time of a scene. A scene that is itself <see cref="ITimeDependent"/> (AnimatedRayScene)
+/// propagates time on its own; for any other scene we follow the same order: animator first, then
+/// intersectable, background, camera, lights.
+/// </summary>
+public static class SceneTime
+{
+  /// <summary>True when setting a time can change anything in <paramref name="scene"/>.</summary>
+  public static bool IsAnimated(IRayScene scene) =>
+    scene is ITimeDependent || scene.Animator != null || scene.Intersectable is ITimeDependent ||
+    scene.Background is ITimeDependent || scene.Camera is ITimeDependent || AnyTimeDependent(scene.Sources);
+
+  public static void Set(IRayScene scene, double time)
+  {
+    MT.time = time;
+    if (scene is ITimeDependent whole)
+    {
+      whole.Time = time;
+      return;
+    }
+    if (scene.Animator != null)
+      scene.Animator.Time = time;
+    if (scene.Intersectable is ITimeDependent i)
+      i.Time = time;
+    if (scene.Background is ITimeDependent b)
+      b.Time = time;
+    if (scene.Camera is ITimeDependent c)
+      c.Time = time;
+    if (scene.Sources != null)
+      foreach (ILightSource l in scene.Sources)
+        if (l is ITimeDependent lt)
+          lt.Time = time;
+  }
+
+  static bool AnyTimeDependent(ICollection<ILightSource>? sources)
+  {
+    if (sources == null)
+      return false;
+    foreach (ILightSource l in sources)
+      if (l is ITimeDependent)
+        return true;
+    return false;
+  }
+}

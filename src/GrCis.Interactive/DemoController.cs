@@ -1,0 +1,214 @@
+using System;
+using System.Threading;
+using System.Threading.Tasks;
+using Rendering;
+
+namespace GrCis.Interactive;
+
+/// <summary>
+/// Everything behind the demo window, for any front end to bind to: the scene list and selection,
+/// parameters, settings, render/stop with previews, the pixel probe, extra views, history, saving,
+/// animation, and re-rendering when the selected script changes on disk.
+/// </summary>
+public sealed class DemoController : IDisposable
+{
+  readonly object sync = new();
+  RenderSession? session;
+  ScriptWatcher? watcher;
+  SceneEntry? selected;
+  bool watch;
+
+  public DemoController(SceneCatalog catalog) => Catalog = catalog ?? throw new ArgumentNullException(nameof(catalog));
+
+  public SceneCatalog Catalog { get; }
+
+  public RenderSettings Settings { get; set; } = new();
+
+  public RenderHistory History { get; } = new();
+
+  /// <summary>Where events are raised (the UI thread's context); null = whichever thread produced them.</summary>
+  public SynchronizationContext? EventContext { get; set; }
+
+  /// <summary>Preview cadence handed to each session.</summary>
+  public TimeSpan PreviewInterval { get; set; } = TimeSpan.FromMilliseconds(500);
+
+  /// <summary>Debounce of the script watcher.</summary>
+  public TimeSpan WatchDebounce { get; set; } = TimeSpan.FromMilliseconds(300);
+
+  /// <summary>The job of the last render started (what the probe and extra views use).</summary>
+  public RenderJob? LastJob { get; private set; }
+
+  public RenderResult? LastResult { get; private set; }
+
+  public bool IsRendering
+  {
+    get
+    {
+      lock (sync)
+        return session?.IsRunning ?? false;
+    }
+  }
+
+  public SceneEntry? Selected
+  {
+    get => selected;
+    set
+    {
+      selected = value;
+      RestartWatcher();
+    }
+  }
+
+  /// <summary>Re-render whenever the selected script's file changes.</summary>
+  public bool WatchScript
+  {
+    get => watch;
+    set
+    {
+      watch = value;
+      RestartWatcher();
+    }
+  }
+
+  public event EventHandler<BuiltScene>? SceneEvaluated;
+
+  public event EventHandler<RenderPreviewEventArgs>? PreviewReady;
+
+  public event EventHandler<RenderProgressEventArgs>? ProgressChanged;
+
+  public event EventHandler<RenderCompletedEventArgs>? RenderCompleted;
+
+  /// <summary>A message for the user (script error, save failure); no stack traces.</summary>
+  public event EventHandler<string>? Error;
+
+  /// <summary>Raised when a watched script changed on disk, just before the re-render starts.</summary>
+  public event EventHandler<ScriptChangedEventArgs>? ScriptChanged;
+
+  /// <summary>
+  /// Builds the selected scene with its parameter text and renders it, stopping any render in
+  /// progress. Returns the result, or null when the scene could not be built (see <see cref="Error"/>).
+  /// </summary>
+  public async Task<RenderResult?> RenderAsync()
+  {
+    SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
+    RenderSession s;
+    lock (sync)
+    {
+      session?.Stop();
+      BuiltScene built;
+      RenderJob job;
+      try
+      {
+        built = Catalog.Build(entry, entry.ParameterText, Settings);
+        job = RenderJob.Create(built, Settings);
+      }
+      catch (Exception ex) when (ex is SceneEvaluationException or ArgumentException)
+      {
+        Raise(Error, ex.Message);
+        return null;
+      }
+      Raise(SceneEvaluated, built);
+      LastJob = job;
+      s = session = new RenderSession(job) { PreviewInterval = PreviewInterval, EventContext = EventContext };
+      s.PreviewReady += (_, e) => PreviewReady?.Invoke(this, e);
+      s.ProgressChanged += (_, e) => ProgressChanged?.Invoke(this, e);
+      s.Completed += (_, e) =>
+      {
+        // On the UI context when one is set, so history and the display change together.
+        LastResult = e.Result;
+        History.Add(RenderRecord.From(e.Result));
+        if (e.Result.Error != null)
+          Error?.Invoke(this, $"Rendering failed: {e.Result.Error.Message}");
+        RenderCompleted?.Invoke(this, e);
+      };
+      s.Start();
+    }
+    return await s.Task.ConfigureAwait(false);
+  }
+
+  public void Stop()
+  {
+    lock (sync)
+      session?.Stop();
+  }
+
+  /// <summary>The pixel read-out for the last render.</summary>
+  public ProbeResult Probe(int x, int y)
+  {
+    RenderJob job = LastJob ?? throw new InvalidOperationException("Render something first.");
+    return PixelProbe.Probe(job, x, y, LastResult?.Job == job ? LastResult.Image : null);
+  }
+
+  /// <summary>Depth, normal and ray maps of the last render (after it finished).</summary>
+  public ExtraViews ComputeExtraViews(CancellationToken cancel = default)
+  {
+    RenderJob job = LastJob ?? throw new InvalidOperationException("Render something first.");
+    if (IsRendering)
+      throw new InvalidOperationException("Wait for the render to finish (or stop it) before computing the extra views.");
+    return ExtraViews.Compute(job, cancel);
+  }
+
+  /// <summary>Saves the current history image; reports a failure through <see cref="Error"/> and returns false.</summary>
+  public bool SaveImage(string path)
+  {
+    try
+    {
+      History.SaveCurrent(path);
+      return true;
+    }
+    catch (Exception ex) when (ex is Rendering.Imaging.ImageSaveException or InvalidOperationException or ArgumentException)
+    {
+      Raise(Error, ex.Message);
+      return false;
+    }
+  }
+
+  /// <summary>An animation run of the selected scene over the script's range (or the given one).</summary>
+  public AnimationRun CreateAnimation(double start, double end, double fps)
+  {
+    SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
+    BuiltScene built = Catalog.Build(entry, entry.ParameterText, Settings with { Time = null });
+    return new AnimationRun(RenderJob.Create(built, Settings with { Time = null }), AnimationRun.TimelineFor(built.Overrides, start, end, fps));
+  }
+
+  void RestartWatcher()
+  {
+    lock (sync)
+    {
+      watcher?.Dispose();
+      watcher = null;
+      if (!watch || selected?.Path == null)
+        return;
+      watcher = new ScriptWatcher(selected.Path, WatchDebounce);
+      watcher.Changed += (_, e) =>
+      {
+        Raise(ScriptChanged, e);
+        _ = RenderAsync();
+      };
+    }
+  }
+
+  void Raise<T>(EventHandler<T>? handler, T args)
+  {
+    if (handler == null)
+      return;
+    SynchronizationContext? ctx = EventContext;
+    if (ctx == null)
+      handler(this, args);
+    else
+      ctx.Post(_ => handler(this, args), null);
+  }
+
+  public void Dispose()
+  {
+    lock (sync)
+    {
+      watcher?.Dispose();
+      watcher = null;
+    }
+    RenderSession? s;
+    lock (sync)
+      s = session;
+    s?.Dispose();
+  }
+}

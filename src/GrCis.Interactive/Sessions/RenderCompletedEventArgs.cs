@@ -1,0 +1,11 @@
+using System;
+
+namespace GrCis.Interactive;
+
+/// <summary>The render ended (finished, stopped or failed).</summary>
+public sealed class RenderCompletedEventArgs : EventArgs
+{
+  public RenderCompletedEventArgs(RenderResult result) => Result = result;
+
+  public RenderResult Result { get; }
+}

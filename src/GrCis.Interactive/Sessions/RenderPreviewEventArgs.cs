@@ -1,0 +1,31 @@
+using System;
+using Rendering.Imaging;
+
+namespace GrCis.Interactive;
+
+/// <summary>A preview image: a snapshot the receiver owns (linear colours).</summary>
+public sealed class RenderPreviewEventArgs : EventArgs
+{
+  public RenderPreviewEventArgs(FloatImage image, PreviewPass pass, double fraction, int sequence, double gamma)
+  {
+    Image = image;
+    Pass = pass;
+    Fraction = fraction;
+    Sequence = sequence;
+    Gamma = gamma;
+  }
+
+  public FloatImage Image { get; }
+
+  public PreviewPass Pass { get; }
+
+  /// <summary>Fraction of tiles finished.</summary>
+  public double Fraction { get; }
+
+  /// <summary>0, 1, 2, … in the order the previews were made.</summary>
+  public int Sequence { get; }
+
+  public double Gamma { get; }
+
+  public Rgb8Image ToRgb8() => Rgb8Image.FromFloatImage(Image, Gamma > 0.001 ? Gamma : 1.0);
+}

@@ -1,0 +1,259 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Threading;
+using System.Threading.Tasks;
+using Rendering;
+using Rendering.Execution;
+using Rendering.Imaging;
+
+namespace GrCis.Interactive;
+
+/// <summary>
+/// One render of a <see cref="RenderJob"/> as the demo shows it: a coarse preview first (every
+/// <see cref="CoarseBlock"/>-th pixel filling its block), then the exact image tile by tile with a
+/// preview at least every <see cref="PreviewInterval"/>, then <see cref="Completed"/>. The final image
+/// is the one <see cref="TileRenderer"/> produces for the job; <see cref="Stop"/> keeps finished tiles.
+/// Events come from a worker thread unless <see cref="EventContext"/> is set (e.g. the UI's context).
+/// </summary>
+public sealed class RenderSession : IDisposable
+{
+  readonly CancellationTokenSource cancel = new();
+  readonly TaskCompletionSource<RenderResult> done = new(TaskCreationOptions.RunContinuationsAsynchronously);
+  readonly object publishLock = new();
+  readonly List<Tile> finished = new();
+  FloatImage? live;
+  int sequence;
+  int started;
+  bool tilesOver;
+
+  public RenderSession(RenderJob job) => Job = job ?? throw new ArgumentNullException(nameof(job));
+
+  public RenderJob Job { get; }
+
+  /// <summary>Longest time between two previews while tiles are being rendered.</summary>
+  public TimeSpan PreviewInterval { get; set; } = TimeSpan.FromMilliseconds(500);
+
+  /// <summary>Block size of the coarse first pass; 1 or less skips it.</summary>
+  public int CoarseBlock { get; set; } = 8;
+
+  /// <summary>Where events are raised; null = on the render's worker thread.</summary>
+  public SynchronizationContext? EventContext { get; set; }
+
+  public event EventHandler<RenderPreviewEventArgs>? PreviewReady;
+
+  public event EventHandler<RenderProgressEventArgs>? ProgressChanged;
+
+  public event EventHandler<RenderCompletedEventArgs>? Completed;
+
+  public bool IsRunning => Volatile.Read(ref started) == 1 && !done.Task.IsCompleted;
+
+  /// <summary>The result once the render ended.</summary>
+  public RenderResult? Result => done.Task.IsCompletedSuccessfully ? done.Task.Result : null;
+
+  /// <summary>Completes with the result (also when stopped or failed; see <see cref="RenderResult.Error"/>).</summary>
+  public Task<RenderResult> Task => done.Task;
+
+  /// <summary>Starts rendering on a background thread; returns <see cref="Task"/>.</summary>
+  public Task<RenderResult> Start()
+  {
+    if (Interlocked.Exchange(ref started, 1) != 0)
+      throw new InvalidOperationException("A render session runs once; create a new one to render again.");
+    var worker = new Thread(Run) { IsBackground = true, Name = "grcis-session" };
+    worker.Start();
+    return done.Task;
+  }
+
+  /// <summary>Asks the render to stop after the tiles in progress; finished tiles are kept.</summary>
+  public void Stop() => cancel.Cancel();
+
+  public void Dispose()
+  {
+    Stop();
+    if (Volatile.Read(ref started) == 1)
+      done.Task.Wait();
+    cancel.Dispose();
+  }
+
+  void Run()
+  {
+    RenderResult result;
+    try
+    {
+      result = Render();
+    }
+    catch (Exception ex)
+    {
+      // Not expected (Render catches scene failures); still, never leave the caller waiting.
+      done.TrySetException(ex);
+      return;
+    }
+    Publish(PreviewPass.Final, result.Image, force: true);
+    Raise(Completed, new RenderCompletedEventArgs(result));
+    done.TrySetResult(result);
+  }
+
+  RenderResult Render()
+  {
+    RenderJob job = Job;
+    RenderOptions options = job.Options;
+    CancellationToken token = cancel.Token;
+    var clock = Stopwatch.StartNew();
+    live = new FloatImage(job.Width, job.Height);
+    int tilesTotal = TileRenderer.MakeTiles(job.Width, job.Height, options.TileSize).Count;
+
+    ImageSynthesizer inner = job.Renderer;
+    IImageFunction? savedFunction = inner.ImageFunction;
+    FloatImage? image = null;
+    Exception? error = null;
+    CountingObserver? counter = null;
+    long globalRaysBefore = Interlocked.Read(ref Intersection.countRays);
+    Timer? timer = null;
+    try
+    {
+      if (CoarseBlock > 1)
+      {
+        CoarsePass(job, options, live, CoarseBlock, token);
+        if (!token.IsCancellationRequested)
+          Publish(PreviewPass.Coarse, live, force: false);
+      }
+
+      // Count rays by instrumenting plain ray tracing (identical images); other functions use the global counter.
+      IImageFunction function = job.ImageFunction;
+      if (InstrumentedRayTracing.CanInstrument(function))
+      {
+        counter = new CountingObserver();
+        function = new InstrumentedRayTracing((RayTracing)function, counter);
+      }
+      inner.ImageFunction = function;
+
+      TimeSpan interval = PreviewInterval > TimeSpan.Zero ? PreviewInterval : TimeSpan.FromMilliseconds(500);
+      timer = new Timer(_ => Publish(PreviewPass.Tiles, live, force: false), null, interval, interval);
+
+      var synth = new PreviewSynthesizer(inner, live);
+      image = TileRenderer.Render(job.Scene, function, synth, options, p =>
+      {
+        lock (finished)
+          finished.Add(p.LastTile);
+        Raise(ProgressChanged, new RenderProgressEventArgs(p, clock.Elapsed));
+      }, token);
+    }
+    catch (Exception ex) when (ex is RenderException or AggregateException)
+    {
+      error = ex is AggregateException agg ? agg.Flatten().InnerExceptions[0] : ex;
+    }
+    finally
+    {
+      inner.ImageFunction = savedFunction;
+      timer?.Dispose();
+      lock (publishLock)
+        tilesOver = true;
+    }
+    clock.Stop();
+
+    Tile[] tiles;
+    lock (finished)
+      tiles = finished.ToArray();
+    image ??= KeepTiles(live, tiles);
+
+    (long rays, long hits) = counter?.Totals() ?? (Interlocked.Read(ref Intersection.countRays) - globalRaysBefore, 0L);
+    var stats = new RenderStatistics
+    {
+      Elapsed = clock.Elapsed,
+      Width = job.Width,
+      Height = job.Height,
+      Threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tilesTotal)),
+      SamplesPerPixel = inner.SamplesPerPixel,
+      Rays = rays,
+      Intersections = hits,
+      TilesDone = tiles.Length,
+      TilesTotal = tilesTotal,
+    };
+    bool cancelled = token.IsCancellationRequested && tiles.Length < tilesTotal;
+    return new RenderResult(job, image, stats, tiles, cancelled, error);
+  }
+
+  /// <summary>Renders one pixel per block (its exact final value) and fills the block with it.</summary>
+  static void CoarsePass(RenderJob job, RenderOptions options, FloatImage target, int block, CancellationToken token)
+  {
+    int w = job.Width, h = job.Height;
+    int rows = (h + block - 1) / block;
+    ImageSynthesizer renderer = job.Renderer;
+    var po = new ParallelOptions { MaxDegreeOfParallelism = Math.Max(1, options.EffectiveThreads) };
+    Parallel.For(0, rows, po,
+      () =>
+      {
+        MT.InitThreadData();
+        MT.SetRendering(SceneCloner.CloneForWorker(job.Scene), job.ImageFunction, renderer);
+        MT.seed = options.Seed;
+        MT.frame = options.Frame;
+        return new double[target.Bands];
+      },
+      (row, _, color) =>
+      {
+        if (token.IsCancellationRequested)
+          return color;
+        int y0 = row * block, y1 = Math.Min(y0 + block, h);
+        for (int x0 = 0; x0 < w; x0 += block)
+        {
+          renderer.RenderPixelLinear(x0, y0, color);
+          int x1 = Math.Min(x0 + block, w);
+          for (int y = y0; y < y1; y++)
+            for (int x = x0; x < x1; x++)
+              target.SetPixel(x, y, color);
+        }
+        return color;
+      },
+      _ => MT.SetRendering(null, null, null));
+  }
+
+  /// <summary>An image with only the given tiles copied from <paramref name="source"/> (used after a failure).</summary>
+  static FloatImage KeepTiles(FloatImage source, Tile[] tiles)
+  {
+    var image = new FloatImage(source.Width, source.Height, source.Bands);
+    foreach (Tile t in tiles)
+      for (int y = t.Y1; y < t.Y2; y++)
+      {
+        int from = source.PixelIndex(t.X1, y), count = (t.X2 - t.X1) * source.Bands;
+        Array.Copy(source.Data, from, image.Data, from, count);
+      }
+    return image;
+  }
+
+  void Publish(PreviewPass pass, FloatImage? source, bool force)
+  {
+    if (source == null)
+      return;
+    lock (publishLock)
+    {
+      // A late timer tick must not follow the final image.
+      if (tilesOver && !force)
+        return;
+      var snapshot = new FloatImage(source.Width, source.Height, source.Bands, (float[])source.Data.Clone());
+      double fraction;
+      lock (finished)
+        fraction = pass == PreviewPass.Final ? 1.0 : (double)finished.Count / Math.Max(1, TileCount());
+      Raise(PreviewReady, new RenderPreviewEventArgs(snapshot, pass, fraction, sequence++, Job.Renderer.Gamma));
+    }
+  }
+
+  int tileCount = -1;
+
+  int TileCount()
+  {
+    if (tileCount < 0)
+      tileCount = TileRenderer.MakeTiles(Job.Width, Job.Height, Job.Options.TileSize).Count;
+    return tileCount;
+  }
+
+  void Raise<T>(EventHandler<T>? handler, T args) where T : EventArgs
+  {
+    if (handler == null)
+      return;
+    SynchronizationContext? ctx = EventContext;
+    if (ctx == null)
+      handler(this, args);
+    else
+      ctx.Post(_ => handler(this, args), null);
+  }
+}

@@ -1,0 +1,32 @@
+using System;
+using System.Globalization;
+
+namespace GrCis.Interactive;
+
+/// <summary>The statistics line of a render.</summary>
+public sealed record RenderStatistics
+{
+  public TimeSpan Elapsed { get; init; }
+  public int Width { get; init; }
+  public int Height { get; init; }
+  public int Threads { get; init; }
+  public int SamplesPerPixel { get; init; }
+
+  /// <summary>Rays traced (primary, shadow, secondary). Exact when the image function is plain ray tracing; otherwise the library's global counter, approximate under threads.</summary>
+  public long Rays { get; init; }
+
+  /// <summary>Rays that hit something.</summary>
+  public long Intersections { get; init; }
+
+  public int TilesDone { get; init; }
+  public int TilesTotal { get; init; }
+
+  public double RaysPerSecond => Elapsed.TotalSeconds > 0 ? Rays / Elapsed.TotalSeconds : 0.0;
+
+  public override string ToString()
+  {
+    string line = string.Create(CultureInfo.InvariantCulture,
+      $"{Width}x{Height}, {SamplesPerPixel} spp, {Threads} thread{(Threads == 1 ? "" : "s")}, {Elapsed.TotalSeconds:0.00} s, {Rays / 1e6:0.###} M rays, {Intersections / 1e6:0.###} M intersections, {RaysPerSecond / 1e6:0.##} M rays/s");
+    return TilesDone < TilesTotal ? line + $", stopped at {TilesDone}/{TilesTotal} tiles" : line;
+  }
+}

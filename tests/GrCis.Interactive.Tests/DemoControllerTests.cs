@@ -1,0 +1,77 @@
+using System;
+using System.IO;
+using System.Threading.Tasks;
+using Rendering.Imaging;
+
+namespace GrCis.Interactive.Tests;
+
+public class DemoControllerTests
+{
+  [Fact]
+  public async Task Editing_the_watched_script_re_renders_with_the_new_content()
+  {
+    using var tmp = new TempDir();
+    string path = tmp.File("Watched.cs");
+    File.WriteAllText(path, TestScripts.Background(0.25));
+    using var evaluator = new ScriptHostEvaluator();
+    var catalog = new SceneCatalog(evaluator);
+    using var demo = new DemoController(catalog) { WatchDebounce = TimeSpan.FromMilliseconds(100) };
+    demo.Selected = catalog.AddScriptFile(path);
+
+    RenderResult first = (await demo.RenderAsync())!;
+    Assert.Equal(0.25, first.Image.GetPixel(5, 5)[0]);
+
+    var rerendered = new TaskCompletionSource<RenderResult>(TaskCreationOptions.RunContinuationsAsynchronously);
+    demo.RenderCompleted += (_, e) => rerendered.TrySetResult(e.Result);
+    demo.WatchScript = true;
+    File.WriteAllText(path, TestScripts.Background(0.75));
+
+    RenderResult second = await rerendered.Task.WaitAsync(TimeSpan.FromSeconds(20));
+    Assert.True(second.Succeeded);
+    Assert.Equal(0.75, second.Image.GetPixel(5, 5)[0]);
+    Assert.Equal(2, demo.History.Items.Count);
+  }
+
+  [Fact]
+  public async Task Render_probe_views_history_and_save()
+  {
+    using var tmp = new TempDir();
+    var catalog = new SceneCatalog();
+    catalog.AddBuiltIn("Mirror ball", _ => TestScenes.SphereOnPlane());
+    using var demo = new DemoController(catalog) { Settings = new RenderSettings { Width = 33, Height = 33 } };
+    demo.Selected = catalog.Entries[0];
+    int previews = 0;
+    demo.PreviewReady += (_, _) => previews++;
+
+    RenderResult r = (await demo.RenderAsync())!;
+    Assert.True(r.Succeeded);
+    Assert.True(previews >= 2);
+    Assert.Same(r, demo.LastResult);
+
+    ProbeResult probe = demo.Probe(16, 16);
+    Assert.Equal(r.Image.GetPixel(16, 16), probe.PixelColor);
+    Assert.Equal(RayKind.Primary, probe.Rays!.Kind);
+    Assert.Equal(4.0, demo.ComputeExtraViews().DepthAt(16, 16), 9);
+
+    Assert.True(demo.SaveImage(tmp.File("out.png")));
+    Assert.True(PngFile.Load(tmp.File("out.png")).ContentEquals(r.ToRgb8()));
+    string? error = null;
+    demo.Error += (_, m) => error = m;
+    Assert.False(demo.SaveImage(tmp.File("no/such/dir/out.png")));
+    Assert.NotNull(error);
+  }
+
+  [Fact]
+  public async Task A_broken_script_is_reported_not_thrown()
+  {
+    using var tmp = new TempDir();
+    File.WriteAllText(tmp.File("Bad.cs"), "nonsense here");
+    using var evaluator = new ScriptHostEvaluator();
+    var catalog = new SceneCatalog(evaluator);
+    using var demo = new DemoController(catalog) { Selected = catalog.AddScriptFile(tmp.File("Bad.cs")) };
+    string? error = null;
+    demo.Error += (_, m) => error = m;
+    Assert.Null(await demo.RenderAsync());
+    Assert.Contains("Bad.cs", error);
+  }
+}

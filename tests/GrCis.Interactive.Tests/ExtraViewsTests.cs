@@ -1,0 +1,91 @@
+using System;
+using System.IO;
+using System.Linq;
+using OpenTK.Mathematics;
+using Rendering.Imaging;
+
+namespace GrCis.Interactive.Tests;
+
+public sealed class ExtraViewsTests : IDisposable
+{
+  readonly string dir = Directory.CreateTempSubdirectory("grcis-views-").FullName;
+
+  public void Dispose() => Directory.Delete(dir, recursive: true);
+
+  static readonly RenderSettings Odd = new() { Width = 33, Height = 33, Threads = 2 };
+
+  [Fact]
+  public void Plane_at_z5_seen_from_the_origin_has_depth_5_at_the_centre()
+  {
+    RenderJob job = RenderJob.Create(TestScenes.PlaneAt(5), Odd);
+    ExtraViews views = ExtraViews.Compute(job);
+
+    Assert.Equal(5.0, views.DepthAt(16, 16), 12);
+    Assert.Equal(5.0, views.ValueAt(MapKind.Depth, 16, 16), 12);
+    Assert.True((views.NormalAt(16, 16) - new Vector3d(0, 0, -1)).Length < 1e-12);
+    Assert.Equal(0.0, views.ValueAt(MapKind.NormalRelative, 16, 16), 6);
+    // Off centre the distance grows as 5 / cos of the ray angle.
+    RayNode corner = PixelProbe.Probe(job, 0, 0).Rays!;
+    Assert.Equal(5.0 / corner.Direction.Normalized().Z, views.DepthAt(0, 0), 9);
+    Assert.Contains("depth 5", views.Describe(MapKind.Depth, 16, 16));
+  }
+
+  [Fact]
+  public void Ray_counts_agree_with_the_probe_and_with_the_samples()
+  {
+    RenderJob job = RenderJob.Create(TestScenes.SphereOnPlane(), Odd);
+    ExtraViews views = ExtraViews.Compute(job);
+    foreach ((int x, int y) in new[] { (16, 16), (3, 30), (0, 0), (20, 25) })
+    {
+      Assert.Equal(1.0, views.ValueAt(MapKind.PrimaryRays, x, y));
+      int probed = PixelProbe.Probe(job, x, y).AllRays.Count();
+      Assert.Equal(probed, views.ValueAt(MapKind.AllRays, x, y));
+    }
+    Assert.True(views.AllRaysKnown);
+
+    ExtraViews ss = ExtraViews.Compute(RenderJob.Create(TestScenes.SphereOnPlane(), Odd with { SamplesPerPixel = 9 }));
+    Assert.Equal(9.0, ss.ValueAt(MapKind.PrimaryRays, 7, 7));
+    Assert.True(ss.ValueAt(MapKind.AllRays, 16, 16) > 9.0);
+  }
+
+  [Fact]
+  public void Background_pixels_have_infinite_depth_and_no_normal()
+  {
+    ExtraViews views = ExtraViews.Compute(RenderJob.Create(TestScenes.SphereOnPlane(), Odd));
+    Assert.True(double.IsPositiveInfinity(views.DepthAt(16, 0)));
+    Assert.Equal(Vector3d.Zero, views.NormalAt(16, 0));
+    Assert.Null(views.HitPointAt(16, 0));
+  }
+
+  [Fact]
+  public void Maps_export_as_png_csv_and_ply()
+  {
+    RenderJob job = RenderJob.Create(TestScenes.PlaneAt(5), Odd);
+    ExtraViews views = ExtraViews.Compute(job);
+
+    foreach (MapKind kind in Enum.GetValues<MapKind>())
+    {
+      string png = Path.Combine(dir, $"{kind}.png");
+      views.SavePng(kind, png);
+      Rgb8Image img = PngFile.Load(png);
+      Assert.Equal((33, 33), (img.Width, img.Height));
+      string csv = Path.Combine(dir, $"{kind}.csv");
+      views.SaveCsv(kind, csv);
+      Assert.Equal(1 + 33 * 33, File.ReadAllLines(csv).Length);
+    }
+    Assert.Contains("16,16,5", File.ReadAllLines(Path.Combine(dir, "Depth.csv")));
+    Assert.Contains("16,16,0,0,-1", File.ReadAllLines(Path.Combine(dir, "NormalAbsolute.csv")));
+
+    string ply = Path.Combine(dir, "cloud.ply");
+    var image = Rendering.Execution.TileRenderer.Render(job.Scene, job.ImageFunction, job.Renderer, job.Options);
+    views.SavePointCloud(ply, image);
+    string[] lines = File.ReadAllLines(ply);
+    Assert.Equal("ply", lines[0]);
+    Assert.Contains("element vertex 1089", lines);
+    int body = Array.IndexOf(lines, "end_header") + 1;
+    Assert.Equal(1089, lines.Length - body);
+    Assert.All(lines.Skip(body), l => Assert.Equal("5", l.Split(' ')[2]));
+    Assert.Equal(9, lines[body].Split(' ').Length);
+    Assert.Empty(Directory.GetFiles(dir, "*.tmp-*"));
+  }
+}

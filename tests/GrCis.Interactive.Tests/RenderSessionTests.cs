@@ -1,0 +1,159 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using System.Threading;
+using System.Threading.Tasks;
+using Rendering;
+using Rendering.Execution;
+using Rendering.Imaging;
+
+namespace GrCis.Interactive.Tests;
+
+public class RenderSessionTests
+{
+  static readonly RenderSettings Small = new() { Width = 96, Height = 64, SamplesPerPixel = 4, TileSize = 16, Threads = 3, Seed = 7 };
+
+  /// <summary>What `grcis render` computes: TileRenderer over a fresh job with the same settings.</summary>
+  static FloatImage Reference(RenderSettings s, bool glass = false)
+  {
+    RenderJob job = RenderJob.Create(TestScenes.SphereOnPlane(glass), s);
+    return TileRenderer.Render(job.Scene, job.ImageFunction, job.Renderer, s.ToRenderOptions());
+  }
+
+  [Fact]
+  public async Task Render_delivers_coarse_and_final_previews_and_the_tile_renderer_image()
+  {
+    using var session = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(), Small));
+    var previews = new List<RenderPreviewEventArgs>();
+    RenderResult? completed = null;
+    session.PreviewReady += (_, e) => { lock (previews) previews.Add(e); };
+    session.Completed += (_, e) => completed = e.Result;
+
+    RenderResult result = await session.Start();
+
+    Assert.True(result.Succeeded);
+    Assert.Same(result, completed);
+    Assert.True(previews.Count >= 2, $"only {previews.Count} previews");
+    Assert.Equal(PreviewPass.Coarse, previews[0].Pass);
+    Assert.Equal(PreviewPass.Final, previews[^1].Pass);
+    Assert.Equal(Enumerable.Range(0, previews.Count), previews.Select(p => p.Sequence));
+    Assert.Equal(Reference(Small).Data, result.Image.Data);
+    Assert.Equal(result.Image.Data, previews[^1].Image.Data);
+  }
+
+  [Fact]
+  public async Task Coarse_preview_fills_each_block_with_its_corner_pixel_final_value()
+  {
+    using var session = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(), Small)) { CoarseBlock = 8 };
+    FloatImage? coarse = null;
+    session.PreviewReady += (_, e) => { if (e.Pass == PreviewPass.Coarse) coarse = e.Image; };
+    FloatImage final = (await session.Start()).Image;
+
+    Assert.NotNull(coarse);
+    for (int y = 0; y < Small.Height; y++)
+      for (int x = 0; x < Small.Width; x++)
+        Assert.Equal(final.GetPixel(x / 8 * 8, y / 8 * 8), coarse!.GetPixel(x, y));
+  }
+
+  [Fact]
+  public async Task Same_image_for_one_thread_and_many_and_with_glass()
+  {
+    RenderSettings one = Small with { Multithreading = false };
+    using var a = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(glass: true), one));
+    using var b = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(glass: true), Small with { Threads = 4 }));
+    float[] ia = (await a.Start()).Image.Data, ib = (await b.Start()).Image.Data;
+    Assert.Equal(ia, ib);
+    Assert.Equal(Reference(Small, glass: true).Data, ia);
+  }
+
+  [Fact]
+  public async Task Stop_after_five_tiles_keeps_exactly_those_tiles()
+  {
+    RenderSettings s = Small with { Multithreading = false };
+    using var session = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(), s));
+    // One thread runs tiles in order and checks for a stop between tiles: exactly five finish.
+    session.ProgressChanged += (_, e) => { if (e.Progress.TilesDone == 5) session.Stop(); };
+
+    RenderResult result = await session.Start();
+
+    Assert.True(result.Cancelled);
+    Assert.Null(result.Error);
+    Assert.Equal(5, result.FinishedTiles.Count);
+    Assert.Equal(5, result.Statistics.TilesDone);
+    Assert.Equal(24, result.Statistics.TilesTotal);
+
+    FloatImage full = Reference(s);
+    var done = new HashSet<(int, int)>();
+    foreach (Tile t in result.FinishedTiles)
+      for (int y = t.Y1; y < t.Y2; y++)
+        for (int x = t.X1; x < t.X2; x++)
+          done.Add((x, y));
+    Assert.Equal(5 * 16 * 16, done.Count);
+    for (int y = 0; y < s.Height; y++)
+      for (int x = 0; x < s.Width; x++)
+        Assert.Equal(done.Contains((x, y)) ? full.GetPixel(x, y) : new double[3], result.Image.GetPixel(x, y));
+  }
+
+  [Fact]
+  public async Task Statistics_count_rays_and_describe_the_render()
+  {
+    using var session = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(), Small));
+    RenderStatistics st = (await session.Start()).Statistics;
+    Assert.Equal(96, st.Width);
+    Assert.Equal(64, st.Height);
+    Assert.Equal(3, st.Threads);
+    Assert.Equal(4, st.SamplesPerPixel);
+    // At least one primary ray per sample; the mirror sphere and the lights add more.
+    Assert.True(st.Rays > 96 * 64 * 4, $"rays {st.Rays}");
+    Assert.InRange(st.Intersections, 1, st.Rays);
+    Assert.Contains("96x64", st.ToString());
+  }
+
+  [Fact]
+  public async Task Long_render_previews_at_least_once_a_second()
+  {
+    var scene = TestScenes.PlaneAt(5);
+    var slow = new SlowFunction(TimeSpan.FromMilliseconds(1), new RayTracing(scene));
+    RenderSettings s = new() { Width = 40, Height = 30, TileSize = 40, Multithreading = false };
+    using var session = new RenderSession(RenderJob.Create(scene, s, slow)) { PreviewInterval = TimeSpan.FromMilliseconds(250) };
+    var times = new List<(PreviewPass Pass, TimeSpan At)>();
+    var clock = System.Diagnostics.Stopwatch.StartNew();
+    session.PreviewReady += (_, e) => { lock (times) times.Add((e.Pass, clock.Elapsed)); };
+
+    RenderResult result = await session.Start();
+
+    Assert.True(result.Succeeded);
+    Assert.True(result.Statistics.Elapsed > TimeSpan.FromSeconds(1.1), "the render should be long for this test");
+    // A single 40×30 tile: every in-between preview came from the timer, not from tile completion.
+    Assert.Contains(times, t => t.Pass == PreviewPass.Tiles);
+    for (int i = 1; i < times.Count; i++)
+      Assert.True(times[i].At - times[i - 1].At < TimeSpan.FromSeconds(1), $"gap before preview {i}");
+  }
+
+  [Fact]
+  public async Task A_failing_scene_reports_the_error_without_throwing()
+  {
+    var scene = TestScenes.PlaneAt(5);
+    using var session = new RenderSession(RenderJob.Create(scene, new RenderSettings { Width = 16, Height = 16 }, new ThrowingFunction())) { CoarseBlock = 1 };
+    RenderResult result = await session.Start();
+    Assert.NotNull(result.Error);
+    Assert.False(result.Succeeded);
+  }
+
+  sealed class SlowFunction : IImageFunction
+  {
+    readonly TimeSpan delay;
+    readonly IImageFunction inner;
+    public SlowFunction(TimeSpan delay, IImageFunction inner) { this.delay = delay; this.inner = inner; }
+    public double Width { get => inner.Width; set => inner.Width = value; }
+    public double Height { get => inner.Height; set => inner.Height = value; }
+    public long GetSample(double x, double y, double[] color) { Thread.Sleep(delay); return inner.GetSample(x, y, color); }
+  }
+
+  sealed class ThrowingFunction : IImageFunction
+  {
+    public double Width { get; set; }
+    public double Height { get; set; }
+    public long GetSample(double x, double y, double[] color) => throw new InvalidOperationException("scene bug");
+  }
+}
