@@ -36,7 +36,8 @@ public class DialectTests
     Assert.Equal(new[] { 0.2, 0.5, 0.8 }, color, new Tolerance(1e-12));
 
     // OpenTK 3 style transform: S(0.5) * RX(pi/2) * T(2i, 0, 0).
-    Matrix4d expected = Matrix4d.Scale(0.5) * Matrix4d.CreateRotationX(Math.PI / 2) * Matrix4d.CreateTranslation(4.0, 0.0, 0.0);
+    // MathHelper.PiOver2 is single precision, as in OpenTK (GrCis scenes depend on it).
+    Matrix4d expected = Matrix4d.Scale(0.5) * Matrix4d.CreateRotationX(MathHelper.PiOver2) * Matrix4d.CreateTranslation(4.0, 0.0, 0.0);
     Assert.Equal(expected, root.Children.Last().ToParent);
 
     // The texture subclass declared in the script.
