@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using MathSupport;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -45,6 +46,9 @@ public class RayTracing : RayCasting
   protected virtual bool Occluded(Vector3d p0, Vector3d dir)
   {
     Intersection.countRays++;
+    PreparedScene? ps = Prepared;
+    if (ps != null)
+      return ps.Occluded(p0, dir);
     LinkedList<Intersection>? list = Scene.Intersectable?.Intersect(p0, dir);
     Intersection? si = Intersection.FirstRealIntersection(list, ref dir);
     return si != null && !si.Far(1.0, ref dir);
