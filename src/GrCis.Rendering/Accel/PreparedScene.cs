@@ -41,7 +41,7 @@ public sealed class PreparedScene
   // Union-merge semantics over all members; false: one member whose raw list the scene returns.
   readonly bool union;
 
-  static long fallbacks;
+  long fallbacks;
 
   /// <summary>The intersectable this snapshot was prepared from.</summary>
   public IIntersectable? Source { get; }
@@ -58,8 +58,8 @@ public sealed class PreparedScene
   /// <summary>Members answered through the LinkedList API.</summary>
   public int ListMemberCount { get; }
 
-  /// <summary>Queries answered by the faithful path because the fast rule did not apply (all scenes, all threads).</summary>
-  public static long FallbackCount => Interlocked.Read(ref fallbacks);
+  /// <summary>Queries of this snapshot answered by the faithful path because the fast rule did not apply.</summary>
+  public long FallbackCount => Interlocked.Read(ref fallbacks);
 
   PreparedScene(IIntersectable? source, bool union, PreparedMember[] members, Matrix4d[] chain)
   {

@@ -44,6 +44,9 @@ public class RayCasting : IImageFunction
     return ps;
   }
 
+  /// <summary>The snapshot made by the last <see cref="Prepare"/> or first use (statistics, tests).</summary>
+  public PreparedScene? LastPrepared => prepared;
+
   /// <summary>The prepared snapshot of the current scene (built on first use), or null on the faithful path.</summary>
   protected PreparedScene? Prepared
   {
