@@ -139,9 +139,7 @@ public class RayCasting : IImageFunction
     }
 
     Vector3d viewer = -p1.Normalized();
-    IMaterial material = (IMaterial)i.Material!.Clone();
-    material.Color = surface;
-    i.Material = material;
+    i.Material = ShadingScratch.Material(i.Material!, surface, 0);
 
     foreach (ILightSource source in sc.Sources)
     {
