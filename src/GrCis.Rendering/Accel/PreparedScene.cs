@@ -331,11 +331,24 @@ public sealed class PreparedScene
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   void ToLocal(in PreparedMember m, ref Vector3d p0, ref Vector3d p1)
   {
+    // Same arithmetic, in the same order, as Vector3d.TransformPosition/TransformVector (bit-identical),
+    // reading the matrix by reference instead of copying 128 bytes per step.
     int end = m.ChainStart + m.ChainCount;
     for (int k = m.ChainStart; k < end; k++)
     {
-      p0 = Vector3d.TransformPosition(p0, chain[k]);
-      p1 = Vector3d.TransformVector(p1, chain[k]);
+      ref Matrix4d t = ref chain[k];
+      double x = p0.X, y = p0.Y, z = p0.Z;
+      p0 = new Vector3d(
+        x * t.Row0.X + y * t.Row1.X + z * t.Row2.X + t.Row3.X,
+        x * t.Row0.Y + y * t.Row1.Y + z * t.Row2.Y + t.Row3.Y,
+        x * t.Row0.Z + y * t.Row1.Z + z * t.Row2.Z + t.Row3.Z);
+      x = p1.X;
+      y = p1.Y;
+      z = p1.Z;
+      p1 = new Vector3d(
+        x * t.Row0.X + y * t.Row1.X + z * t.Row2.X,
+        x * t.Row0.Y + y * t.Row1.Y + z * t.Row2.Y,
+        x * t.Row0.Z + y * t.Row1.Z + z * t.Row2.Z);
     }
   }
 
