@@ -44,8 +44,20 @@ public static class TileRenderer
     int width = renderer.Width, height = renderer.Height;
     var image = new FloatImage(width, height);
     renderer.ImageFunction = imageFunction;
-    imageFunction.Width = width;
-    imageFunction.Height = height;
+
+    // Size the function on this thread; one built without a scene reaches it through MT.scene.
+    // Workers clone the scene afterwards, so their clones inherit the camera size.
+    IRayScene? callerScene = MT.scene;
+    MT.scene = scene;
+    try
+    {
+      imageFunction.Width = width;
+      imageFunction.Height = height;
+    }
+    finally
+    {
+      MT.scene = callerScene;
+    }
 
     // Prepare the fast path once per frame, before the workers share it read-only.
     if (imageFunction is RayCasting rc)
@@ -60,11 +72,13 @@ public static class TileRenderer
     void Work()
     {
       MT.InitThreadData();
-      MT.SetRendering(scene, imageFunction, renderer);
       MT.seed = options.Seed;
       MT.frame = options.Frame;
       try
       {
+        // Each worker owns a clone of the time-dependent parts ("clone on write"), so a component
+        // may set the time of its worker's scene (motion blur) without touching other workers.
+        MT.SetRendering(SceneCloner.CloneForWorker(scene), imageFunction, renderer);
         int k;
         while (!cancel.IsCancellationRequested && Volatile.Read(ref failure) == null &&
                (k = Interlocked.Increment(ref next)) < tiles.Count)

@@ -2,58 +2,104 @@ using System;
 
 namespace Rendering.Imaging;
 
-/// <summary>A linear-light RGB framebuffer of floats, row-major, top row first.</summary>
+/// <summary>
+/// Linear floating-point framebuffer: <see cref="Bands"/> interleaved channels per pixel,
+/// rows stored top row first (the order PNG uses; PFM output flips on write).
+/// </summary>
 public sealed class FloatImage
 {
+  /// <summary>Upper bound on Width * Height * Bands, so the buffer always fits one array.</summary>
+  public const long MaxSamples = 1L << 30;
+
   public int Width { get; }
-
   public int Height { get; }
-
-  /// <summary>Colour bands per pixel (3: RGB).</summary>
   public int Bands { get; }
 
-  /// <summary>Pixel data: band b of pixel (x, y) is at <c>(y * Width + x) * Bands + b</c>.</summary>
+  /// <summary>Row-major samples, top row first; sample (x, y, band) is at (y * Width + x) * Bands + band.</summary>
   public float[] Data { get; }
 
   public FloatImage(int width, int height, int bands = 3)
   {
-    if (width <= 0 || height <= 0)
-      throw new ArgumentOutOfRangeException(nameof(width), $"Image size must be positive, got {width}×{height}.");
-    if (bands <= 0)
-      throw new ArgumentOutOfRangeException(nameof(bands), $"Band count must be positive, got {bands}.");
-    if ((long)width * height * bands > Array.MaxLength)
-      throw new ArgumentOutOfRangeException(nameof(width), $"Image {width}×{height} is too large.");
+    Validate(width, height, bands);
     Width = width;
     Height = height;
     Bands = bands;
-    Data = new float[width * height * bands];
+    Data = new float[(long)width * height * bands];
   }
 
-  /// <summary>Stores a pixel; missing bands repeat the last given one (grey from one value).</summary>
-  public void SetPixel(int x, int y, ReadOnlySpan<double> color)
+  /// <summary>Wraps <paramref name="data"/> without copying.</summary>
+  public FloatImage(int width, int height, int bands, float[] data)
   {
-    int o = Offset(x, y);
-    for (int b = 0; b < Bands; b++)
-      Data[o + b] = (float)color[Math.Min(b, color.Length - 1)];
-  }
-
-  public void GetPixel(int x, int y, Span<double> color)
-  {
-    int o = Offset(x, y);
-    for (int b = 0; b < Bands && b < color.Length; b++)
-      color[b] = Data[o + b];
+    Validate(width, height, bands);
+    ArgumentNullException.ThrowIfNull(data);
+    long expected = (long)width * height * bands;
+    if (data.Length != expected)
+      throw new ArgumentException($"Pixel buffer has {data.Length} samples but {width}x{height}x{bands} needs {expected}.", nameof(data));
+    Width = width;
+    Height = height;
+    Bands = bands;
+    Data = data;
   }
 
   public float this[int x, int y, int band]
   {
-    get => Data[Offset(x, y) + band];
-    set => Data[Offset(x, y) + band] = value;
+    get => Data[SampleIndex(x, y, band)];
+    set => Data[SampleIndex(x, y, band)] = value;
   }
 
-  int Offset(int x, int y)
+  /// <summary>Index of band 0 of pixel (x, y) in <see cref="Data"/>.</summary>
+  public int PixelIndex(int x, int y)
   {
-    if ((uint)x >= (uint)Width || (uint)y >= (uint)Height)
-      throw new ArgumentOutOfRangeException(nameof(x), $"Pixel ({x}, {y}) is outside the {Width}×{Height} image.");
+    if ((uint)x >= (uint)Width)
+      throw new ArgumentOutOfRangeException(nameof(x), x, $"x must be in 0..{Width - 1}.");
+    if ((uint)y >= (uint)Height)
+      throw new ArgumentOutOfRangeException(nameof(y), y, $"y must be in 0..{Height - 1}.");
     return (y * Width + x) * Bands;
+  }
+
+  /// <summary>Copies the first <see cref="Bands"/> channels of pixel (x, y) into <paramref name="color"/>.</summary>
+  public void GetPixel(int x, int y, Span<double> color)
+  {
+    int i = PixelIndex(x, y);
+    if (color.Length < Bands)
+      throw new ArgumentException($"Color has {color.Length} channels, image has {Bands}.", nameof(color));
+    for (int b = 0; b < Bands; b++)
+      color[b] = Data[i + b];
+  }
+
+  public double[] GetPixel(int x, int y)
+  {
+    double[] color = new double[Bands];
+    GetPixel(x, y, color);
+    return color;
+  }
+
+  /// <summary>Stores the first <see cref="Bands"/> channels of <paramref name="color"/> (extra channels are ignored).</summary>
+  public void SetPixel(int x, int y, ReadOnlySpan<double> color)
+  {
+    int i = PixelIndex(x, y);
+    if (color.Length < Bands)
+      throw new ArgumentException($"Color has {color.Length} channels, image has {Bands}.", nameof(color));
+    for (int b = 0; b < Bands; b++)
+      Data[i + b] = (float)color[b];
+  }
+
+  private int SampleIndex(int x, int y, int band)
+  {
+    if ((uint)band >= (uint)Bands)
+      throw new ArgumentOutOfRangeException(nameof(band), band, $"band must be in 0..{Bands - 1}.");
+    return PixelIndex(x, y) + band;
+  }
+
+  private static void Validate(int width, int height, int bands)
+  {
+    if (width <= 0)
+      throw new ArgumentOutOfRangeException(nameof(width), width, "Image width must be positive.");
+    if (height <= 0)
+      throw new ArgumentOutOfRangeException(nameof(height), height, "Image height must be positive.");
+    if (bands <= 0)
+      throw new ArgumentOutOfRangeException(nameof(bands), bands, "Number of bands must be positive.");
+    if ((long)width * height * bands > MaxSamples)
+      throw new ArgumentException($"Image {width}x{height}x{bands} exceeds the limit of {MaxSamples} samples.");
   }
 }

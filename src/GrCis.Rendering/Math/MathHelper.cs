@@ -5,16 +5,19 @@ namespace OpenTK.Mathematics;
 /// <summary>OpenTK's scalar helpers and constants.</summary>
 public static class MathHelper
 {
-  public const double Pi = Math.PI;
-  public const double PiOver2 = Math.PI / 2.0;
-  public const double PiOver3 = Math.PI / 3.0;
-  public const double PiOver4 = Math.PI / 4.0;
-  public const double PiOver6 = Math.PI / 6.0;
-  public const double TwoPi = 2.0 * Math.PI;
-  public const double ThreePiOver2 = 3.0 * Math.PI / 2.0;
-  public const double E = Math.E;
-  public const double Log10E = 0.4342944819032518;
-  public const double Log2E = 1.4426950408889634;
+  // OpenTK declares these constants in single precision, and GrCis scenes use them in double
+  // expressions (e.g. RotateX(-MathHelper.PiOver2) gives -1.5707963705…). Keeping the float values
+  // reproduces GrCis's geometry exactly (a floor tilted by 4e-8 rad decides checker cells at the horizon).
+  public const float Pi = MathF.PI;
+  public const float PiOver2 = Pi / 2;
+  public const float PiOver3 = Pi / 3;
+  public const float PiOver4 = Pi / 4;
+  public const float PiOver6 = Pi / 6;
+  public const float TwoPi = 2 * Pi;
+  public const float ThreePiOver2 = 3 * Pi / 2;
+  public const float E = MathF.E;
+  public const float Log10E = 0.4342945f;
+  public const float Log2E = 1.442695f;
 
   public static double DegreesToRadians(double degrees) => degrees * (Math.PI / 180.0);
   public static double RadiansToDegrees(double radians) => radians * (180.0 / Math.PI);

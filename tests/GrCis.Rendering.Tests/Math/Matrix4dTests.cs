@@ -13,16 +13,16 @@ public class Matrix4dTests
   public void Row_vector_convention_applies_left_matrix_first()
   {
     // Rotate (1,0,0) by 90° about Z, then translate by (10,0,0).
-    Matrix4d m = Matrix4d.RotateZ(MathHelper.PiOver2) * Matrix4d.CreateTranslation(10, 0, 0);
+    Matrix4d m = Matrix4d.RotateZ(System.Math.PI / 2) * Matrix4d.CreateTranslation(10, 0, 0);
     Near(new Vector3d(10, 1, 0), Vector3d.TransformPosition(new Vector3d(1, 0, 0), m));
   }
 
   [Fact]
   public void Rotations_are_right_handed_counter_clockwise()
   {
-    Near(new Vector3d(0, 0, 1), Vector3d.TransformVector(Vector3d.UnitY, Matrix4d.CreateRotationX(MathHelper.PiOver2)));
-    Near(new Vector3d(1, 0, 0), Vector3d.TransformVector(Vector3d.UnitZ, Matrix4d.CreateRotationY(MathHelper.PiOver2)));
-    Near(new Vector3d(0, 1, 0), Vector3d.TransformVector(Vector3d.UnitX, Matrix4d.CreateRotationZ(MathHelper.PiOver2)));
+    Near(new Vector3d(0, 0, 1), Vector3d.TransformVector(Vector3d.UnitY, Matrix4d.CreateRotationX(System.Math.PI / 2)));
+    Near(new Vector3d(1, 0, 0), Vector3d.TransformVector(Vector3d.UnitZ, Matrix4d.CreateRotationY(System.Math.PI / 2)));
+    Near(new Vector3d(0, 1, 0), Vector3d.TransformVector(Vector3d.UnitX, Matrix4d.CreateRotationZ(System.Math.PI / 2)));
   }
 
   [Fact]

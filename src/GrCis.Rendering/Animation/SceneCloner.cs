@@ -1,0 +1,26 @@
+using System;
+
+namespace Rendering;
+
+/// <summary>Per-worker copies of a scene ("clone on write").</summary>
+public static class SceneCloner
+{
+  /// <summary>
+  /// The scene a render worker should use: a clone when the scene has parts that change with
+  /// time (so the worker can set its own time without disturbing others), otherwise the same
+  /// instance, shared read-only.
+  /// </summary>
+  public static IRayScene CloneForWorker(IRayScene scene)
+  {
+    ArgumentNullException.ThrowIfNull(scene);
+    return IsTimeDependent(scene) ? (IRayScene)((ITimeDependent)scene).Clone() : scene;
+  }
+
+  /// <summary>Whether setting the scene's time can change anything a worker sees.</summary>
+  public static bool IsTimeDependent(IRayScene scene) => scene switch
+  {
+    AnimatedRayScene animated => animated.HasTimeDependentParts,
+    ITimeDependent => true,
+    _ => false,
+  };
+}

@@ -1,0 +1,124 @@
+using System;
+
+namespace Rendering.Imaging;
+
+/// <summary>
+/// 8-bit sRGB-encoded image: 3 interleaved bytes (R, G, B) per pixel, rows top row first.
+/// This is what PNG files are decoded to and compared as.
+/// </summary>
+public sealed class Rgb8Image
+{
+  /// <summary>Upper bound on Width * Height, so the RGB buffer always fits one array.</summary>
+  public const long MaxPixels = 1L << 28;
+
+  public int Width { get; }
+  public int Height { get; }
+
+  /// <summary>Row-major RGB bytes; pixel (x, y) starts at (y * Width + x) * 3.</summary>
+  public byte[] Data { get; }
+
+  public int Stride => Width * 3;
+
+  public Rgb8Image(int width, int height)
+  {
+    Validate(width, height);
+    Width = width;
+    Height = height;
+    Data = new byte[width * height * 3];
+  }
+
+  /// <summary>Wraps <paramref name="data"/> without copying.</summary>
+  public Rgb8Image(int width, int height, byte[] data)
+  {
+    Validate(width, height);
+    ArgumentNullException.ThrowIfNull(data);
+    int expected = width * height * 3;
+    if (data.Length != expected)
+      throw new ArgumentException($"Pixel buffer has {data.Length} bytes but {width}x{height} RGB needs {expected}.", nameof(data));
+    Width = width;
+    Height = height;
+    Data = data;
+  }
+
+  public (byte R, byte G, byte B) GetPixel(int x, int y)
+  {
+    int i = PixelIndex(x, y);
+    return (Data[i], Data[i + 1], Data[i + 2]);
+  }
+
+  public void SetPixel(int x, int y, byte r, byte g, byte b)
+  {
+    int i = PixelIndex(x, y);
+    Data[i] = r;
+    Data[i + 1] = g;
+    Data[i + 2] = b;
+  }
+
+  public int PixelIndex(int x, int y)
+  {
+    if ((uint)x >= (uint)Width)
+      throw new ArgumentOutOfRangeException(nameof(x), x, $"x must be in 0..{Width - 1}.");
+    if ((uint)y >= (uint)Height)
+      throw new ArgumentOutOfRangeException(nameof(y), y, $"y must be in 0..{Height - 1}.");
+    return (y * Width + x) * 3;
+  }
+
+  /// <summary>True when both images have the same size and identical bytes.</summary>
+  public bool ContentEquals(Rgb8Image? other) =>
+    other is not null && other.Width == Width && other.Height == Height && Data.AsSpan().SequenceEqual(other.Data);
+
+  /// <summary>
+  /// Quantizes a linear framebuffer: v^(1/gamma), clamped to [0, 1], byte = (int)(v * 255 + 0.5).
+  /// NaN and negative values become 0. A 1-band image is replicated to gray; 3 bands map to RGB.
+  /// gamma = 1 writes values unchanged, as the original GrCis bitmap output does.
+  /// </summary>
+  public static Rgb8Image FromFloatImage(FloatImage image, double gamma = 1.0, Quantization quantization = Quantization.Round)
+  {
+    ArgumentNullException.ThrowIfNull(image);
+    if (!(gamma > 0.0) || double.IsInfinity(gamma))
+      throw new ArgumentOutOfRangeException(nameof(gamma), gamma, "Gamma must be a positive finite number.");
+    if (image.Bands != 1 && image.Bands != 3)
+      throw new ArgumentException($"Only 1- or 3-band images convert to RGB; this one has {image.Bands} bands.", nameof(image));
+
+    Rgb8Image result = new(image.Width, image.Height);
+    float[] src = image.Data;
+    byte[] dst = result.Data;
+    double invGamma = 1.0 / gamma;
+    if (image.Bands == 3)
+    {
+      for (int i = 0; i < src.Length; i++)
+        dst[i] = Quantize(src[i], invGamma, quantization);
+    }
+    else
+    {
+      for (int i = 0; i < src.Length; i++)
+      {
+        byte v = Quantize(src[i], invGamma, quantization);
+        dst[3 * i] = dst[3 * i + 1] = dst[3 * i + 2] = v;
+      }
+    }
+    return result;
+  }
+
+  internal static byte Quantize(double v, double invGamma, Quantization quantization = Quantization.Round)
+  {
+    // Written so NaN falls into the first branch.
+    if (!(v > 0.0))
+      return 0;
+    if (v >= 1.0)
+      return 255;
+    if (invGamma != 1.0)
+      v = Math.Pow(v, invGamma);
+    return quantization == Quantization.Truncate ? (byte)(int)(v * 255.0) : (byte)(int)(v * 255.0 + 0.5);
+  }
+
+  private static void Validate(int width, int height)
+  {
+    if (width <= 0)
+      throw new ArgumentOutOfRangeException(nameof(width), width, "Image width must be positive.");
+    if (height <= 0)
+      throw new ArgumentOutOfRangeException(nameof(height), height, "Image height must be positive.");
+    if ((long)width * height > MaxPixels)
+      throw new ArgumentException($"Image {width}x{height} exceeds the limit of {MaxPixels} pixels.");
+  }
+}

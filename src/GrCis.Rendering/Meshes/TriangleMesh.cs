@@ -1,0 +1,161 @@
+using System;
+using System.Collections.Generic;
+using System.Threading;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// A triangle mesh (<see cref="SceneBrep"/>) as a solid. Every crossing of the line with a
+/// triangle is reported, sorted by T; Enter = Front = the ray runs against the face's
+/// geometric normal (b − a) × (c − a), so a closed, consistently oriented mesh works in CSG.
+/// With <see cref="Smooth"/> and vertex normals the shading normal is interpolated; texture
+/// coordinates are interpolated when the mesh has them (GrCis leaves them zero). The search
+/// structure (<see cref="MeshBvh"/>) is built on first use; change the mesh before rendering.
+/// </summary>
+public class TriangleMesh : DefaultSceneNode, ISolid
+{
+  /// <summary>The mesh (GrCis keeps it reachable for subclasses).</summary>
+  protected SceneBrep mesh;
+
+  MeshBvh? bvh;
+
+  [ThreadStatic]
+  static List<MeshHit>? hitBuffer;
+
+  /// <summary>Treat the surface as a thin double-sided shell: each crossing adds an exit just behind it.</summary>
+  public bool ShellMode { get; set; }
+
+  /// <summary>Interpolate vertex normals (when the mesh has them).</summary>
+  public bool Smooth { get; set; }
+
+  public TriangleMesh(SceneBrep m)
+  {
+    ArgumentNullException.ThrowIfNull(m);
+    mesh = m;
+    ShellMode = false;
+    Smooth = true;
+  }
+
+  /// <summary>Distance behind a shell-mode crossing where the shell is left (ray parameter units, as GrCis).</summary>
+  public const double SHELL_OFFSET = 1.0e-4;
+
+  internal MeshBvh Bvh
+  {
+    get
+    {
+      MeshBvh? b = Volatile.Read(ref bvh);
+      if (b != null)
+        return b;
+      Interlocked.CompareExchange(ref bvh, new MeshBvh(mesh), null);
+      return bvh!;
+    }
+  }
+
+  public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
+  {
+    MeshBvh b = Bvh;
+    List<MeshHit> hits = hitBuffer ??= new List<MeshHit>(16);
+    hits.Clear();
+    b.IntersectAll(p0, p1, hits);
+    if (hits.Count == 0)
+      return null;
+    if (hits.Count > 1)
+      hits.Sort(static (x, y) => x.T.CompareTo(y.T));
+
+    // A crossing through a shared edge or vertex is found in each incident triangle: keep one.
+    double len = p1.Length;
+    double eps = 1e-10 * Math.Max(b.Extent, 1e-300) / len;
+    var result = new LinkedList<Intersection>();
+    for (int i = 0; i < hits.Count; i++)
+    {
+      MeshHit h = hits[i];
+      if (i > 0 && h.Front == hits[i - 1].Front && h.T - hits[i - 1].T <= eps)
+        continue;
+      Vector3d p = p0 + h.T * p1;
+      var data = new HitData(h.Triangle, h.U, h.V);
+      if (ShellMode)
+      {
+        // A thin slab: entered here, left just behind; with Front kept, Complete() turns the
+        // normal towards the ray on entry and along it on exit, whichever side was hit.
+        result.AddLast(new Intersection(this) { T = h.T, Enter = true, Front = h.Front, CoordLocal = p, SolidData = data });
+        result.AddLast(new Intersection(this) { T = h.T + SHELL_OFFSET, Enter = false, Front = h.Front, CoordLocal = p0 + (h.T + SHELL_OFFSET) * p1, SolidData = data });
+      }
+      else
+        result.AddLast(new Intersection(this) { T = h.T, Enter = h.Front, Front = h.Front, CoordLocal = p, SolidData = data });
+    }
+    return result;
+  }
+
+  public override void CompleteIntersection(Intersection inter)
+  {
+    if (inter.SolidData is not HitData d)
+    {
+      SolidSupport.SetWorldFrame(inter, Vector3d.UnitZ);
+      return;
+    }
+    mesh.GetTriangleVertices(d.Face, out int ia, out int ib, out int ic);
+    Vector3d a = mesh.GetVertex(ia), b = mesh.GetVertex(ib), c = mesh.GetVertex(ic);
+    double w = 1.0 - d.U - d.V;
+
+    Vector3d normal = Vector3d.Cross(b - a, c - a);
+    if (Smooth && mesh.Normals > 0)
+    {
+      Vector3d n = w * (Vector3d)mesh.GetNormal(ia) + d.U * (Vector3d)mesh.GetNormal(ib) + d.V * (Vector3d)mesh.GetNormal(ic);
+      if (n.LengthSquared > 0.0)
+        normal = n;
+    }
+    if (mesh.TxtCoords > 0)
+    {
+      Vector2 ta = mesh.GetTxtCoord(ia), tb = mesh.GetTxtCoord(ib), tc = mesh.GetTxtCoord(ic);
+      inter.TextureCoord = new Vector2d(w * ta.X + d.U * tb.X + d.V * tc.X, w * ta.Y + d.U * tb.Y + d.V * tc.Y);
+
+      // Tangents from the texture parametrisation (dP/du, dP/dv), when it is not degenerate.
+      double du1 = tb.X - ta.X, dv1 = tb.Y - ta.Y, du2 = tc.X - ta.X, dv2 = tc.Y - ta.Y;
+      double det = du1 * dv2 - du2 * dv1;
+      if (det != 0.0)
+      {
+        Vector3d e1 = b - a, e2 = c - a;
+        Vector3d tu = (dv2 * e1 - dv1 * e2) / det;
+        Vector3d tv = (du1 * e2 - du2 * e1) / det;
+        SolidSupport.SetWorldFrame(inter, normal, tu, tv);
+        return;
+      }
+    }
+    else
+      inter.TextureCoord = Vector2d.Zero;
+    SolidSupport.SetWorldFrame(inter, normal);
+  }
+
+  public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
+  {
+    if (mesh.Vertices == 0)
+    {
+      corner1 = corner2 = Vector3d.Zero;
+      return;
+    }
+    Vector3d min = Vector3d.PositiveInfinity, max = Vector3d.NegativeInfinity;
+    for (int i = 0; i < mesh.Vertices; i++)
+    {
+      Vector3d p = mesh.GetVertex(i);
+      min = Vector3d.ComponentMin(min, p);
+      max = Vector3d.ComponentMax(max, p);
+    }
+    corner1 = min;
+    corner2 = max;
+  }
+
+  /// <summary>The triangle and barycentrics of a hit (p = (1 − U − V)·a + U·b + V·c).</summary>
+  sealed class HitData
+  {
+    public readonly int Face;
+    public readonly double U, V;
+
+    public HitData(int face, double u, double v)
+    {
+      Face = face;
+      U = u;
+      V = v;
+    }
+  }
+}

@@ -1,0 +1,92 @@
+using System.Collections.Generic;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// The unit cube [0,1]³ (not centred). Texture coordinates are the two local coordinates
+/// spanning the face that was hit: (y, z) on ±x faces, (x, z) on ±y faces, (x, y) on ±z faces.
+/// </summary>
+public class Cube : DefaultSceneNode, ISolid
+{
+  public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
+  {
+    double tMin = double.NegativeInfinity, tMax = double.PositiveInfinity;
+    int faceMin = -1, faceMax = -1;
+
+    // Slab test, remembering which face bounds the interval on each side.
+    for (int axis = 0; axis < 3; axis++)
+    {
+      double o = p0[axis], d = p1[axis];
+      if (d == 0.0)
+      {
+        if (o <= 0.0 || o >= 1.0)
+          return null;
+        continue;
+      }
+      double inv = 1.0 / d;
+      double tLow = -o * inv;          // plane coordinate 0
+      double tHigh = (1.0 - o) * inv;  // plane coordinate 1
+      int faceLow = 2 * axis + 1, faceHigh = 2 * axis;   // face index: 2·axis (+), 2·axis + 1 (−)
+      if (inv < 0.0)
+      {
+        (tLow, tHigh) = (tHigh, tLow);
+        (faceLow, faceHigh) = (faceHigh, faceLow);
+      }
+      if (tLow > tMin)
+      {
+        tMin = tLow;
+        faceMin = faceLow;
+      }
+      if (tHigh < tMax)
+      {
+        tMax = tHigh;
+        faceMax = faceHigh;
+      }
+      if (tMin >= tMax)
+        return null;
+    }
+    if (faceMin < 0 || faceMax < 0)
+      return null;   // zero direction
+
+    var result = new LinkedList<Intersection>();
+    result.AddLast(new Intersection(this) { T = tMin, Enter = true, Front = true, CoordLocal = p0 + tMin * p1, NormalLocal = FaceNormal(faceMin) });
+    result.AddLast(new Intersection(this) { T = tMax, Enter = false, Front = false, CoordLocal = p0 + tMax * p1, NormalLocal = FaceNormal(faceMax) });
+    return result;
+  }
+
+  /// <summary>Outward normal of face 2·axis (positive side) or 2·axis + 1 (negative side).</summary>
+  static Vector3d FaceNormal(int face)
+  {
+    Vector3d n = Vector3d.Zero;
+    n[face >> 1] = (face & 1) == 0 ? 1.0 : -1.0;
+    return n;
+  }
+
+  public override void CompleteIntersection(Intersection inter)
+  {
+    Vector3d p = inter.CoordLocal;
+    Vector3d n = inter.NormalLocal;
+    if (n.X != 0.0)
+    {
+      inter.TextureCoord = new Vector2d(p.Y, p.Z);
+      SolidSupport.SetWorldFrame(inter, n, Vector3d.UnitY, Vector3d.UnitZ);
+    }
+    else if (n.Y != 0.0)
+    {
+      inter.TextureCoord = new Vector2d(p.X, p.Z);
+      SolidSupport.SetWorldFrame(inter, n, Vector3d.UnitX, Vector3d.UnitZ);
+    }
+    else
+    {
+      inter.TextureCoord = new Vector2d(p.X, p.Y);
+      SolidSupport.SetWorldFrame(inter, n, Vector3d.UnitX, Vector3d.UnitY);
+    }
+  }
+
+  public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
+  {
+    corner1 = Vector3d.Zero;
+    corner2 = Vector3d.One;
+  }
+}

@@ -1,0 +1,131 @@
+using System.Collections.Generic;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// The local z = 0 plane: infinite, a rectangle, or a right triangle. One hit per ray;
+/// the front side is +z (Enter = Front = the ray comes from +z). Texture coordinates:
+/// (x, y) along infinite directions, normalised to [0, 1] along bounded ones; on the
+/// triangle the two barycentric-like coordinates x/xMax, y/yMax.
+/// </summary>
+public class Plane : DefaultSceneNode, ISolid
+{
+  /// <summary>Lower bound of x.</summary>
+  public double XMin { get; set; }
+
+  /// <summary>Upper bound of x; for a triangle its reciprocal (the constraint is x·XMax + y·YMax ≤ 1).</summary>
+  public double XMax { get; set; }
+
+  /// <summary>Lower bound of y.</summary>
+  public double YMin { get; set; }
+
+  /// <summary>Upper bound of y; for a triangle its reciprocal.</summary>
+  public double YMax { get; set; }
+
+  /// <summary>Three constraints instead of four: x ≥ 0, y ≥ 0, x·XMax + y·YMax ≤ 1.</summary>
+  public bool Triangle { get; set; }
+
+  /// <summary>u = x (otherwise u = (x − XMin)·ScaleU).</summary>
+  public bool CanonicU { get; set; }
+
+  /// <summary>v = y (otherwise v = (y − YMin)·ScaleV).</summary>
+  public bool CanonicV { get; set; }
+
+  public double ScaleU { get; set; }
+
+  public double ScaleV { get; set; }
+
+  /// <summary>The infinite plane.</summary>
+  public Plane()
+    : this(double.NegativeInfinity, double.PositiveInfinity, double.NegativeInfinity, double.PositiveInfinity)
+  {
+  }
+
+  /// <summary>The rectangle [xMin, xMax] × [yMin, yMax] (bounds may be infinite).</summary>
+  public Plane(double xMin, double xMax, double yMin, double yMax)
+  {
+    XMin = xMin;
+    XMax = xMax;
+    YMin = yMin;
+    YMax = yMax;
+    Triangle = false;
+    CanonicU = CanonicV = true;
+    ScaleU = ScaleV = 1.0;
+    if (!double.IsInfinity(xMin) && !double.IsInfinity(xMax))
+    {
+      CanonicU = false;
+      ScaleU = 1.0 / (xMax - xMin);
+    }
+    if (!double.IsInfinity(yMin) && !double.IsInfinity(yMax))
+    {
+      CanonicV = false;
+      ScaleV = 1.0 / (yMax - yMin);
+    }
+  }
+
+  /// <summary>The triangle (0,0), (xMax,0), (0,yMax); a non-positive size counts as 1.</summary>
+  public Plane(double xMax, double yMax)
+  {
+    XMin = YMin = 0.0;
+    XMax = xMax < double.Epsilon ? 1.0 : 1.0 / xMax;
+    YMax = yMax < double.Epsilon ? 1.0 : 1.0 / yMax;
+    Triangle = CanonicU = CanonicV = true;
+    ScaleU = ScaleV = 1.0;
+  }
+
+  public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
+  {
+    if (p1.Z == 0.0)
+      return null;
+
+    double t = -p0.Z / p1.Z;
+    double x = p0.X + t * p1.X;
+    double y = p0.Y + t * p1.Y;
+    if (!Inside(x, y))
+      return null;
+
+    bool front = p1.Z < 0.0;
+    var result = new LinkedList<Intersection>();
+    result.AddLast(new Intersection(this)
+    {
+      T = t,
+      Enter = front,
+      Front = front,
+      CoordLocal = new Vector3d(x, y, 0.0),
+      NormalLocal = Vector3d.UnitZ,
+    });
+    return result;
+  }
+
+  bool Inside(double x, double y)
+  {
+    if (x < XMin || y < YMin)
+      return false;
+    if (Triangle)
+      return x * XMax + y * YMax <= 1.0;
+    return x <= XMax && y <= YMax;
+  }
+
+  public override void CompleteIntersection(Intersection inter)
+  {
+    double x = inter.CoordLocal.X, y = inter.CoordLocal.Y;
+    if (Triangle)
+      inter.TextureCoord = new Vector2d(x * XMax, y * YMax);
+    else
+      inter.TextureCoord = new Vector2d(CanonicU ? x : (x - XMin) * ScaleU, CanonicV ? y : (y - YMin) * ScaleV);
+    SolidSupport.SetWorldFrame(inter, Vector3d.UnitZ, Vector3d.UnitX, Vector3d.UnitY);
+  }
+
+  public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
+  {
+    if (Triangle)
+    {
+      corner1 = Vector3d.Zero;
+      corner2 = new Vector3d(1.0 / XMax, 1.0 / YMax, 0.0);
+      return;
+    }
+    corner1 = new Vector3d(SolidSupport.Finite(XMin), SolidSupport.Finite(YMin), 0.0);
+    corner2 = new Vector3d(SolidSupport.Finite(XMax), SolidSupport.Finite(YMax), 0.0);
+  }
+}

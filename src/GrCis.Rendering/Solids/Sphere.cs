@@ -1,0 +1,59 @@
+using System;
+using System.Collections.Generic;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// The unit sphere centred at the local origin. Texture coordinates: u = longitude about
+/// the z axis in [0, 1), v = polar angle / π (0 at the +z pole, 1 at the −z pole).
+/// </summary>
+public class Sphere : DefaultSceneNode, ISolid
+{
+  public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
+  {
+    if (!Roots(p0, p1, out double t0, out double t1))
+      return null;
+
+    var result = new LinkedList<Intersection>();
+    Vector3d c0 = p0 + t0 * p1;
+    result.AddLast(new Intersection(this) { T = t0, Enter = true, Front = true, CoordLocal = c0, NormalLocal = c0 });
+    Vector3d c1 = p0 + t1 * p1;
+    result.AddLast(new Intersection(this) { T = t1, Enter = false, Front = false, CoordLocal = c1, NormalLocal = c1 });
+    return result;
+  }
+
+  /// <summary>Both parameters where the line meets the unit sphere (t0 &lt; t1); false on a miss or a touch.</summary>
+  protected static bool Roots(Vector3d p0, Vector3d p1, out double t0, out double t1)
+  {
+    // Quadratic |p0 + t p1|² = 1; the discriminant from the closest point, free of cancellation.
+    double dd = Vector3d.Dot(p1, p1);
+    double od = Vector3d.Dot(p0, p1);
+    double oo = Vector3d.Dot(p0, p0);
+    t0 = t1 = 0.0;
+    if (dd == 0.0)
+      return false;
+    Vector3d closest = p0 - (od / dd) * p1;
+    double disc = dd * (1.0 - closest.LengthSquared);
+    return SolidSupport.SolveQuadratic(dd, od, oo - 1.0, disc, out t0, out t1);
+  }
+
+  public override void CompleteIntersection(Intersection inter)
+  {
+    Vector3d p = inter.CoordLocal;
+    double r = Math.Sqrt(p.X * p.X + p.Y * p.Y);
+    inter.TextureCoord = new Vector2d(SolidSupport.Longitude(p.X, p.Y), Math.Atan2(r, p.Z) / Math.PI);
+
+    // Tangents along growing u (east) and growing v (towards −z).
+    if (r > 0.0)
+      SolidSupport.SetWorldFrame(inter, p, new Vector3d(-p.Y, p.X, 0.0), new Vector3d(p.X * p.Z / r, p.Y * p.Z / r, -r));
+    else
+      SolidSupport.SetWorldFrame(inter, p);
+  }
+
+  public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
+  {
+    corner1 = new Vector3d(-1.0, -1.0, -1.0);
+    corner2 = new Vector3d(1.0, 1.0, 1.0);
+  }
+}

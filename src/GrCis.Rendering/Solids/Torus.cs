@@ -1,0 +1,129 @@
+using System;
+using System.Collections.Generic;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// Torus about the local z axis: the tube of radius <see cref="smallRadius"/> around the circle
+/// of radius <see cref="bigRadius"/> in the xy plane, i.e. the solid where
+/// (|p|² + R² − r²)² − 4R²(x² + y²) &lt; 0 (for a spindle torus, R &lt; r, the inner lemon is outside).
+/// The ray is first clipped by the bounding sphere (radius R + r) and the quartic is written
+/// about the ray's point closest to the centre, with a unit direction, so its coefficients
+/// stay of the torus's size wherever the ray starts; roots are isolated and refined on that
+/// bounded interval (<see cref="QuarticRoots"/>). All hits are returned, sorted, negative T included.
+/// Texture coordinates: u = longitude about z, v = angle around the tube / 2π (+0.5).
+/// </summary>
+public class Torus : DefaultSceneNode, ISolid
+{
+  /// <summary>Distance of the tube's centre line from the axis (R).</summary>
+  public double bigRadius = 1.0;
+
+  /// <summary>Radius of the tube (r).</summary>
+  public double smallRadius = 0.5;
+
+  public Torus(double bigRadius, double smallRadius)
+  {
+    this.bigRadius = bigRadius;
+    this.smallRadius = smallRadius;
+  }
+
+  public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
+  {
+    Span<double> u = stackalloc double[4];
+    Span<bool> enter = stackalloc bool[4];
+    int n = Solve(p0, p1, u, enter, out Vector3d center, out Vector3d dir, out double sMid, out double length);
+    if (n == 0)
+      return null;
+
+    var result = new LinkedList<Intersection>();
+    for (int i = 0; i < n; i++)
+    {
+      result.AddLast(new Intersection(this)
+      {
+        T = (sMid + u[i]) / length,
+        Enter = enter[i],
+        Front = enter[i],
+        CoordLocal = center + u[i] * dir,
+      });
+    }
+    return result;
+  }
+
+  /// <summary>
+  /// Roots along the ray as offsets <paramref name="u"/> (distance units) from the ray's point
+  /// closest to the origin (<paramref name="center"/>, at distance <paramref name="sMid"/> along the unit
+  /// <paramref name="dir"/>); the ray parameter is <c>(sMid + u) / length</c>.
+  /// </summary>
+  internal int Solve(Vector3d p0, Vector3d p1, Span<double> u, Span<bool> enter,
+                     out Vector3d center, out Vector3d dir, out double sMid, out double length)
+  {
+    center = dir = Vector3d.Zero;
+    sMid = 0.0;
+    length = p1.Length;
+    double R = Math.Abs(bigRadius), r = Math.Abs(smallRadius);
+    if (!(length > 0.0) || !(r > 0.0) || double.IsInfinity(length))
+      return 0;
+
+    // Clip by a slightly enlarged bounding sphere (f > 0 on it).
+    dir = p1 / length;
+    sMid = -Vector3d.Dot(p0, dir);
+    center = p0 + sMid * dir;
+    double rb = (R + r) * (1.0 + 1.0e-9);
+    double h2 = rb * rb - center.LengthSquared;
+    if (!(h2 > 0.0))
+      return 0;
+    double h = Math.Sqrt(h2);
+
+    // Quartic in u about the centre point: (|c + u d|² − R² − r²)² + 4R²((cz + u dz)² − r²).
+    double od = Vector3d.Dot(center, dir);   // ≈ 0, kept for exactness
+    double k = center.LengthSquared - R * R - r * r;
+    double r2x4 = 4.0 * R * R;
+    double c3 = 4.0 * od;
+    double c2 = 4.0 * od * od + 2.0 * k + r2x4 * dir.Z * dir.Z;
+    double c1 = 4.0 * od * k + 2.0 * r2x4 * center.Z * dir.Z;
+    double c0 = k * k + r2x4 * (center.Z * center.Z - r * r);
+    return QuarticRoots.Solve(c3, c2, c1, c0, -h, h, u, enter);
+  }
+
+  public override void CompleteIntersection(Intersection inter)
+  {
+    Vector3d p = inter.CoordLocal;
+    double R = Math.Abs(bigRadius), r = Math.Abs(smallRadius);
+    double rho = Math.Sqrt(p.X * p.X + p.Y * p.Y);
+    if (rho == 0.0)
+    {
+      // On the axis (spindle torus apex): the axis direction.
+      inter.TextureCoord = new Vector2d(0.0, p.Z >= 0.0 ? 0.5 : 1.0);
+      SolidSupport.SetWorldFrame(inter, new Vector3d(0.0, 0.0, p.Z >= 0.0 ? 1.0 : -1.0));
+      return;
+    }
+
+    // f = A·B with A, B the squared distances to the tube circles at ±c minus r²; the hit lies
+    // on the factor nearer to zero and the gradient of f is (other factor)·(p ∓ c).
+    Vector3d c = new Vector3d(p.X, p.Y, 0.0) * (R / rho);
+    double a = (rho - R) * (rho - R) + p.Z * p.Z - r * r;
+    double b = (rho + R) * (rho + R) + p.Z * p.Z - r * r;
+    Vector3d normal = Math.Abs(a) <= Math.Abs(b)
+      ? (b >= 0.0 ? p - c : c - p)
+      : (a >= 0.0 ? p + c : -(p + c));
+
+    // Texture: around the axis, then around the tube centre (the opposite one inside a spindle's lemon).
+    bool lemon = R < r && rho < R && p.Z * p.Z <= r * r - R * R;
+    Vector3d w = p - (lemon ? -c : c);
+    double r2 = Math.Sqrt(w.X * w.X + w.Y * w.Y);
+    if (rho < R)
+      r2 = -r2;
+    inter.TextureCoord = new Vector2d(SolidSupport.Longitude(p.X, p.Y), Math.Atan2(r2, p.Z) / (2.0 * Math.PI) + 0.5);
+
+    Vector3d tu = new Vector3d(-p.Y, p.X, 0.0);
+    SolidSupport.SetWorldFrame(inter, normal, tu, Vector3d.Cross(tu, normal));
+  }
+
+  public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
+  {
+    double R = Math.Abs(bigRadius), r = Math.Abs(smallRadius);
+    corner1 = new Vector3d(-R - r, -R - r, -r);
+    corner2 = new Vector3d(R + r, R + r, r);
+  }
+}
