@@ -73,3 +73,35 @@ public class DifferentialTests
     Assert.True(differing == 0, $"{name}: {differing} channels differ (max {maxDiff}).");
   }
 }
+
+/// <summary>The eleven classic GrCis scenes through both paths (small images: the faithful path is slow).</summary>
+public class ClassicDifferentialTests
+{
+  readonly ITestOutputHelper output;
+
+  public ClassicDifferentialTests(ITestOutputHelper output) => this.output = output;
+
+  public static TheoryData<string> ClassicNames()
+  {
+    var data = new TheoryData<string>();
+    foreach (string name in global::Rendering.Scenes.Names)
+      data.Add(name);
+    return data;
+  }
+
+  [Theory]
+  [MemberData(nameof(ClassicNames))]
+  public void Classic_scene_renders_identically_on_both_paths(string name)
+  {
+    // Sphere flake at depth 3 keeps the faithful render short; the structure is the same.
+    string? param = name == "Sphere flake" ? "depth=3" : null;
+    FloatImage slow = RenderHelper.Render(global::Rendering.Scenes.Create(name, param), AccelMode.None, 64, 48);
+    FloatImage fast = RenderHelper.Render(global::Rendering.Scenes.Create(name, param), AccelMode.Bvh, 64, 48);
+    int differing = 0;
+    for (int k = 0; k < slow.Data.Length; k++)
+      if (slow.Data[k] != fast.Data[k] && !(float.IsNaN(slow.Data[k]) && float.IsNaN(fast.Data[k])))
+        differing++;
+    output.WriteLine($"{name}: {differing} differing channels");
+    Assert.Equal(0, differing);
+  }
+}
