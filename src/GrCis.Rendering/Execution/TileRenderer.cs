@@ -59,6 +59,10 @@ public static class TileRenderer
       MT.scene = callerScene;
     }
 
+    // Prepare the fast path once per frame, before the workers share it read-only.
+    if (imageFunction is RayCasting rc)
+      rc.Prepare(scene);
+
     List<Tile> tiles = MakeTiles(width, height, options.TileSize);
     int next = -1, done = 0;
     int threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tiles.Count));

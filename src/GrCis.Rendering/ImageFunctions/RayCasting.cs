@@ -1,6 +1,8 @@
 using System;
 using System.Collections.Generic;
+using System.Runtime.CompilerServices;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -13,7 +15,64 @@ public class RayCasting : IImageFunction
 
   protected IRayScene? scene;
 
+  /// <summary>How ray queries are answered: the prepared fast path (default) or the faithful GrCis path.</summary>
+  public AccelMode Accel = AccelMode.Bvh;
+
+  [NonSerialized] PreparedScene? prepared;
+
+  [NonSerialized] readonly object prepareLock = new();
+
+  // Per-scene snapshots when threads render different scene clones (clone on write).
+  [NonSerialized] ConditionalWeakTable<IIntersectable, PreparedScene>? preparedBySource;
+
   public RayCasting(IRayScene? sc = null) => scene = sc;
+
+  /// <summary>
+  /// Prepares <paramref name="sc"/> (default: <see cref="Scene"/>) for the fast path: call once per frame,
+  /// after the scene graph is final (the tile renderer does). Returns null in <see cref="AccelMode.None"/>.
+  /// </summary>
+  public PreparedScene? Prepare(IRayScene? sc = null)
+  {
+    if (Accel == AccelMode.None)
+      return null;
+    IIntersectable? source = (sc ?? Scene).Intersectable;
+    if (source == null)
+      return null;
+    PreparedScene ps = PreparedScene.Prepare(source);
+    (preparedBySource ??= new ConditionalWeakTable<IIntersectable, PreparedScene>()).AddOrUpdate(source, ps);
+    prepared = ps;
+    return ps;
+  }
+
+  /// <summary>The snapshot made by the last <see cref="Prepare"/> or first use (statistics, tests).</summary>
+  public PreparedScene? LastPrepared => prepared;
+
+  /// <summary>The prepared snapshot of the current scene (built on first use), or null on the faithful path.</summary>
+  protected PreparedScene? Prepared
+  {
+    get
+    {
+      if (Accel == AccelMode.None)
+        return null;
+      IIntersectable? source = Scene.Intersectable;
+      PreparedScene? ps = prepared;
+      if (ps != null && ps.Source == source)
+        return ps;
+      if (source == null)
+        return null;
+      lock (prepareLock)
+      {
+        preparedBySource ??= new ConditionalWeakTable<IIntersectable, PreparedScene>();
+        if (!preparedBySource.TryGetValue(source, out ps))
+        {
+          ps = PreparedScene.Prepare(source);
+          preparedBySource.AddOrUpdate(source, ps);
+        }
+        prepared = ps;
+        return ps;
+      }
+    }
+  }
 
   /// <summary>The scene: the one given to the constructor, else the thread's current scene.</summary>
   public IRayScene Scene
@@ -38,6 +97,9 @@ public class RayCasting : IImageFunction
   protected virtual Intersection? FirstHit(Vector3d p0, Vector3d p1)
   {
     Intersection.countRays++;
+    PreparedScene? ps = Prepared;
+    if (ps != null)
+      return ps.FirstHit(p0, p1);
     LinkedList<Intersection>? list = Scene.Intersectable?.Intersect(p0, p1);
     return Intersection.FirstIntersection(list, ref p1);
   }
@@ -77,9 +139,7 @@ public class RayCasting : IImageFunction
     }
 
     Vector3d viewer = -p1.Normalized();
-    IMaterial material = (IMaterial)i.Material!.Clone();
-    material.Color = surface;
-    i.Material = material;
+    i.Material = ShadingScratch.Material(i.Material!, surface, 0);
 
     foreach (ILightSource source in sc.Sources)
     {

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using MathSupport;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -45,6 +46,9 @@ public class RayTracing : RayCasting
   protected virtual bool Occluded(Vector3d p0, Vector3d dir)
   {
     Intersection.countRays++;
+    PreparedScene? ps = Prepared;
+    if (ps != null)
+      return ps.Occluded(p0, dir);
     LinkedList<Intersection>? list = Scene.Intersectable?.Intersect(p0, dir);
     Intersection? si = Intersection.FirstRealIntersection(list, ref dir);
     return si != null && !si.Far(1.0, ref dir);
@@ -78,9 +82,10 @@ public class RayTracing : RayCasting
       AddScaled(color, surface, 1.0);
     else
     {
-      IMaterial material = (IMaterial)i.Material!.Clone();
-      material.Color = surface;
-      i.Material = material;
+      i.Material = ShadingScratch.Material(i.Material!, surface, depth);
+      // The library's Phong model writes into a stack buffer instead of a new array per light.
+      bool phong = i.ReflectanceModel!.GetType() == typeof(PhongModel) && i.Material is PhongMaterial && surface.Length <= 16;
+      Span<double> buffer = stackalloc double[16];
 
       foreach (ILightSource source in sc.Sources)
       {
@@ -89,9 +94,20 @@ public class RayTracing : RayCasting
           continue;
         if (DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0) && Occluded(i.CoordWorld, dir))
           continue;
-        double[]? reflection = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
-        if (reflection == null)
-          continue;
+        scoped ReadOnlySpan<double> reflection;
+        if (phong)
+        {
+          Span<double> r = buffer[..surface.Length];
+          PhongModel.ColorReflection((PhongMaterial)i.Material, i.Normal, dir, viewer, ReflectionComponent.ALL, r);
+          reflection = r;
+        }
+        else
+        {
+          double[]? arr = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
+          if (arr == null)
+            continue;
+          reflection = arr;
+        }
         for (int b = 0; b < bands; b++)
           color[b] += intensity[Math.Min(b, intensity.Length - 1)] * reflection[Math.Min(b, reflection.Length - 1)];
         hash = hash * HASH_LIGHT + source.GetHashCode();
@@ -101,14 +117,30 @@ public class RayTracing : RayCasting
     if (depth++ >= MaxLevel || (!DoReflections && !DoRefractions))
       return hash;
 
-    double[] comp = new double[bands];
+    double[] comp = ShadingScratch.Buffer(depth, bands);
     Vector3d origin = i.CoordWorld;
 
     if (DoReflections)
     {
       Vector3d r = Geometry.SpecularReflection(i.Normal, viewer);
-      double[]? ks = i.ReflectanceModel!.ColorReflection(i, viewer, r, ReflectionComponent.SPECULAR_REFLECTION);
-      if (ks != null)
+      Span<double> ksBuffer = stackalloc double[16];
+      scoped ReadOnlySpan<double> ks = default;
+      bool have;
+      if (i.ReflectanceModel!.GetType() == typeof(PhongModel) && i.Material is PhongMaterial pm && pm.Color.Length is > 0 and <= 16)
+      {
+        Span<double> k = ksBuffer[..pm.Color.Length];
+        PhongModel.ColorReflection(pm, i.Normal, viewer, r, ReflectionComponent.SPECULAR_REFLECTION, k);
+        ks = k;
+        have = true;
+      }
+      else
+      {
+        double[]? arr = i.ReflectanceModel!.ColorReflection(i, viewer, r, ReflectionComponent.SPECULAR_REFLECTION);
+        have = arr != null;
+        if (have)
+          ks = arr;
+      }
+      if (have)
       {
         double maxK = ks[0];
         for (int b = 1; b < ks.Length; b++)

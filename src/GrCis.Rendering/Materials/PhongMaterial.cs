@@ -71,4 +71,17 @@ public class PhongMaterial : IMaterial
   }
 
   public virtual object Clone() => new PhongMaterial(this);
+
+  /// <summary>Copies every coefficient of <paramref name="m"/> and shares <paramref name="color"/> (shading scratch copies).</summary>
+  internal void CopyFrom(PhongMaterial m, double[] color)
+  {
+    Color = color;
+    Ka = m.Ka;
+    Kd = m.Kd;
+    Ks = m.Ks;
+    H = m.H;
+    Kt = m.Kt;
+    Sch = m.Sch;
+    n = m.n;
+  }
 }

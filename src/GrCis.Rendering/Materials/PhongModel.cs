@@ -20,9 +20,18 @@ public class PhongModel : IReflectanceModel
   {
     if (material is not PhongMaterial mat)
       return null;
+    double[] result = new double[mat.Color.Length];
+    ColorReflection(mat, normal, input, output, comp, result);
+    return result;
+  }
 
+  /// <summary>
+  /// The same computation into a caller's buffer of <c>mat.Color.Length</c> bands (the shading hot path
+  /// uses it to avoid one array per light and hit).
+  /// </summary>
+  internal static void ColorReflection(PhongMaterial mat, Vector3d normal, Vector3d input, Vector3d output, ReflectionComponent comp, Span<double> result)
+  {
     int bands = mat.Color.Length;
-    double[] result = new double[bands];
     bool viewOut = Vector3d.Dot(output, normal) > 0.0;
 
     // Ambient light has no direction.
@@ -31,7 +40,7 @@ public class PhongModel : IReflectanceModel
       double coef = viewOut ? mat.Ka : mat.Ka * mat.Kt;
       for (int i = 0; i < bands; i++)
         result[i] = coef * mat.Color[i];
-      return result;
+      return;
     }
 
     input.Normalize();
@@ -83,6 +92,5 @@ public class PhongModel : IReflectanceModel
 
     for (int i = 0; i < bands; i++)
       result[i] = diffuse * mat.Color[i] + specular;
-    return result;
   }
 }

@@ -95,7 +95,7 @@ public class TriangleMeshTests
     }
     var a = Hits(Make(new TriangleMesh(Read(CubeObj))), new Vector3d(-5, 0.8, 0.8), new Vector3d(1, 0, 0));
     var b = Hits(Make(new Cube()), new Vector3d(-5, 0.8, 0.8), new Vector3d(1, 0, 0));
-    Assert.Equal(b.Select(h => (Math.Round(h.T, 9), h.Enter)), a.Select(h => (Math.Round(h.T, 9), h.Enter)));
+    Assert.Equal(b.Select(h => (System.Math.Round(h.T, 9), h.Enter)), a.Select(h => (System.Math.Round(h.T, 9), h.Enter)));
   }
 
   [Fact]

@@ -121,7 +121,7 @@ public class BezierSurfaceTests
       agree++;
       for (int k = 0; k < ours.Count; k++)
       {
-        maxErr = Math.Max(maxErr, Math.Abs(ours[k].T - distinct[k]) * p1.Length);
+        maxErr = System.Math.Max(maxErr, System.Math.Abs(ours[k].T - distinct[k]) * p1.Length);
         // Every reported hit lies exactly on the surface at its (u, v): check via completion.
         ours[k].Complete();
       }
@@ -177,7 +177,7 @@ public class BezierSurfaceTests
   [Fact]
   public void Bezier_world_normal_follows_the_parent_transform()
   {
-    var root = Place(new BezierSurface(1, 1, PlanarNet()), Matrix4d.RotateX(-Math.PI / 2) * Matrix4d.CreateTranslation(0, -1, 0));
+    var root = Place(new BezierSurface(1, 1, PlanarNet()), Matrix4d.RotateX(-System.Math.PI / 2) * Matrix4d.CreateTranslation(0, -1, 0));
     // Local +z → world +y; the surface lies in the floor y = −1.
     Vector3d p0 = new Vector3d(1, 3, -1), p1 = new Vector3d(0, -1, 0);
     Intersection i = First(root, p0, p1);

@@ -1,0 +1,21 @@
+using System;
+using BenchmarkDotNet.Running;
+
+namespace GrCis.Bench;
+
+/// <summary>
+/// <c>dotnet run -c Release -- quick [...]</c>: Stopwatch scene timings (fast vs faithful path);
+/// anything else goes to BenchmarkDotNet (e.g. <c>--filter *Kernel*</c>).
+/// </summary>
+public static class Program
+{
+  public static int Main(string[] args)
+  {
+    if (args.Length > 0 && args[0] == "probe")
+      return Probe.Run();
+    if (args.Length > 0 && args[0] == "quick")
+      return QuickRun.Run(args[1..]);
+    BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
+    return 0;
+  }
+}

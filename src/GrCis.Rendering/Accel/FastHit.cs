@@ -1,0 +1,24 @@
+using OpenTK.Mathematics;
+
+namespace Rendering.Accel;
+
+/// <summary>
+/// The cheap part of one ray–solid record, as a value: what <see cref="IFastSolid.CreateIntersection"/>
+/// needs to build the same <see cref="Intersection"/> the solid's <c>Intersect</c> would have listed.
+/// </summary>
+public struct FastHit
+{
+  /// <summary>Ray parameter (the same for local and world rays: transforms are affine).</summary>
+  public double T;
+
+  public Vector3d CoordLocal;
+
+  /// <summary>Solid-specific payload (face, cap, patch index …).</summary>
+  public int Data;
+
+  /// <summary>Second solid-specific payload (e.g. the local ray direction some solids keep).</summary>
+  public Vector3d Aux;
+
+  public bool Enter;
+  public bool Front;
+}

@@ -1,0 +1,29 @@
+using OpenTK.Mathematics;
+
+namespace Rendering.Accel;
+
+/// <summary>
+/// One leaf of a flattened scene: a known solid answered by its <see cref="IFastSolid"/> kernel, or any
+/// other intersectable (non-union CSG subtree, script solid) answered through its LinkedList API.
+/// </summary>
+internal struct PreparedMember
+{
+  public IIntersectable Node;
+
+  /// <summary>Non-null when the allocation-free kernel answers for this member.</summary>
+  public IFastSolid? Fast;
+
+  /// <summary>FromParent matrices from the scene root down to this member (identities left out), in order.</summary>
+  public int ChainStart, ChainCount;
+
+  /// <summary>Records only inside <see cref="WorldBox"/> and balanced: may live in the BVH.</summary>
+  public bool Closed;
+
+  /// <summary>The solid's local NO_SHADOW attribute was set at prepare time.</summary>
+  public bool NoShadow;
+
+  public Aabb WorldBox;
+
+  // What Intersection.Complete() would compute (Solid.ToWorld(), its inverse, Solid.ToObject()).
+  public Matrix4d LocalToWorld, WorldToLocal, LocalToObject;
+}

@@ -1,0 +1,500 @@
+using System;
+using System.Collections.Generic;
+using System.Runtime.CompilerServices;
+using System.Threading;
+using OpenTK.Mathematics;
+
+namespace Rendering.Accel;
+
+/// <summary>
+/// A scene prepared for fast ray queries (once per frame): union CSG nodes are flattened into members,
+/// each member's transform chain and world matrices are computed once, and closed members are put in a
+/// BVH (binned SAH). Queries allocate nothing except the <see cref="Intersection"/> of the winning hit.
+/// </summary>
+/// <remarks>
+/// <para><b>When is a union a pure container?</b> GrCis merges a union's children left to right and keeps
+/// a record only where the union's inside state changes; <see cref="Intersection.FirstIntersection"/> then
+/// takes the first record with T &gt; 0 and T²|p1|² &gt; RAY_EPSILON2 ("valid"). Let every member report its
+/// first valid record and its inside state just before it (<see cref="IFastSolid.IntersectFirst"/>). If no
+/// member is inside there and every member's first valid record is an entry, the union is outside until
+/// the first entry, so its first valid record is the smallest first valid record over the members (ties:
+/// the member first in depth-first order, as the merge keeps the left operand's record). Otherwise — the
+/// ray starts inside some member (refraction rays, rays from below a plane) or a member's list is
+/// irregular — the query is answered by the faithful path on the whole scene. This rule is exact.</para>
+/// <para><b>Pruning.</b> A closed member (records only inside its box, list starting outside) whose box
+/// lies behind the origin or beyond the best hit so far can neither win nor be inside at the origin, so
+/// the BVH may skip it. Open members (planes, script solids) are tested for every ray.</para>
+/// <para>The ray is taken into each member's space through the same FromParent matrices, in the same
+/// order, as <see cref="CSGInnerNode.Intersect"/> does, so T and local coordinates are bit-identical.
+/// Shadow rays use the same query bounded by the light (<see cref="Intersection.Far"/>), and fall back to
+/// the faithful path when the closest blocker is marked NO_SHADOW.</para>
+/// <para>The prepared scene is a snapshot: prepare again after changing the scene graph or attributes.</para>
+/// </remarks>
+public sealed class PreparedScene
+{
+  readonly PreparedMember[] members;
+  readonly Matrix4d[] chain;
+  readonly int[] always;
+  readonly Bvh? bvh;
+  readonly int stackSize;
+
+  // Union-merge semantics over all members; false: one member whose raw list the scene returns.
+  readonly bool union;
+
+  long fallbacks;
+
+  /// <summary>The intersectable this snapshot was prepared from.</summary>
+  public IIntersectable? Source { get; }
+
+  /// <summary>Number of flattened members (leaves).</summary>
+  public int MemberCount => members.Length;
+
+  /// <summary>Members in the BVH.</summary>
+  public int BoundedCount { get; }
+
+  /// <summary>Members tested for every ray (open or unknown solids).</summary>
+  public int UnboundedCount => always.Length;
+
+  /// <summary>Members answered through the LinkedList API.</summary>
+  public int ListMemberCount { get; }
+
+  /// <summary>Queries of this snapshot answered by the faithful path because the fast rule did not apply.</summary>
+  public long FallbackCount => Interlocked.Read(ref fallbacks);
+
+  PreparedScene(IIntersectable? source, bool union, PreparedMember[] members, Matrix4d[] chain)
+  {
+    Source = source;
+    this.union = union;
+    this.members = members;
+    this.chain = chain;
+
+    var bounded = new List<int>();
+    var open = new List<int>();
+    var boxes = new Aabb[members.Length];
+    int listMembers = 0;
+    for (int i = 0; i < members.Length; i++)
+    {
+      if (members[i].Fast == null)
+        listMembers++;
+      boxes[i] = members[i].WorldBox;
+      if (!members[i].Closed)
+        open.Add(i);
+      else if (!members[i].WorldBox.IsEmpty)
+        bounded.Add(i);
+      // A closed member with an empty box has no records: it can be left out.
+    }
+    ListMemberCount = listMembers;
+    BoundedCount = bounded.Count;
+    always = open.ToArray();
+    if (union && bounded.Count > 0)
+    {
+      bvh = Bvh.Build(boxes, bounded.ToArray());
+      stackSize = bvh.Depth + 2;
+    }
+    else if (!union)
+      always = members.Length > 0 ? new[] { 0 } : Array.Empty<int>();
+  }
+
+  /// <summary>Prepares <paramref name="root"/> (usually <see cref="IRayScene.Intersectable"/>).</summary>
+  public static PreparedScene Prepare(IIntersectable? root)
+  {
+    var members = new List<PreparedMember>();
+    var chain = new List<Matrix4d>();
+    var path = new List<Matrix4d>();
+    bool union = false;
+    if (root != null)
+      union = Classify(root, path, members, chain);
+    return new PreparedScene(root, union, members.ToArray(), chain.ToArray());
+  }
+
+  // ---------------------------------------------------------------- preparation
+
+  static bool IsPureUnion(ISceneNode node) =>
+    node.GetType() == typeof(CSGInnerNode) &&
+    node is CSGInnerNode c && c.Operation == SetOperation.Union && c.BoundingVolume == null;
+
+  /// <summary>Top level: returns true for union semantics, false for a single member's raw list.</summary>
+  static bool Classify(IIntersectable node, List<Matrix4d> path, List<PreparedMember> members, List<Matrix4d> chain)
+  {
+    if (node is ISceneNode sn && IsPureUnion(sn))
+    {
+      if (sn.Children.Count == 0)
+        return false;
+      if (sn.Children.Count == 1)
+      {
+        // A union of one child returns the child's list unmerged.
+        foreach (ISceneNode only in sn.Children)
+        {
+          int mark = Push(path, only.FromParent);
+          bool u = Classify(only, path, members, chain);
+          path.RemoveRange(mark, path.Count - mark);
+          return u;
+        }
+      }
+      Flatten(sn, path, members, chain);
+      return true;
+    }
+    AddMember(node, path, members, chain);
+    return false;
+  }
+
+  static void Flatten(ISceneNode node, List<Matrix4d> path, List<PreparedMember> members, List<Matrix4d> chain)
+  {
+    foreach (ISceneNode child in node.Children)
+    {
+      int mark = Push(path, child.FromParent);
+      if (IsPureUnion(child))
+        Flatten(child, path, members, chain);
+      else
+        AddMember(child, path, members, chain);
+      path.RemoveRange(mark, path.Count - mark);
+    }
+  }
+
+  static int Push(List<Matrix4d> path, in Matrix4d m)
+  {
+    int mark = path.Count;
+    // An identity step is exact to skip (x·1 + y·0 + z·0 + 0 == x for finite coordinates).
+    if (m != Matrix4d.Identity)
+      path.Add(m);
+    return mark;
+  }
+
+  static void AddMember(IIntersectable node, List<Matrix4d> path, List<PreparedMember> members, List<Matrix4d> chain)
+  {
+    var m = new PreparedMember
+    {
+      Node = node,
+      ChainStart = chain.Count,
+      ChainCount = path.Count,
+      WorldBox = Aabb.Empty,
+    };
+    chain.AddRange(path);
+
+    if (node is IFastSolid f && f.SupportsFastPath)
+    {
+      m.Fast = f;
+      m.LocalToWorld = f.ToWorld();
+      m.WorldToLocal = m.LocalToWorld.Inverted();
+      m.LocalToObject = f.ToObject();
+      m.NoShadow = f.GetLocalAttribute(PropertyName.NO_SHADOW) != null;
+    }
+
+    if (node is ISceneNode sn && TryClosedBox(sn, out Aabb local))
+    {
+      // World box from the same chain the ray goes through (padded for rounding).
+      Matrix4d worldToLocal = Matrix4d.Identity;
+      for (int k = 0; k < path.Count; k++)
+        worldToLocal *= path[k];
+      Aabb world = local.Transformed(worldToLocal.Inverted());
+      if (world.IsEmpty || world.IsFinite)
+      {
+        m.Closed = true;
+        m.WorldBox = world.IsEmpty ? world : world.Padded();
+      }
+    }
+    members.Add(m);
+  }
+
+  /// <summary>Local box of a closed member: a closed known solid, or a library CSG node over closed members.</summary>
+  static bool TryClosedBox(ISceneNode node, out Aabb box)
+  {
+    box = Aabb.Empty;
+    if (node is IFastSolid f)
+    {
+      if (!f.SupportsFastPath || !f.IsClosed)
+        return false;
+      f.GetBoundingBox(out Vector3d c1, out Vector3d c2);
+      box = new Aabb(c1, c2);
+      return true;
+    }
+    if (node.GetType() != typeof(CSGInnerNode))
+      return false;
+
+    var csg = (CSGInnerNode)node;
+    bool first = true;
+    foreach (ISceneNode child in csg.Children)
+    {
+      if (!TryClosedBox(child, out Aabb cb))
+        return false;
+      cb = cb.Transformed(child.ToParent);
+      switch (csg.Operation)
+      {
+        case SetOperation.Intersection:
+          box = first ? cb : Aabb.Intersect(box, cb);
+          break;
+        case SetOperation.Difference:
+          if (first)
+            box = cb;
+          break;
+        default:
+          box.Add(cb);
+          break;
+      }
+      first = false;
+    }
+    if (box.IsEmpty)
+      box = Aabb.Empty;
+    return true;
+  }
+
+  // ---------------------------------------------------------------- queries
+
+  /// <summary>State of one closest-hit query.</summary>
+  struct Query
+  {
+    public double Len2;
+    public double BestT;
+    public int BestIndex;
+    public FastHit BestHit;
+    public Intersection? BestList;
+  }
+
+  /// <summary>
+  /// The hit <see cref="Intersection.FirstIntersection"/> would pick from the scene's list, completed
+  /// with cached matrices (list members' hits are left to <see cref="Intersection.Complete"/>), or null.
+  /// </summary>
+  public Intersection? FirstHit(Vector3d p0, Vector3d p1)
+  {
+    if (members.Length == 0)
+      return null;
+    double len2 = p1.LengthSquared;
+    if (!union)
+      return FirstHitSingle(p0, p1, len2);
+
+    var q = new Query { Len2 = len2, BestT = double.PositiveInfinity, BestIndex = int.MaxValue };
+    if (!Closest(ref q, p0, p1))
+      return FaithfulFirstHit(p0, p1);
+    return q.BestIndex == int.MaxValue ? null : Winner(ref q);
+  }
+
+  /// <summary>
+  /// True when a hit not marked NO_SHADOW lies between <paramref name="p0"/> and <c>p0 + dir</c>
+  /// (the faithful rule: FirstRealIntersection, then not <see cref="Intersection.Far"/>(1)).
+  /// </summary>
+  public bool Occluded(Vector3d p0, Vector3d dir)
+  {
+    if (members.Length == 0)
+      return false;
+    double len2 = dir.LengthSquared;
+    if (!union)
+      return OccludedSingle(p0, dir, len2);
+
+    // Hits beyond 1 + RAY_EPSILON/|dir| are Far(1): prune them (with a little slack, tested exactly below).
+    double bound = 1.0 + Intersection.RAY_EPSILON / Math.Sqrt(len2);
+    bound += bound * 1.0e-12;
+    var q = new Query { Len2 = len2, BestT = bound, BestIndex = int.MaxValue };
+    if (!Closest(ref q, p0, dir))
+      return FaithfulOccluded(p0, dir);
+    if (q.BestIndex == int.MaxValue)
+      return false;
+
+    bool noShadow = q.BestList != null
+      ? q.BestList.Solid != null && q.BestList.Solid.GetLocalAttribute(PropertyName.NO_SHADOW) != null
+      : members[q.BestIndex].NoShadow;
+    if (noShadow)
+      return FaithfulOccluded(p0, dir);
+    return NotFar(q.BestT, len2);
+  }
+
+  static bool NotFar(double t, double len2)
+  {
+    if (t <= 1.0)
+      return true;
+    double d = t - 1.0;
+    return !(d * d * len2 > Intersection.RAY_EPSILON2);
+  }
+
+  Intersection? FaithfulFirstHit(Vector3d p0, Vector3d p1)
+  {
+    Interlocked.Increment(ref fallbacks);
+    return Intersection.FirstIntersection(Source!.Intersect(p0, p1), ref p1);
+  }
+
+  bool FaithfulOccluded(Vector3d p0, Vector3d dir)
+  {
+    Interlocked.Increment(ref fallbacks);
+    Intersection? si = Intersection.FirstRealIntersection(Source!.Intersect(p0, dir), ref dir);
+    return si != null && !si.Far(1.0, ref dir);
+  }
+
+  Intersection Winner(ref Query q)
+  {
+    if (q.BestList != null)
+      return q.BestList;
+    ref PreparedMember m = ref members[q.BestIndex];
+    Intersection i = m.Fast!.CreateIntersection(q.BestHit);
+    i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
+    return i;
+  }
+
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  void ToLocal(in PreparedMember m, ref Vector3d p0, ref Vector3d p1)
+  {
+    // Same arithmetic, in the same order, as Vector3d.TransformPosition/TransformVector (bit-identical),
+    // reading the matrix by reference instead of copying 128 bytes per step.
+    int end = m.ChainStart + m.ChainCount;
+    for (int k = m.ChainStart; k < end; k++)
+    {
+      ref Matrix4d t = ref chain[k];
+      double x = p0.X, y = p0.Y, z = p0.Z;
+      p0 = new Vector3d(
+        x * t.Row0.X + y * t.Row1.X + z * t.Row2.X + t.Row3.X,
+        x * t.Row0.Y + y * t.Row1.Y + z * t.Row2.Y + t.Row3.Y,
+        x * t.Row0.Z + y * t.Row1.Z + z * t.Row2.Z + t.Row3.Z);
+      x = p1.X;
+      y = p1.Y;
+      z = p1.Z;
+      p1 = new Vector3d(
+        x * t.Row0.X + y * t.Row1.X + z * t.Row2.X,
+        x * t.Row0.Y + y * t.Row1.Y + z * t.Row2.Y,
+        x * t.Row0.Z + y * t.Row1.Z + z * t.Row2.Z);
+    }
+  }
+
+  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2)
+  {
+    ref PreparedMember m = ref members[0];
+    Vector3d lp0 = p0, lp1 = p1;
+    ToLocal(m, ref lp0, ref lp1);
+    if (m.Fast != null)
+    {
+      if (!m.Fast.IntersectFirst(lp0, lp1, len2, out FastHit h, out _))
+        return null;
+      Intersection i = m.Fast.CreateIntersection(h);
+      i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
+      return i;
+    }
+    return Intersection.FirstIntersection(m.Node.Intersect(lp0, lp1), ref p1);
+  }
+
+  bool OccludedSingle(Vector3d p0, Vector3d dir, double len2)
+  {
+    ref PreparedMember m = ref members[0];
+    Vector3d lp0 = p0, lp1 = dir;
+    ToLocal(m, ref lp0, ref lp1);
+    if (m.Fast != null)
+    {
+      // Every record belongs to this solid, so NO_SHADOW hides them all.
+      if (m.NoShadow || !m.Fast.IntersectFirst(lp0, lp1, len2, out FastHit h, out _))
+        return false;
+      return NotFar(h.T, len2);
+    }
+    Intersection? si = Intersection.FirstRealIntersection(m.Node.Intersect(lp0, lp1), ref dir);
+    return si != null && !si.Far(1.0, ref dir);
+  }
+
+  /// <summary>Closest first-valid record over all members; false when the fast rule does not apply.</summary>
+  bool Closest(ref Query q, in Vector3d p0, in Vector3d p1)
+  {
+    for (int k = 0; k < always.Length; k++)
+      if (!TestMember(always[k], ref q, p0, p1))
+        return false;
+    if (bvh == null)
+      return true;
+
+    // Zero direction components become tiny ones: no NaN from 0 · ∞ in the slab test, and the
+    // padded boxes absorb the difference.
+    double dx = p1.X == 0.0 ? 1e-300 : p1.X, dy = p1.Y == 0.0 ? 1e-300 : p1.Y, dz = p1.Z == 0.0 ? 1e-300 : p1.Z;
+    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
+    double ox = p0.X, oy = p0.Y, oz = p0.Z;
+    BvhNode[] nodes = bvh.Nodes;
+    int[] items = bvh.Items;
+
+    Span<int> stack = stackSize <= 256 ? stackalloc int[stackSize] : new int[stackSize];
+    int sp = 0;
+    int ni = 0;
+    while (true)
+    {
+      ref BvhNode n = ref nodes[ni];
+      double t0 = (n.MinX - ox) * ix, t1 = (n.MaxX - ox) * ix;
+      double tn = Math.Min(t0, t1), tf = Math.Max(t0, t1);
+      t0 = (n.MinY - oy) * iy;
+      t1 = (n.MaxY - oy) * iy;
+      tn = Math.Max(tn, Math.Min(t0, t1));
+      tf = Math.Min(tf, Math.Max(t0, t1));
+      t0 = (n.MinZ - oz) * iz;
+      t1 = (n.MaxZ - oz) * iz;
+      tn = Math.Max(tn, Math.Min(t0, t1));
+      tf = Math.Min(tf, Math.Max(t0, t1));
+
+      // Visit boxes overlapping [0, best]; "≤ best" keeps equal-T ties for the depth-first order rule.
+      if (tn <= tf && tf >= 0.0 && tn <= q.BestT)
+      {
+        if (n.Count > 0)
+        {
+          int end = n.Index + n.Count;
+          for (int k = n.Index; k < end; k++)
+            if (!TestMember(items[k], ref q, p0, p1))
+              return false;
+        }
+        else
+        {
+          // Near child first (by the ray's sign along the split axis).
+          bool negative = n.Axis == 0 ? dx < 0.0 : n.Axis == 1 ? dy < 0.0 : dz < 0.0;
+          int left = ni + 1, right = n.Index;
+          if (negative)
+          {
+            stack[sp++] = left;
+            ni = right;
+          }
+          else
+          {
+            stack[sp++] = right;
+            ni = left;
+          }
+          continue;
+        }
+      }
+      if (sp == 0)
+        return true;
+      ni = stack[--sp];
+    }
+  }
+
+  /// <summary>Tests one member; false when the fast rule does not apply to this ray.</summary>
+  bool TestMember(int index, ref Query q, in Vector3d p0, in Vector3d p1)
+  {
+    ref PreparedMember m = ref members[index];
+    Vector3d lp0 = p0, lp1 = p1;
+    ToLocal(m, ref lp0, ref lp1);
+
+    if (m.Fast != null)
+    {
+      bool has = m.Fast.IntersectFirst(lp0, lp1, q.Len2, out FastHit h, out bool inside);
+      if (inside || (has && !h.Enter))
+        return false;
+      if (has && (h.T < q.BestT || (h.T == q.BestT && index < q.BestIndex)))
+      {
+        q.BestT = h.T;
+        q.BestIndex = index;
+        q.BestHit = h;
+        q.BestList = null;
+      }
+      return true;
+    }
+
+    // A leaf answering through the LinkedList API (allocates; always correct).
+    LinkedList<Intersection>? list = m.Node.Intersect(lp0, lp1);
+    if (list == null || list.First == null)
+      return true;
+    bool state = !list.First.Value.Enter;
+    foreach (Intersection i in list)
+    {
+      if (i.T > 0.0 && i.T * i.T * q.Len2 > Intersection.RAY_EPSILON2)
+      {
+        if (state || !i.Enter)
+          return false;
+        if (i.T < q.BestT || (i.T == q.BestT && index < q.BestIndex))
+        {
+          q.BestT = i.T;
+          q.BestIndex = index;
+          q.BestList = i;
+        }
+        return true;
+      }
+      state = i.Enter;
+    }
+    return !state;
+  }
+}
