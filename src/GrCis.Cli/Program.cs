@@ -87,6 +87,7 @@ public static class Program
     var root = new RootCommand("grcis: the GrCis ray tracer on .NET")
     {
       new RenderCommand().Build(env),
+      new AnimateCommand().Build(env),
       ListCommand.Build(env),
     };
     return root;
