@@ -46,10 +46,10 @@ scene.Sources.Add(new PointLightSource(new Vector3d(-4.0, 5.0, -3.0), 1.1));
 
 // --- NODE DEFINITIONS ----------------------------------------------------
 
-// The vase: the mesh is an open surface, so it is treated as a thin shell.
+// The vase (an open surface: the rim is not capped).
 TriangleMesh vase = new TriangleMesh(brep);
 vase.Smooth = smooth;
-vase.ShellMode = true;
+vase.ShellMode = false;
 PhongMaterial pm;
 switch (mat)
 {
