@@ -69,6 +69,11 @@ public sealed class AnimationPlan
     return new AnimationPlan(timeline, range, shard, list);
   }
 
+  /// <summary>The range a scene script put in its context (Start, End, Fps), as <see cref="ISceneTiming"/>.</summary>
+  public static ISceneTiming TimingOf(GrCis.Scripting.ScriptScene script) => new ScriptTiming(script.Start, script.End, script.Fps);
+
+  sealed record ScriptTiming(double? Start, double? End, double? Fps) : ISceneTiming;
+
   static string Num(double x) => x.ToString("0.###", CultureInfo.InvariantCulture);
 
   static string FirstSentence(string message)

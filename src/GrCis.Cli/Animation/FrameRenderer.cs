@@ -17,18 +17,24 @@ public sealed class FrameRenderer
 {
   readonly IRayScene scene;
   readonly bool animated;
+  readonly FrameParts parts;
 
-  public FrameRenderer(IRayScene scene, RenderSettings settings, AnimationTimeline timeline, double shutter = 0.0)
+  public FrameRenderer(IRayScene scene, RenderSettings settings, AnimationTimeline timeline, double shutter = 0.0, FrameParts? parts = null)
   {
     ArgumentNullException.ThrowIfNull(scene);
     ArgumentNullException.ThrowIfNull(settings);
     ArgumentNullException.ThrowIfNull(timeline);
-    this.scene = SceneAnimation.AsTimeDependent(scene);
+    this.parts = parts ?? new FrameParts(settings);
+    // The script's own objects may be bound to its scene: keep that very scene (no wrapper, no clones).
+    this.scene = this.parts.Sequential ? scene : SceneAnimation.AsTimeDependent(scene);
     animated = SceneCloner.IsTimeDependent(this.scene);
     Settings = settings;
     Timeline = timeline;
     Shutter = shutter;
   }
+
+  /// <summary>True when frames must render one after another (the script's own objects are not copyable).</summary>
+  public bool Sequential => parts.Sequential;
 
   public RenderSettings Settings { get; }
 
@@ -41,7 +47,7 @@ public sealed class FrameRenderer
   public bool IsAnimated => animated;
 
   /// <summary>A scene for one frame worker: its own clone of the moving parts, the rest shared read-only.</summary>
-  public IRayScene CreateWorkerScene() => SceneCloner.CloneForWorker(scene);
+  public IRayScene CreateWorkerScene() => parts.Sequential ? scene : SceneCloner.CloneForWorker(scene);
 
   /// <summary>Renders frame <paramref name="frame"/> on <paramref name="workerScene"/> (from <see cref="CreateWorkerScene"/>).</summary>
   public FloatImage Render(IRayScene workerScene, int frame, int threads, Action<RenderProgress>? progress, CancellationToken cancel)
@@ -50,22 +56,12 @@ public sealed class FrameRenderer
     if (animated && workerScene is ITimeDependent moving)
       moving.Time = time;
 
-    IImageFunction function;
-    if (Shutter > 0.0 && animated)
-    {
-      // The inner function renders the worker's own clone (MT.scene), which the blur moves per sample.
-      var inner = new RayTracing
-      {
-        DoShadows = Settings.Shadows,
-        DoReflections = Settings.Reflections,
-        DoRefractions = Settings.Refractions,
-      };
-      function = new MotionBlurImageFunction(inner) { FrameTime = time, Shutter = Shutter, Fps = Timeline.Fps };
-    }
-    else
-      function = RenderJob.CreateImageFunction(workerScene, Settings);
-
-    ImageSynthesizer synthesizer = RenderJob.CreateSynthesizer(Settings);
+    // With a shutter the inner function renders the worker's own clone (MT.scene), which the blur moves per sample.
+    bool blur = Shutter > 0.0 && animated && !parts.Sequential;
+    IImageFunction function = parts.CreateFunction(blur ? null : workerScene);
+    if (blur)
+      function = new MotionBlurImageFunction(function) { FrameTime = time, Shutter = Shutter, Fps = Timeline.Fps };
+    ImageSynthesizer synthesizer = parts.CreateSynthesizer();
     var options = new RenderOptions { Threads = threads, Seed = Settings.Seed, Frame = frame };
     return TileRenderer.Render(workerScene, function, synthesizer, options, progress, cancel);
   }

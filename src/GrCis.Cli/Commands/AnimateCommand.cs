@@ -6,7 +6,7 @@ using GrCis.Cli.Animation;
 using GrCis.Cli.Jobs;
 using GrCis.Cli.ProgressViews;
 using GrCis.Cli.SceneSources;
-using Rendering;
+using GrCis.Scripting;
 
 namespace GrCis.Cli.Commands;
 
@@ -71,6 +71,7 @@ public sealed class AnimateCommand
   readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
 
   readonly RenderOptionSet render = new();
+  readonly ScriptOptions scriptOptions = new();
 
   public Command Build(CliEnvironment env)
   {
@@ -79,6 +80,7 @@ public sealed class AnimateCommand
       scene, output, from, to, fps, frames, shard, resume, video, shutter, parallel,
     };
     render.AddTo(cmd);
+    scriptOptions.AddTo(cmd, withTime: false);
     cmd.Options.Add(quiet);
     cmd.SetAction(parse => Execute(parse, env));
     return cmd;
@@ -105,11 +107,19 @@ public sealed class AnimateCommand
     if (videoPath != null && Path.GetExtension(videoPath).Length < 2)
       throw new UsageException($"--video '{parse.GetValue(video)}' has no extension; e.g. out.mp4 (ffmpeg picks the container from it)");
 
-    ISceneSource source = ResolveScene(env, parse.GetValue(scene));
-    IRayScene sc = source.CreateScene();
-    AnimationPlan plan = AnimationPlan.Create(parse.GetValue(from), parse.GetValue(to), parse.GetValue(fps), source as ISceneTiming, sc, range, part);
+    ISceneSource source = ResolveScene(env, parse, parse.GetValue(scene));
+    using var scriptHost = source as IDisposable;
 
-    if (settings.SamplesPerPixel > 1 && settings.EffectiveSamplesPerPixel != settings.SamplesPerPixel)
+    // The script runs once (its preprocessing too); every frame renders a clone of its scene.
+    // Command line, then the script's context values (size, spp, range, …), then the defaults.
+    SceneSetup setup = SceneSetup.Create(source, settings, render.Given(parse), null);
+    settings = setup.Settings;
+    foreach (string note in setup.Notes)
+      env.Error.WriteLine("grcis: note: " + note);
+    ISceneTiming? timing = setup.Script is { } run ? AnimationPlan.TimingOf(run) : source as ISceneTiming;
+    AnimationPlan plan = AnimationPlan.Create(parse.GetValue(from), parse.GetValue(to), parse.GetValue(fps), timing, setup.Scene, range, part);
+
+    if (setup.Synthesizer == null && settings.SamplesPerPixel > 1 && settings.EffectiveSamplesPerPixel != settings.SamplesPerPixel)
       env.Error.WriteLine($"grcis: note: --spp {settings.SamplesPerPixel} rounded up to {settings.EffectiveSamplesPerPixel} (a square grid)");
 
     var store = new FrameStore(pattern, settings.Size, settings.Gamma);
@@ -123,27 +133,40 @@ public sealed class AnimateCommand
     }
     int skipped = plan.Frames.Count - todo.Count;
 
-    var renderer = new FrameRenderer(sc, settings, plan.Timeline, open);
-    if (open > 0.0 && !renderer.IsAnimated)
-      env.Error.WriteLine("grcis: note: --shutter has no effect: nothing in this scene moves");
+    var parts = new FrameParts(settings, setup.ImageFunction, setup.Synthesizer);
+    var renderer = new FrameRenderer(setup.Scene, settings, plan.Timeline, open, parts);
+    foreach (string note in parts.Notes())
+      env.Error.WriteLine("grcis: note: " + note);
+    if (open > 0.0 && (!renderer.IsAnimated || renderer.Sequential))
+      env.Error.WriteLine("grcis: note: --shutter has no effect: " +
+        (renderer.Sequential ? "the script's own image function renders its scene at one time per frame" : "nothing in this scene moves"));
     int threads = settings.Threads > 0 ? settings.Threads : Environment.ProcessorCount;
-    ParallelMode mode = FrameScheduler.Choose(requested, settings.Size, threads, todo.Count);
+    ParallelMode mode = renderer.Sequential ? ParallelMode.Tiles : FrameScheduler.Choose(requested, settings.Size, threads, todo.Count);
     var scheduler = new FrameScheduler(renderer, store);
 
     IAnimationProgressView view = parse.GetValue(quiet) ? new SilentAnimationProgressView()
       : env.Interactive ? new SpectreAnimationProgressView(env.Error)
       : new PlainAnimationProgressView(env.Error);
     var clock = System.Diagnostics.Stopwatch.StartNew();
-    int saved = view.Run($"animate {source.DisplayName}", plan.Frames.Count, skipped, report =>
+    int saved;
+    try
     {
-      int done = skipped, rendered = 0;
-      return scheduler.Run(todo, mode, threads, k =>
+      saved = view.Run($"animate {source.DisplayName}", plan.Frames.Count, skipped, report =>
       {
-        done++;
-        rendered++;
-        report(new AnimationProgress(done, plan.Frames.Count, rendered, clock.Elapsed, k));
-      }, env.Cancel);
-    });
+        int done = skipped, rendered = 0;
+        return scheduler.Run(todo, mode, threads, k =>
+        {
+          done++;
+          rendered++;
+          report(new AnimationProgress(done, plan.Frames.Count, rendered, clock.Elapsed, k));
+        }, env.Cancel);
+      });
+    }
+    catch (Exception e) when (source is ScriptSceneSource script && script.WithScriptLine(e.InnerException ?? e) is ScriptRuntimeException located)
+    {
+      // A class declared in the script (texture, camera, solid) threw while rendering: name its line.
+      throw located;
+    }
     clock.Stop();
 
     if (env.Cancel.IsCancellationRequested)
@@ -170,11 +193,11 @@ public sealed class AnimateCommand
     return ExitCodes.Success;
   }
 
-  static ISceneSource ResolveScene(CliEnvironment env, string? spec)
+  ISceneSource ResolveScene(CliEnvironment env, ParseResult parse, string? spec)
   {
     if (spec != null && env.ExtraScenes?.Invoke(spec) is ISceneSource extra)
       return extra;
-    return new SceneResolver(env.WorkingDirectory).Resolve(spec);
+    return scriptOptions.Resolve(parse, spec, env);
   }
 
   static ParallelMode ParseParallel(string text) => text.Trim().ToLowerInvariant() switch

@@ -53,6 +53,18 @@ public sealed class RenderOptionSet
       command.Options.Add(o);
   }
 
+  /// <summary>Which options the user typed (they win over a scene script's context values).</summary>
+  public ExplicitOptions Given(ParseResult parse) => new(
+    Size: IsGiven(parse, size),
+    SamplesPerPixel: IsGiven(parse, spp),
+    Jitter: IsGiven(parse, jitter),
+    Gamma: IsGiven(parse, gamma),
+    NoShadows: parse.GetValue(noShadows),
+    NoReflections: parse.GetValue(noReflections),
+    NoRefractions: parse.GetValue(noRefractions));
+
+  static bool IsGiven(ParseResult parse, Option option) => parse.GetResult(option) is { Implicit: false };
+
   /// <exception cref="UsageException">A value outside its allowed range.</exception>
   public RenderSettings Read(ParseResult parse) => new RenderSettings
   {
