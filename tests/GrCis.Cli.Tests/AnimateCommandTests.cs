@@ -191,6 +191,23 @@ public class AnimateCommandTests
   }
 
   [Theory]
+  [InlineData("frames")]
+  [InlineData("tiles")]
+  public void A_scene_that_throws_fails_the_run_with_one_line_and_keeps_earlier_frames(string mode)
+  {
+    using var dir = new TempDirectory();
+    CliRun run = AnimateRun.Of(dir.Path, "animate", "test-broken", "--to", "4", "--fps", "1", "--size", "8x8",
+      "-o", "f/b#.png", "--parallel", mode, "--threads", "2", "-q");
+    Assert.Equal(1, run.ExitCode);
+    Assert.Equal("grcis: error: render failed: the background broke at t = 2", run.Error.Trim());
+    Assert.Equal("", run.Out);
+    string[] files = Directory.GetFiles(dir.File("f")).Select(Path.GetFileName).ToArray()!;
+    Assert.Contains("b0.png", files);
+    Assert.DoesNotContain("b2.png", files);
+    Assert.DoesNotContain(files, f => f!.Contains(".tmp-"));
+  }
+
+  [Theory]
   [InlineData("--shard", "3/3", "invalid --shard '3/3': the index runs from 0 to 2")]
   [InlineData("--shard", "x", "invalid --shard 'x': expected INDEX/COUNT, e.g. 0/4 (index from 0)")]
   [InlineData("--frames", "5-2", "invalid --frames '5-2': the last frame comes before the first")]

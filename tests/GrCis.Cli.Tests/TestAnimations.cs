@@ -24,6 +24,22 @@ internal static class TestAnimations
     }
   }
 
+  /// <summary>Like <see cref="TimeBackground"/>, but throws from 2 s on (a scene that fails mid-animation).</summary>
+  sealed class BrokenBackground : IBackground, ITimeDependent
+  {
+    public double Start { get; set; }
+    public double End { get; set; } = 10;
+    public double Time { get; set; }
+    public object Clone() => MemberwiseClone();
+    public long GetColor(Vector3d p1, double[] color)
+    {
+      if (Time >= 2.0)
+        throw new InvalidOperationException($"the background broke at t = {Time}");
+      color[0] = color[1] = color[2] = 0.5;
+      return 1;
+    }
+  }
+
   /// <summary>Scene source with an optional script-like range (<see cref="ISceneTiming"/>).</summary>
   sealed class Source : ISceneSource, ISceneTiming
   {
@@ -87,6 +103,12 @@ internal static class TestAnimations
     // The same scene whose "script" asks for 2 to 3 s at 4 fps.
     "test-clock-script" => new Source("test-clock-script", Clock, start: 2.0, end: 3.0, fps: 4.0),
     "test-moving" => new Source("test-moving", MovingSphere),
+    "test-broken" => new Source("test-broken", () =>
+    {
+      var sc = (AnimatedRayScene)Clock();
+      sc.Background = new BrokenBackground();
+      return sc;
+    }),
     _ => null,
   };
 }

@@ -102,7 +102,8 @@ public sealed class FrameScheduler
         {
           int k = frames[i];
           FloatImage image = renderer.Render(scene, k, 1, null, cancel);
-          if (cancel.IsCancellationRequested || Volatile.Read(ref failure) != null)
+          // A frame cut short by Ctrl+C is incomplete; one finished while another worker failed is kept.
+          if (cancel.IsCancellationRequested)
             break;
           store.Save(k, image);
           lock (sync)
