@@ -223,6 +223,22 @@ public class ScriptCommandTests
   }
 
   [Fact]
+  public void Script_time_is_the_default_and_the_time_option_overrides_it()
+  {
+    using var dir = new TempDirectory();
+    // Orbit.cs with a Time of its own.
+    string script = Write(dir, "OrbitAt.cs", File.ReadAllText(RepoPaths.Script("Orbit.cs")) + "\ncontext[PropertyName.CTX_TIME] = 2.5;\n");
+    string orbit = RepoPaths.Script("Orbit.cs");
+    Assert.Equal(0, CliRun.Of(dir.Path, "render", script, "--size", "40x30", "-o", "script.png", "-q").ExitCode);
+    Assert.Equal(0, CliRun.Of(dir.Path, "render", orbit, "--time", "2.5", "--size", "40x30", "-o", "at25.png", "-q").ExitCode);
+    Assert.Equal(0, CliRun.Of(dir.Path, "render", script, "--time", "0.5", "--size", "40x30", "-o", "override.png", "-q").ExitCode);
+    Assert.Equal(0, CliRun.Of(dir.Path, "render", orbit, "--time", "0.5", "--size", "40x30", "-o", "at05.png", "-q").ExitCode);
+
+    Assert.Equal(PngFile.Load(dir.File("at25.png")).Data, PngFile.Load(dir.File("script.png")).Data);
+    Assert.Equal(PngFile.Load(dir.File("at05.png")).Data, PngFile.Load(dir.File("override.png")).Data);
+  }
+
+  [Fact]
   public void Time_option_on_a_still_scene_is_noted_and_ignored()
   {
     using var dir = new TempDirectory();
