@@ -72,9 +72,9 @@ floor.SetAttribute(PropertyName.TEXTURE, new CheckerTexture(0.5, 0.5, new double
 root.InsertChild(floor, Matrix4d.RotateX(-MathHelper.PiOver2) * Matrix4d.CreateTranslation(0.0, -1.0, 0.0));
 
 Plane wall = new Plane();
-wall.SetAttribute(PropertyName.COLOR, new double[] { 0.5, 0.1, 0.0 });
-wall.SetAttribute(PropertyName.TEXTURE, new CheckerTexture(0.4, 0.4, new double[] { 1.0, 0.9, 0.6 }));
-root.InsertChild(wall, Matrix4d.RotateY(Math.PI) * Matrix4d.CreateTranslation(0.0, 0.0, 5.0));
+wall.SetAttribute(PropertyName.COLOR, new double[] { 0.35, 0.05, 0.0 });
+wall.SetAttribute(PropertyName.TEXTURE, new CheckerTexture(0.7, 0.7, new double[] { 0.7, 0.6, 0.4 }));
+root.InsertChild(wall, Matrix4d.RotateY(Math.PI) * Matrix4d.CreateTranslation(0.0, 0.0, 8.0));
 
 PhongMaterial Glass(double[] tint)
 {
