@@ -12,7 +12,7 @@ public sealed class OrbitBaseline : IDisposable
 {
   /// <summary>scripts/Orbit.cs, 49 frames of 96x72 with 4 samples per pixel: a few seconds, long enough to interrupt.</summary>
   public static readonly string[] Args =
-    { "animate", Path.Combine(RepoRoot.Path, "scripts", "Orbit.cs"), "--size", "96x72", "--spp", "4", "--seed", "11" };
+    { "animate", RepoPaths.Script("Orbit.cs"), "--size", "96x72", "--spp", "4", "--seed", "11" };
 
   readonly TempDirectory dir = new();
 

@@ -87,7 +87,7 @@ public class AnimateScriptTests
   [Fact]
   public void Orbit_script_with_a_shutter_is_blurred_and_deterministic()
   {
-    string orbit = Path.Combine(RepoRoot.Path, "scripts", "Orbit.cs");
+    string orbit = RepoPaths.Script("Orbit.cs");
     using var dir = new TempDirectory();
     string[] common = { "animate", orbit, "--frames", "5", "--size", "48x36", "--spp", "9", "-q" };
     Assert.Equal(0, CliRun.Of(dir.Path, [.. common, "-o", "sharp/o#.png"]).ExitCode);

@@ -49,11 +49,32 @@ public class AnimationPartsTests
 
   [Theory]
   [InlineData(ParallelMode.Auto, 160, 120, 2, 10, ParallelMode.Frames)]
-  [InlineData(ParallelMode.Auto, 640, 480, 2, 10, ParallelMode.Tiles)]
+  [InlineData(ParallelMode.Auto, 640, 480, 2, 10, ParallelMode.Frames)]
+  [InlineData(ParallelMode.Auto, 641, 480, 2, 10, ParallelMode.Tiles)]
+  [InlineData(ParallelMode.Auto, 1920, 1080, 8, 100, ParallelMode.Tiles)]
   [InlineData(ParallelMode.Auto, 160, 120, 1, 10, ParallelMode.Tiles)]
   [InlineData(ParallelMode.Auto, 160, 120, 2, 1, ParallelMode.Tiles)]
   [InlineData(ParallelMode.Frames, 640, 480, 2, 10, ParallelMode.Frames)]
   [InlineData(ParallelMode.Tiles, 16, 16, 2, 10, ParallelMode.Tiles)]
   public void Auto_parallelism_chooses_frames_for_small_frames(ParallelMode asked, int w, int h, int threads, int frames, ParallelMode chosen) =>
     Assert.Equal(chosen, FrameScheduler.Choose(asked, new ImageSize(w, h), threads, frames));
+
+  [Theory]
+  [InlineData(ParallelMode.Frames, 3, 7)]
+  [InlineData(ParallelMode.Frames, 2, 1)]
+  [InlineData(ParallelMode.Tiles, 2, 5)]
+  public void Scheduler_saves_every_frame_once_in_either_mode(ParallelMode mode, int threads, int count)
+  {
+    using var dir = new TempDirectory();
+    var size = new ImageSize(6, 4);
+    var store = new FrameStore(FramePattern.Parse("f##.png", dir.Path), size, 1.0);
+    store.Prepare();
+    var renderer = new FrameRenderer(TestAnimations.Clock(), new RenderSettings { Size = size }, new Rendering.AnimationTimeline(0, 10, 1));
+    var saved = new System.Collections.Generic.List<int>();
+    int n = new FrameScheduler(renderer, store).Run(Enumerable.Range(2, count).ToList(), mode, threads, saved.Add, default);
+
+    Assert.Equal(count, n);
+    Assert.Equal(Enumerable.Range(2, count), saved.Order());
+    Assert.All(Enumerable.Range(2, count), k => Assert.True(store.IsComplete(k)));
+  }
 }

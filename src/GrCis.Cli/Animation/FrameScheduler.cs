@@ -10,7 +10,8 @@ namespace GrCis.Cli.Animation;
 
 /// <summary>
 /// Renders a list of frames on the cores, in one of two ways: several frames at once, each on one
-/// thread (<see cref="ParallelMode.Frames"/>), or one frame at a time with its tiles on every thread
+/// thread (<see cref="ParallelMode.Frames"/>; the last frames, fewer than the threads, go one at a
+/// time on all threads), or one frame at a time with its tiles on every thread
 /// (<see cref="ParallelMode.Tiles"/>). Each finished frame is saved at once (atomically), so an
 /// interrupted run keeps every frame it finished. Both ways give the same bytes: a pixel's
 /// randomness comes from (seed, frame, pixel), never from the thread that rendered it.
@@ -19,10 +20,12 @@ public sealed class FrameScheduler
 {
   /// <summary>
   /// Frames up to this many pixels render frames-in-parallel under <see cref="ParallelMode.Auto"/>;
-  /// larger ones tiles-in-parallel. Measured on 2 cores (docs/animation.md): small frames gain from
-  /// frames in parallel (no per-frame start-up and tail on idle cores), large ones gain nothing.
+  /// larger ones tiles-in-parallel. Measured on 2 cores (docs/animation.md): from 80x60 to 640x480
+  /// frames in parallel was as fast or faster (tiles in parallel idles a core while a frame is
+  /// prepared, encoded and flushed to disk, and while its last tiles finish); above that the gain
+  /// shrinks with the frame, and one frame at a time keeps memory and the time to each frame low.
   /// </summary>
-  public const long FramesInParallelMaxPixels = 320 * 240;
+  public const long FramesInParallelMaxPixels = 640 * 480;
 
   readonly FrameRenderer renderer;
   readonly FrameStore store;
@@ -59,9 +62,24 @@ public sealed class FrameScheduler
     if (frames.Count == 0)
       return 0;
     threads = Math.Max(1, threads);
-    return mode == ParallelMode.Frames && threads > 1 && frames.Count > 1
-      ? RunFramesInParallel(frames, Math.Min(threads, frames.Count), frameSaved, cancel)
-      : RunTilesInParallel(frames, threads, frameSaved, cancel);
+    if (mode == ParallelMode.Tiles || threads == 1 || frames.Count < threads)
+      return RunTilesInParallel(frames, threads, frameSaved, cancel);
+
+    // Frames in parallel, except the last few that cannot keep every thread busy: those go one at a
+    // time on all threads, so no core idles at the end.
+    int bulk = frames.Count - frames.Count % threads;
+    int saved = RunFramesInParallel(Slice(frames, 0, bulk), threads, frameSaved, cancel);
+    if (bulk < frames.Count && !cancel.IsCancellationRequested)
+      saved += RunTilesInParallel(Slice(frames, bulk, frames.Count - bulk), threads, frameSaved, cancel);
+    return saved;
+  }
+
+  static List<int> Slice(IReadOnlyList<int> frames, int start, int count)
+  {
+    var list = new List<int>(count);
+    for (int i = start; i < start + count; i++)
+      list.Add(frames[i]);
+    return list;
   }
 
   int RunTilesInParallel(IReadOnlyList<int> frames, int threads, Action<int> frameSaved, CancellationToken cancel)
