@@ -244,4 +244,14 @@ public class AnimateCommandTests
     Assert.Equal(2, run.ExitCode);
     Assert.Contains("--resume --video", run.Error);
   }
+
+  [Fact]
+  public void Video_into_a_missing_folder_fails_before_rendering()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = AnimateRun.Of(dir.Path, "animate", "test-clock", "-o", "f#.png", "--size", "4x4", "--video", "no/v.mp4");
+    Assert.Equal(1, run.ExitCode);
+    Assert.Equal($"grcis: error: cannot write video '{dir.File("no/v.mp4")}': directory '{dir.File("no")}' does not exist", run.Error.Trim());
+    Assert.Empty(dir.AllFiles());
+  }
 }

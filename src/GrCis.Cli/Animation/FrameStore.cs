@@ -60,8 +60,9 @@ public sealed class FrameStore
       Rgb8Image image = PngFile.Load(file);
       return image.Width == size.Width && image.Height == size.Height;
     }
-    catch (Exception e) when (e is InvalidDataException or IOException or UnauthorizedAccessException)
+    catch (Exception e) when (e is not OutOfMemoryException)
     {
+      // Whatever a damaged file makes the decoder throw, the frame is not complete: render it again.
       return false;
     }
   }

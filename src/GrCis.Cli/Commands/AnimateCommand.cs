@@ -107,6 +107,9 @@ public sealed class AnimateCommand
     if (videoPath != null && Path.GetExtension(videoPath).Length < 2)
       throw new UsageException($"--video '{parse.GetValue(video)}' has no extension; e.g. out.mp4 (ffmpeg picks the container from it)");
 
+    if (videoPath != null && !Directory.Exists(Path.GetDirectoryName(videoPath)))
+      throw new CliFailure($"cannot write video '{videoPath}': directory '{Path.GetDirectoryName(videoPath)}' does not exist");
+
     ISceneSource source = ResolveScene(env, parse, parse.GetValue(scene));
     using var scriptHost = source as IDisposable;
 
