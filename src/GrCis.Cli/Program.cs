@@ -58,6 +58,10 @@ public static class Program
       };
       return parse.Invoke(config);
     }
+    catch (Exception e) when (ScriptErrors.Handles(e))
+    {
+      return ScriptErrors.Report(e, env);
+    }
     catch (UsageException e)
     {
       return Fail(env, ExitCodes.Usage, e.Message);
@@ -88,6 +92,7 @@ public static class Program
     {
       new RenderCommand().Build(env),
       ListCommand.Build(env),
+      new InfoCommand().Build(env),
     };
     return root;
   }
