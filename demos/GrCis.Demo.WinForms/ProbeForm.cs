@@ -1,3 +1,4 @@
+using System;
 using System.Drawing;
 using System.Windows.Forms;
 using GrCis.Interactive;
@@ -14,7 +15,7 @@ sealed class ProbeForm : Form
     ReadOnly = true,
     WordWrap = false,
     ScrollBars = ScrollBars.Both,
-    Font = new Font(FontFamily.GenericMonospace, 9f),
+    Font = MonospaceFont(),
   };
 
   public ProbeForm()
@@ -24,6 +25,19 @@ sealed class ProbeForm : Form
     StartPosition = FormStartPosition.Manual;
     ShowInTaskbar = false;
     Controls.Add(text);
+  }
+
+  static Font MonospaceFont()
+  {
+    try
+    {
+      return new Font(FontFamily.GenericMonospace, 9f);
+    }
+    catch (ArgumentException)
+    {
+      // No monospace font installed (seen under Wine without fonts): the default font still reads.
+      return Control.DefaultFont;
+    }
   }
 
   public void Show(ProbeResult probe)
