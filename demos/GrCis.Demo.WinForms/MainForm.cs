@@ -136,7 +136,7 @@ sealed class MainForm : Form
     extra.Click += async (_, _) => await ShowExtraViewsAsync();
     rays.Click += (_, _) => ProbeWindow().Show(this);
     view.PixelClicked += (_, e) => Probe(e.X, e.Y);
-    animation.FrameShown += (_, e) => view.Image = BitmapConversion.ToBitmap(Rendering.Execution.RenderSetup.ToDisplayImage(e.Image));
+    animation.FrameShown += (_, e) => view.Image = BitmapConversion.ToBitmap(Rendering.Execution.RenderSetup.ToDisplayImage(e.Image, controller.Settings.Gamma));
 
     clock.Tick += (_, _) => elapsed.Text = FormatElapsed(renderTime.Elapsed);
   }
