@@ -319,7 +319,10 @@ sealed class MainForm : Form
   {
     if (probeWindow == null || probeWindow.IsDisposed)
     {
-      probeWindow = new ProbeForm { Location = new Point(Right, Top) };
+      // Beside the main window, but on the screen.
+      Rectangle screen = Screen.FromControl(this).WorkingArea;
+      probeWindow = new ProbeForm();
+      probeWindow.Location = new Point(Math.Max(screen.Left, Math.Min(Right, screen.Right - probeWindow.Width)), Top);
       probeWindow.FormClosing += (_, e) =>
       {
         // Keep the window for the next click; closing just hides it.
