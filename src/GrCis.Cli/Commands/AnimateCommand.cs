@@ -63,7 +63,7 @@ public sealed class AnimateCommand
 
   readonly Option<string> parallel = new("--parallel")
   {
-    Description = "auto: frames in parallel for small frames, else tiles; frames: N frames at once, one thread each; tiles: one frame at a time on all threads",
+    Description = "auto: frames in parallel up to 640x480 pixels, else tiles (measured, docs/animation.md); frames: N frames at once, one thread each; tiles: one frame at a time on all threads",
     HelpName = "auto|frames|tiles",
     DefaultValueFactory = _ => "auto",
   };
