@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -39,6 +40,48 @@ public class CylinderFront : Cylinder
     }
     return result;
   }
+
+  // ---------------------------------------------------------------- fast path (same Span, same records)
+
+  public override bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(CylinderFront));
+
+  /// <summary>Without the shell the list ends inside; the shell's exit may lie just outside the box: open.</summary>
+  public override bool IsClosed => false;
+
+  public override bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    if (!Span(p0, p1, out double t, out int capIn, out _, out _) || capIn != 0)
+      return false;
+    if (SolidSupport.Accepted(t, len2))
+    {
+      hit = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
+      return true;
+    }
+    insideBefore = true;
+    if (!shell)
+      return false;
+    double t2 = t + Intersection.SHELL_THICKNESS;
+    if (!SolidSupport.Accepted(t2, len2))
+    {
+      insideBefore = false;
+      return false;
+    }
+    hit = new FastHit { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
+    return true;
+  }
+
+  public override Intersection CreateIntersection(in FastHit hit) =>
+    new(this)
+    {
+      T = hit.T,
+      Enter = hit.Enter,
+      Front = hit.Front,
+      CoordLocal = hit.CoordLocal,
+      NormalLocal = new Vector3d(hit.CoordLocal.X, hit.CoordLocal.Y, 0.0),
+      SolidData = hit.Aux,
+    };
 
   public override void CompleteIntersection(Intersection inter)
   {
