@@ -73,4 +73,32 @@ public class AllocationTests
     // Up to ~1.3 hits per pixel here (primary + ks-weighted reflections); 768 B per hit.
     Assert.True(perPixel <= 2 * 768, $"{perPixel:F1} B/pixel");
   }
+
+  [Fact]
+  public void Real_solids_flake_and_classic_five_balls_allocate_only_per_hit()
+  {
+    var flake = new DefaultRayScene();
+    global::Rendering.Scenes.SphereFlake9(flake, 2);
+    double perPixel = BytesPerPixel(flake, new RayTracing(flake), 300, 200, 16);
+    output.WriteLine($"real flake9 (reflections): {perPixel:F1} B/pixel");
+    Assert.True(perPixel <= 2 * 768, $"{perPixel:F1} B/pixel");
+
+    IRayScene balls = global::Rendering.Scenes.Create("Five balls");
+    var f = new RayTracing(balls) { DoReflections = false, DoRefractions = false };
+    perPixel = BytesPerPixel(balls, f, 312, 232, 16);
+    output.WriteLine($"real five balls, one hit: {perPixel:F1} B/pixel");
+    Assert.True(perPixel <= 768, $"{perPixel:F1} B/pixel");
+  }
+
+  [Fact]
+  public void Mesh_pixels_allocate_only_per_hit()
+  {
+    var sc = new DefaultRayScene();
+    global::Rendering.Scenes.MeshScene(sc, ProceduralMesh.Torus(100, 50));
+    var f = new RayTracing(sc) { DoReflections = false, DoRefractions = false };
+    double perPixel = BytesPerPixel(sc, f, 300, 220, 16);
+    output.WriteLine($"torus mesh, one hit: {perPixel:F1} B/pixel");
+    // The winning Intersection and colour copy plus the mesh's 40-byte hit record (triangle, barycentrics).
+    Assert.True(perPixel <= 768 + 64, $"{perPixel:F1} B/pixel");
+  }
 }
