@@ -88,6 +88,7 @@ public static class Program
     {
       new RenderCommand().Build(env),
       ListCommand.Build(env),
+      BenchCommand.Build(env),
     };
     return root;
   }

@@ -29,6 +29,7 @@ public static class RenderJob
     DoShadows = s.Shadows,
     DoReflections = s.Reflections,
     DoRefractions = s.Refractions,
+    Accel = s.Accel,
   };
 
   public static RenderResult Run(IRayScene scene, RenderSettings settings, Action<RenderProgress>? progress, CancellationToken cancel)
@@ -37,12 +38,10 @@ public static class RenderJob
     RayTracing function = CreateImageFunction(scene, settings);
     var options = new RenderOptions { Threads = settings.Threads, Seed = settings.Seed };
 
-    // Intersection.countRays is GrCis's global ray counter; the difference is this render's rays.
-    long rays0 = Interlocked.Read(ref Intersection.countRays);
     var clock = Stopwatch.StartNew();
     var image = TileRenderer.Render(scene, function, renderer, options, progress, cancel);
     clock.Stop();
-    long rays = Interlocked.Read(ref Intersection.countRays) - rays0;
+    long rays = TileRenderer.LastRenderRays;   // summed from per-thread counters, exact for this render
     return new RenderResult(image, renderer.SamplesPerPixel, clock.Elapsed, rays, cancel.IsCancellationRequested);
   }
 }

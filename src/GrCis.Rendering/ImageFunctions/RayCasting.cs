@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Runtime.CompilerServices;
 using OpenTK.Mathematics;
 using Rendering.Accel;
+using Rendering.Execution;
 
 namespace Rendering;
 
@@ -96,7 +97,7 @@ public class RayCasting : IImageFunction
   /// <summary>First hit of the ray, or null. Overridden by the prepared fast path.</summary>
   protected virtual Intersection? FirstHit(Vector3d p0, Vector3d p1)
   {
-    Intersection.countRays++;
+    RayCounter.CountRay();
     PreparedScene? ps = Prepared;
     if (ps != null)
       return ps.FirstHit(p0, p1);

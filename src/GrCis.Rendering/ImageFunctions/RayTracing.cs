@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using MathSupport;
 using OpenTK.Mathematics;
 using Rendering.Accel;
+using Rendering.Execution;
 
 namespace Rendering;
 
@@ -45,7 +46,7 @@ public class RayTracing : RayCasting
   /// <summary>True when something (not marked NO_SHADOW) lies between the point and the light at <c>p0 + dir</c>.</summary>
   protected virtual bool Occluded(Vector3d p0, Vector3d dir)
   {
-    Intersection.countRays++;
+    RayCounter.CountRay();
     PreparedScene? ps = Prepared;
     if (ps != null)
       return ps.Occluded(p0, dir);

@@ -156,7 +156,7 @@ public class Intersection : IComparable<Intersection>
     return d * d * p1.LengthSquared > RAY_EPSILON2;
   }
 
-  /// <summary>Number of primary and secondary rays cast (statistics; updated without locking).</summary>
+  /// <summary>Rays cast by finished renders (statistics): workers count per thread (<see cref="Execution.RayCounter"/>) and each render adds its total here when it ends.</summary>
   public static long countRays;
 
   /// <summary>Number of intersection queries (statistics).</summary>
