@@ -41,9 +41,10 @@ public static class BenchCommand
         throw new UsageException($"--mesh '{meshFile}': no such file");
       string[] filters = parse.GetValue(scene) ?? Array.Empty<string>();
 
+      IReadOnlyList<BenchCase> suite = BenchSuite.Create(parse.GetValue(quick), meshFile);
       var cases = new List<BenchCase>();
-      foreach (BenchCase c in BenchSuite.Create(parse.GetValue(quick), meshFile))
-        if (Matches(c, filters))
+      foreach (BenchCase c in suite)
+        if (Matches(c, filters, suite))
           cases.Add(c);
       if (cases.Count == 0)
         throw new UsageException($"--scene matched no bench case");
@@ -73,13 +74,20 @@ public static class BenchCommand
     return cmd;
   }
 
-  static bool Matches(BenchCase c, string[] filters)
+  /// <summary>A filter equal to a case id selects that case only; otherwise it matches ids and names containing it.</summary>
+  static bool Matches(BenchCase c, string[] filters, IReadOnlyList<BenchCase> suite)
   {
     if (filters.Length == 0)
       return true;
     foreach (string f in filters)
-      if (c.Id.Contains(f, StringComparison.OrdinalIgnoreCase) || c.Name.Contains(f, StringComparison.OrdinalIgnoreCase))
+    {
+      bool exact = false;
+      foreach (BenchCase other in suite)
+        exact |= other.Id.Equals(f, StringComparison.OrdinalIgnoreCase);
+      if (exact ? c.Id.Equals(f, StringComparison.OrdinalIgnoreCase)
+                : c.Id.Contains(f, StringComparison.OrdinalIgnoreCase) || c.Name.Contains(f, StringComparison.OrdinalIgnoreCase))
         return true;
+    }
     return false;
   }
 
