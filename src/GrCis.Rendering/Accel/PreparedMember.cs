@@ -24,6 +24,13 @@ internal struct PreparedMember
 
   public Aabb WorldBox;
 
+  /// <summary>Attributes resolved at prepare time (reflectance model and material found; else per hit).</summary>
+  public bool AttributesCached;
+  public IReflectanceModel? Model;
+  public IMaterial? Material;
+  public double[]? Color;
+  public System.Collections.Generic.LinkedList<ITexture>? Textures;
+
   // What Intersection.Complete() would compute (Solid.ToWorld(), its inverse, Solid.ToObject()).
   public Matrix4d LocalToWorld, WorldToLocal, LocalToObject;
 }

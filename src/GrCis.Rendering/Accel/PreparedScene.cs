@@ -178,6 +178,17 @@ public sealed class PreparedScene
       m.WorldToLocal = m.LocalToWorld.Inverted();
       m.LocalToObject = f.ToObject();
       m.NoShadow = f.GetLocalAttribute(PropertyName.NO_SHADOW) != null;
+
+      // The look-ups Intersection.CompleteWith does per hit, once (only when they do not create objects).
+      if (f.GetAttribute(PropertyName.REFLECTANCE_MODEL) is IReflectanceModel model &&
+          f.GetAttribute(PropertyName.MATERIAL) is IMaterial material)
+      {
+        m.AttributesCached = true;
+        m.Model = model;
+        m.Material = material;
+        m.Color = f.GetAttribute(PropertyName.COLOR) as double[] ?? material.Color;
+        m.Textures = f.GetTextures();
+      }
     }
 
     if (node is ISceneNode sn && TryClosedBox(sn, out Aabb local))
@@ -254,18 +265,46 @@ public sealed class PreparedScene
   /// The hit <see cref="Intersection.FirstIntersection"/> would pick from the scene's list, completed
   /// with cached matrices (list members' hits are left to <see cref="Intersection.Complete"/>), or null.
   /// </summary>
-  public Intersection? FirstHit(Vector3d p0, Vector3d p1)
+  public Intersection? FirstHit(Vector3d p0, Vector3d p1) => FirstHit(p0, p1, null);
+
+  /// <summary>
+  /// <see cref="FirstHit(Vector3d, Vector3d)"/> that fills <paramref name="reuse"/> (reset first) instead of
+  /// allocating, when the winner is a known solid; hits of list members are returned as listed.
+  /// </summary>
+  public Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse)
   {
     if (members.Length == 0)
       return null;
     double len2 = p1.LengthSquared;
     if (!union)
-      return FirstHitSingle(p0, p1, len2);
+      return FirstHitSingle(p0, p1, len2, reuse);
 
     var q = new Query { Len2 = len2, BestT = double.PositiveInfinity, BestIndex = int.MaxValue };
     if (!Closest(ref q, p0, p1))
       return FaithfulFirstHit(p0, p1);
-    return q.BestIndex == int.MaxValue ? null : Winner(ref q);
+    if (q.BestIndex == int.MaxValue)
+      return null;
+    return q.BestList ?? Complete(ref members[q.BestIndex], q.BestHit, reuse);
+  }
+
+  /// <summary>The record as an <see cref="Intersection"/>, completed from the member's cached matrices and attributes.</summary>
+  static Intersection Complete(ref PreparedMember m, in FastHit hit, Intersection? reuse)
+  {
+    IFastSolid f = m.Fast!;
+    Intersection i;
+    if (reuse != null)
+    {
+      reuse.Reset(f);
+      i = reuse;
+    }
+    else
+      i = new Intersection(f);
+    f.InitIntersection(hit, i);
+    if (m.AttributesCached)
+      i.CompleteCached(m.LocalToWorld, m.WorldToLocal, m.LocalToObject, m.Model!, m.Material!, m.Color, m.Textures);
+    else
+      i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
+    return i;
   }
 
   /// <summary>
@@ -318,16 +357,6 @@ public sealed class PreparedScene
     return si != null && !si.Far(1.0, ref dir);
   }
 
-  Intersection Winner(ref Query q)
-  {
-    if (q.BestList != null)
-      return q.BestList;
-    ref PreparedMember m = ref members[q.BestIndex];
-    Intersection i = m.Fast!.CreateIntersection(q.BestHit);
-    i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
-    return i;
-  }
-
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   void ToLocal(in PreparedMember m, ref Vector3d p0, ref Vector3d p1)
   {
@@ -352,7 +381,7 @@ public sealed class PreparedScene
     }
   }
 
-  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2)
+  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2, Intersection? reuse)
   {
     ref PreparedMember m = ref members[0];
     Vector3d lp0 = p0, lp1 = p1;
@@ -361,9 +390,7 @@ public sealed class PreparedScene
     {
       if (!m.Fast.IntersectFirst(lp0, lp1, len2, out FastHit h, out _))
         return null;
-      Intersection i = m.Fast.CreateIntersection(h);
-      i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
-      return i;
+      return Complete(ref m, h, reuse);
     }
     return Intersection.FirstIntersection(m.Node.Intersect(lp0, lp1), ref p1);
   }

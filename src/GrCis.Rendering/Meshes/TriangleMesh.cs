@@ -143,8 +143,14 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
     return false;
   }
 
-  public virtual Intersection CreateIntersection(in FastHit hit) =>
-    new(this) { T = hit.T, Enter = hit.Enter, Front = hit.Front, CoordLocal = hit.CoordLocal, SolidData = new HitData(hit.Data, hit.Aux.X, hit.Aux.Y) };
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.SolidData = new HitData(hit.Data, hit.Aux.X, hit.Aux.Y);
+  }
 
   public override void CompleteIntersection(Intersection inter)
   {

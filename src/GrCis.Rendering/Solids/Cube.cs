@@ -84,8 +84,14 @@ public class Cube : DefaultSceneNode, ISolid, IFastSolid
     return true;
   }
 
-  public virtual Intersection CreateIntersection(in FastHit hit) =>
-    new(this) { T = hit.T, Enter = hit.Enter, Front = hit.Front, CoordLocal = hit.CoordLocal, NormalLocal = FaceNormal(hit.Data) };
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = FaceNormal(hit.Data);
+  }
 
   /// <summary>Outward normal of face 2·axis (positive side) or 2·axis + 1 (negative side).</summary>
   static Vector3d FaceNormal(int face)

@@ -152,8 +152,14 @@ public class Cylinder : DefaultSceneNode, ISolid, IFastSolid
     return true;
   }
 
-  public virtual Intersection CreateIntersection(in FastHit hit) =>
-    new(this) { T = hit.T, Enter = hit.Enter, Front = hit.Front, CoordLocal = hit.CoordLocal, NormalLocal = RecordNormal(hit.CoordLocal, hit.Data) };
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = RecordNormal(hit.CoordLocal, hit.Data);
+  }
 
   public override void CompleteIntersection(Intersection inter)
   {

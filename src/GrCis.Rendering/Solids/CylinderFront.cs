@@ -72,16 +72,15 @@ public class CylinderFront : Cylinder
     return true;
   }
 
-  public override Intersection CreateIntersection(in FastHit hit) =>
-    new(this)
-    {
-      T = hit.T,
-      Enter = hit.Enter,
-      Front = hit.Front,
-      CoordLocal = hit.CoordLocal,
-      NormalLocal = new Vector3d(hit.CoordLocal.X, hit.CoordLocal.Y, 0.0),
-      SolidData = hit.Aux,
-    };
+  public override void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = new Vector3d(hit.CoordLocal.X, hit.CoordLocal.Y, 0.0);
+    target.SolidData = hit.Aux;
+  }
 
   public override void CompleteIntersection(Intersection inter)
   {

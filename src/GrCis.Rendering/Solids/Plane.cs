@@ -132,8 +132,14 @@ public class Plane : DefaultSceneNode, ISolid, IFastSolid
     return false;
   }
 
-  public virtual Intersection CreateIntersection(in FastHit hit) =>
-    new(this) { T = hit.T, Enter = hit.Enter, Front = hit.Front, CoordLocal = hit.CoordLocal, NormalLocal = Vector3d.UnitZ };
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = Vector3d.UnitZ;
+  }
 
   bool Inside(double x, double y)
   {

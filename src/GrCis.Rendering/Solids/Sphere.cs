@@ -59,8 +59,14 @@ public class Sphere : DefaultSceneNode, ISolid, IFastSolid
     return true;
   }
 
-  public virtual Intersection CreateIntersection(in FastHit hit) =>
-    new(this) { T = hit.T, Enter = hit.Enter, Front = hit.Front, CoordLocal = hit.CoordLocal, NormalLocal = hit.CoordLocal };
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = hit.CoordLocal;
+  }
 
   public override void CompleteIntersection(Intersection inter)
   {

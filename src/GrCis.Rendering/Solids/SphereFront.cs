@@ -66,8 +66,15 @@ public class SphereFront : Sphere
     return true;
   }
 
-  public override Intersection CreateIntersection(in FastHit hit) =>
-    new(this) { T = hit.T, Enter = hit.Enter, Front = hit.Front, CoordLocal = hit.CoordLocal, NormalLocal = hit.CoordLocal, SolidData = hit.Aux };
+  public override void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = hit.CoordLocal;
+    target.SolidData = hit.Aux;
+  }
 
   public override void CompleteIntersection(Intersection inter)
   {

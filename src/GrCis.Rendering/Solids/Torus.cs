@@ -95,8 +95,13 @@ public class Torus : DefaultSceneNode, ISolid, IFastSolid
     return false;
   }
 
-  public virtual Intersection CreateIntersection(in FastHit hit) =>
-    new(this) { T = hit.T, Enter = hit.Enter, Front = hit.Front, CoordLocal = hit.CoordLocal };
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+  }
 
   /// <summary>True when <paramref name="p0"/> lies on the surface (within rounding of a computed hit point).</summary>
   internal bool StartsOnSurface(Vector3d p0)
