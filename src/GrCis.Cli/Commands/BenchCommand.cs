@@ -4,6 +4,7 @@ using System.CommandLine;
 using System.Globalization;
 using System.Text.Json;
 using GrCis.Cli.Bench;
+using GrCis.Cli.Jobs;
 
 namespace GrCis.Cli.Commands;
 
@@ -24,11 +25,13 @@ public static class BenchCommand
     };
     var threads = new Option<int>("--threads", "-t") { Description = "Worker threads; 0 = one per processor", DefaultValueFactory = _ => 0 };
     var noSlow = new Option<bool>("--no-slow") { Description = "Skip the faithful path (no speedup column)" };
+    var size = new Option<string?>("--size", "-s") { Description = "Override every case's image size (WxH)", HelpName = "WxH" };
+    var spp = new Option<int?>("--spp") { Description = "Override every case's samples per pixel" };
     var mesh = new Option<string?>("--mesh") { Description = "Also bench this OBJ mesh (.obj or .obj.gz), e.g. the Utah teapot", HelpName = "file" };
 
     var cmd = new Command("bench", "Benchmark the scene suite: seconds, rays/s, speedup over --accel none")
     {
-      json, quick, scene, threads, noSlow, mesh,
+      json, quick, scene, threads, noSlow, mesh, size, spp,
     };
     cmd.SetAction(parse =>
     {
@@ -41,11 +44,16 @@ public static class BenchCommand
         throw new UsageException($"--mesh '{meshFile}': no such file");
       string[] filters = parse.GetValue(scene) ?? Array.Empty<string>();
 
+      string? sizeText = parse.GetValue(size);
+      ImageSize? sizeOverride = sizeText != null ? ImageSize.Parse(sizeText) : null;
+      int? sppOverride = parse.GetValue(spp);
+      if (sppOverride is < 1)
+        throw new UsageException($"invalid --spp {sppOverride}: must be at least 1");
       IReadOnlyList<BenchCase> suite = BenchSuite.Create(parse.GetValue(quick), meshFile);
       var cases = new List<BenchCase>();
       foreach (BenchCase c in suite)
         if (Matches(c, filters, suite))
-          cases.Add(c);
+          cases.Add(c with { Size = sizeOverride ?? c.Size, Spp = sppOverride ?? c.Spp });
       if (cases.Count == 0)
         throw new UsageException($"--scene matched no bench case");
 

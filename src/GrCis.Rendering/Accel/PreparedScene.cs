@@ -255,10 +255,19 @@ public sealed class PreparedScene
   struct Query
   {
     public double Len2;
+    /// <summary>Pruning bound: min(EntryT, InsideT).</summary>
     public double BestT;
+
+    // The first entry over members that start outside.
+    public double EntryT;
     public int BestIndex;
     public FastHit BestHit;
     public Intersection? BestList;
+
+    // The one member the ray starts inside (-1: none) and its first valid record, an exit.
+    public int InsideIndex;
+    public double InsideT;
+    public FastHit InsideHit;
   }
 
   /// <summary>
@@ -279,9 +288,17 @@ public sealed class PreparedScene
     if (!union)
       return FirstHitSingle(p0, p1, len2, reuse);
 
-    var q = new Query { Len2 = len2, BestT = double.PositiveInfinity, BestIndex = int.MaxValue };
+    var q = NewQuery(len2, double.PositiveInfinity);
     if (!Closest(ref q, p0, p1))
       return FaithfulFirstHit(p0, p1);
+    if (q.InsideIndex >= 0)
+    {
+      // Starting inside one member: the union's first record is that member's exit, unless another
+      // member is entered first (or at the same T): then the faithful path decides.
+      if (q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT)
+        return FaithfulFirstHit(p0, p1);
+      return Complete(ref members[q.InsideIndex], q.InsideHit, reuse);
+    }
     if (q.BestIndex == int.MaxValue)
       return null;
     return q.BestList ?? Complete(ref members[q.BestIndex], q.BestHit, reuse);
@@ -322,9 +339,15 @@ public sealed class PreparedScene
     // Hits beyond 1 + RAY_EPSILON/|dir| are Far(1): prune them (with a little slack, tested exactly below).
     double bound = 1.0 + Intersection.RAY_EPSILON / Math.Sqrt(len2);
     bound += bound * 1.0e-12;
-    var q = new Query { Len2 = len2, BestT = bound, BestIndex = int.MaxValue };
+    var q = NewQuery(len2, bound);
     if (!Closest(ref q, p0, dir))
       return FaithfulOccluded(p0, dir);
+    if (q.InsideIndex >= 0)
+    {
+      if ((q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT) || members[q.InsideIndex].NoShadow)
+        return FaithfulOccluded(p0, dir);
+      return NotFar(q.InsideT, len2);
+    }
     if (q.BestIndex == int.MaxValue)
       return false;
 
@@ -333,8 +356,17 @@ public sealed class PreparedScene
       : members[q.BestIndex].NoShadow;
     if (noShadow)
       return FaithfulOccluded(p0, dir);
-    return NotFar(q.BestT, len2);
+    return NotFar(q.EntryT, len2);
   }
+
+  static Query NewQuery(double len2, double bound) => new()
+  {
+    Len2 = len2,
+    BestT = bound,
+    EntryT = bound,
+    BestIndex = int.MaxValue,
+    InsideIndex = -1,
+  };
 
   static bool NotFar(double t, double len2)
   {
@@ -489,14 +521,28 @@ public sealed class PreparedScene
     if (m.Fast != null)
     {
       bool has = m.Fast.IntersectFirst(lp0, lp1, q.Len2, out FastHit h, out bool inside);
-      if (inside || (has && !h.Enter))
-        return false;
-      if (has && (h.T < q.BestT || (h.T == q.BestT && index < q.BestIndex)))
+      if (inside)
       {
-        q.BestT = h.T;
+        // The ray starts inside this member: fine while it is the only one and its first record is an exit.
+        if (!has || h.Enter || q.InsideIndex >= 0)
+          return false;
+        q.InsideIndex = index;
+        q.InsideT = h.T;
+        q.InsideHit = h;
+        if (h.T < q.BestT)
+          q.BestT = h.T;
+        return true;
+      }
+      if (has && !h.Enter)
+        return false;
+      if (has && (h.T < q.EntryT || (h.T == q.EntryT && index < q.BestIndex)))
+      {
+        q.EntryT = h.T;
         q.BestIndex = index;
         q.BestHit = h;
         q.BestList = null;
+        if (h.T < q.BestT)
+          q.BestT = h.T;
       }
       return true;
     }
@@ -512,9 +558,11 @@ public sealed class PreparedScene
       {
         if (state || !i.Enter)
           return false;
-        if (i.T < q.BestT || (i.T == q.BestT && index < q.BestIndex))
+        if (i.T < q.EntryT || (i.T == q.EntryT && index < q.BestIndex))
         {
-          q.BestT = i.T;
+          q.EntryT = i.T;
+          if (i.T < q.BestT)
+            q.BestT = i.T;
           q.BestIndex = index;
           q.BestList = i;
         }
