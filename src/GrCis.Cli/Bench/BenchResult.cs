@@ -9,7 +9,11 @@ public sealed record BenchResult
   public required string Size { get; init; }
   public int Spp { get; init; }
   public int Threads { get; init; }
+  /// <summary>Wall-clock seconds of the timed render.</summary>
   public double Seconds { get; init; }
+
+  /// <summary>Processor seconds of this process during the timed render (all threads): robust on a loaded machine.</summary>
+  public double CpuSeconds { get; init; }
   public long Rays { get; init; }
   public double RaysPerSecond { get; init; }
 

@@ -85,7 +85,9 @@ public static class BenchSuite
     Render(scene, new ImageSize(8, 6), 1, threads, AccelMode.Bvh, cancel, out _);
     double prepare = clock.Elapsed.TotalSeconds;
 
+    TimeSpan cpu0 = Process.GetCurrentProcess().TotalProcessorTime;
     RenderResult fast = Render(scene, c.Size, c.Spp, threads, AccelMode.Bvh, cancel, out long fallbacks);
+    double cpu = (Process.GetCurrentProcess().TotalProcessorTime - cpu0).TotalSeconds;
     var result = new BenchResult
     {
       Id = c.Id,
@@ -95,6 +97,7 @@ public static class BenchSuite
       Spp = c.Spp,
       Threads = threads,
       Seconds = fast.Elapsed.TotalSeconds,
+      CpuSeconds = cpu,
       Rays = fast.Rays,
       RaysPerSecond = fast.Rays / Math.Max(fast.Elapsed.TotalSeconds, 1e-9),
       PrepareSeconds = prepare,

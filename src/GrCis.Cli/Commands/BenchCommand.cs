@@ -102,7 +102,7 @@ public static class BenchCommand
   static string Line(BenchResult r)
   {
     string s = string.Create(CultureInfo.InvariantCulture,
-      $"{r.Name,-34} {r.Size,9} {r.Spp,2} spp  {r.Seconds,8:0.000} s  {r.RaysPerSecond / 1e6,7:0.00} Mrays/s  prep {r.PrepareSeconds:0.00} s");
+      $"{r.Name,-34} {r.Size,9} {r.Spp,2} spp  {r.Seconds,8:0.000} s (cpu {r.CpuSeconds,7:0.000} s)  {r.RaysPerSecond / 1e6,7:0.00} Mrays/s  prep {r.PrepareSeconds:0.00} s");
     if (r.Speedup is double sp)
       s += string.Create(CultureInfo.InvariantCulture,
         $"  none@{r.SlowSize} {r.SlowSpp}spp {r.SlowSeconds:0.00} s {r.SlowRaysPerSecond / 1e6:0.000} Mrays/s  speedup {sp:0.0}×");
