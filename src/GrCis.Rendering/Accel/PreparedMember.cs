@@ -19,6 +19,13 @@ internal struct PreparedMember
   /// <summary>Records only inside <see cref="WorldBox"/> and balanced: may live in the BVH.</summary>
   public bool Closed;
 
+  /// <summary>
+  /// A conservative world bounding sphere (radius² &gt; 0) of a closed member whose records all lie on a
+  /// sphere under a similarity transform: a cheap test that skips the transform chain on a clear miss.
+  /// </summary>
+  public Vector3d CullCenter;
+  public double CullRadius2;
+
   /// <summary>The solid's local NO_SHADOW attribute was set at prepare time.</summary>
   public bool NoShadow;
 

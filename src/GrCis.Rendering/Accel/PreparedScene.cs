@@ -191,6 +191,14 @@ public sealed class PreparedScene
       }
     }
 
+    if (node is Sphere && m.Fast != null && TrySimilarity(path, out Vector3d center, out double radius))
+    {
+      // 1e-6 relative slack covers the rounding of the chain and of this estimate by a wide margin.
+      double r = radius * (1.0 + 1.0e-6) + 1.0e-12;
+      m.CullCenter = center;
+      m.CullRadius2 = r * r;
+    }
+
     if (node is ISceneNode sn && TryClosedBox(sn, out Aabb local))
     {
       // World box from the same chain the ray goes through (padded for rounding).
@@ -205,6 +213,26 @@ public sealed class PreparedScene
       }
     }
     members.Add(m);
+  }
+
+  /// <summary>World centre and radius of the unit sphere under the chain, when the chain is a similarity.</summary>
+  static bool TrySimilarity(List<Matrix4d> path, out Vector3d center, out double radius)
+  {
+    Matrix4d worldToLocal = Matrix4d.Identity;
+    for (int k = 0; k < path.Count; k++)
+      worldToLocal *= path[k];
+    Matrix4d l2w = worldToLocal.Inverted();
+    center = Vector3d.TransformPosition(Vector3d.Zero, l2w);
+    Vector3d a = Vector3d.TransformVector(Vector3d.UnitX, l2w);
+    Vector3d b = Vector3d.TransformVector(Vector3d.UnitY, l2w);
+    Vector3d c = Vector3d.TransformVector(Vector3d.UnitZ, l2w);
+    double la = a.Length, lb = b.Length, lc = c.Length;
+    radius = Math.Max(la, Math.Max(lb, lc));
+    double tol = 1.0e-9 * radius;
+    bool similar = Math.Abs(la - lb) <= tol && Math.Abs(la - lc) <= tol &&
+                   Math.Abs(Vector3d.Dot(a, b)) <= tol * radius && Math.Abs(Vector3d.Dot(a, c)) <= tol * radius &&
+                   Math.Abs(Vector3d.Dot(b, c)) <= tol * radius;
+    return similar && double.IsFinite(radius) && radius > 0.0 && double.IsFinite(center.X + center.Y + center.Z);
   }
 
   /// <summary>Local box of a closed member: a closed known solid, or a library CSG node over closed members.</summary>
@@ -484,8 +512,14 @@ public sealed class PreparedScene
         {
           int end = n.Index + n.Count;
           for (int k = n.Index; k < end; k++)
-            if (!TestMember(items[k], ref q, p0, p1))
+          {
+            int item = items[k];
+            // A clear miss of the member's world bounding sphere skips its transform chain (exact: conservative).
+            if (members[item].CullRadius2 > 0.0 && MissesSphere(members[item], p0, p1))
+              continue;
+            if (!TestMember(item, ref q, p0, p1))
               return false;
+          }
         }
         else
         {
@@ -509,6 +543,18 @@ public sealed class PreparedScene
         return true;
       ni = stack[--sp];
     }
+  }
+
+  /// <summary>True when the line misses the member's (enlarged) world bounding sphere: it has no records.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static bool MissesSphere(in PreparedMember m, in Vector3d p0, in Vector3d p1)
+  {
+    // Squared distance of the centre from the line: |oc|² − (oc·d)²/|d|² > r².
+    double ox = m.CullCenter.X - p0.X, oy = m.CullCenter.Y - p0.Y, oz = m.CullCenter.Z - p0.Z;
+    double od = ox * p1.X + oy * p1.Y + oz * p1.Z;
+    double dd = p1.X * p1.X + p1.Y * p1.Y + p1.Z * p1.Z;
+    double oo = ox * ox + oy * oy + oz * oz;
+    return (oo - m.CullRadius2) * dd > od * od;
   }
 
   /// <summary>Tests one member; false when the fast rule does not apply to this ray.</summary>
