@@ -37,6 +37,7 @@ internal struct PreparedMember
   public IMaterial? Material;
   public double[]? Color;
   public System.Collections.Generic.LinkedList<ITexture>? Textures;
+  public object? Recursion;
 
   // What Intersection.Complete() would compute (Solid.ToWorld(), its inverse, Solid.ToObject()).
   public Matrix4d LocalToWorld, WorldToLocal, LocalToObject;

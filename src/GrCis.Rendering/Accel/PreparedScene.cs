@@ -188,6 +188,7 @@ public sealed class PreparedScene
         m.Material = material;
         m.Color = f.GetAttribute(PropertyName.COLOR) as double[] ?? material.Color;
         m.Textures = f.GetTextures();
+        m.Recursion = f.GetAttribute(PropertyName.RECURSION);
       }
     }
 
@@ -346,7 +347,7 @@ public sealed class PreparedScene
       i = new Intersection(f);
     f.InitIntersection(hit, i);
     if (m.AttributesCached)
-      i.CompleteCached(m.LocalToWorld, m.WorldToLocal, m.LocalToObject, m.Model!, m.Material!, m.Color, m.Textures);
+      i.CompleteCached(m.LocalToWorld, m.WorldToLocal, m.LocalToObject, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion);
     else
       i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
     return i;

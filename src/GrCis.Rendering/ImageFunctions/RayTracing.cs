@@ -73,7 +73,7 @@ public class RayTracing : RayCasting
     int bands = color.Length;
     Array.Clear(color);
 
-    if (DoRecursion && i.Solid?.GetAttribute(PropertyName.RECURSION) is RecursionFunction recursion)
+    if (DoRecursion && i.RecursionAttribute is RecursionFunction recursion)
       return ShadeRecursion(recursion, i, depth, importance, ref p1, color, hash);
 
     Vector3d viewer = -p1.Normalized();

@@ -122,6 +122,13 @@ public class Intersection : IComparable<Intersection>
     completed = true;
   }
 
+  /// <summary>The solid's RECURSION attribute resolved at prepare time (valid when <see cref="RecursionCached"/>).</summary>
+  internal object? CachedRecursion;
+  internal bool RecursionCached;
+
+  /// <summary>The solid's <see cref="PropertyName.RECURSION"/> attribute (from the prepared scene when it resolved it).</summary>
+  internal object? RecursionAttribute => RecursionCached ? CachedRecursion : Solid?.GetAttribute(PropertyName.RECURSION);
+
   // This object's own surface-colour copy, reused when the object is (pooled fast path).
   double[]? spareColor;
 
@@ -142,6 +149,8 @@ public class Intersection : IComparable<Intersection>
     ReflectanceModel = null;
     Material = null;
     Textures = null;
+    CachedRecursion = null;
+    RecursionCached = false;
     completed = textureApplied = false;
   }
 
@@ -150,8 +159,11 @@ public class Intersection : IComparable<Intersection>
   /// done once per prepared member instead of once per hit): reflectance model, material, colour, textures.
   /// </summary>
   internal void CompleteCached(in Matrix4d localToWorld, in Matrix4d worldToLocal, in Matrix4d localToObject,
-                               IReflectanceModel model, IMaterial material, double[]? color, LinkedList<ITexture>? textures)
+                               IReflectanceModel model, IMaterial material, double[]? color, LinkedList<ITexture>? textures,
+                               object? recursion)
   {
+    CachedRecursion = recursion;
+    RecursionCached = true;
     if (completed)
       return;
     LocalToWorld = localToWorld;
