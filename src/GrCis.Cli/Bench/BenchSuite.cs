@@ -17,7 +17,7 @@ namespace GrCis.Cli.Bench;
 /// </summary>
 public static class BenchSuite
 {
-  static readonly ImageSize Vga = new(640, 480), Hd = new(1280, 720), Small = new(160, 120), Tiny = new(64, 48);
+  static readonly ImageSize Vga = new(640, 480), Hd = new(1280, 720), Small = new(320, 240), Tiny = new(64, 48);
 
   public static IReadOnlyList<BenchCase> Create(bool quick, string? meshFile)
   {
@@ -106,7 +106,8 @@ public static class BenchSuite
     if (skipSlow || cancel.IsCancellationRequested)
       return result;
 
-    Render(scene, new ImageSize(4, 3), 1, threads, AccelMode.None, cancel, out _);
+    // Warm-up at the same small size first: a short faithful run would otherwise time tier-0 JIT code.
+    Render(scene, c.SlowSize, c.SlowSpp, threads, AccelMode.None, cancel, out _);
     RenderResult slow = Render(scene, c.SlowSize, c.SlowSpp, threads, AccelMode.None, cancel, out _);
     double slowRate = slow.Rays / Math.Max(slow.Elapsed.TotalSeconds, 1e-9);
     return result with
