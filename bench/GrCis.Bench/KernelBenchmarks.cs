@@ -11,8 +11,10 @@ namespace GrCis.Bench;
 [MemoryDiagnoser]
 public class KernelBenchmarks
 {
-  readonly RefSphere sphere = new();
-  readonly RefCube cube = new();
+  readonly Sphere sphere = new();
+  readonly Cube cube = new();
+  readonly TriangleMesh torus = new(ProceduralMesh.Torus(100, 50));
+  Vector3d m0 = new(0.05, 0.02, 5), m1 = new Vector3d(0.3, 0.01, -1).Normalized();
   Vector3d p0 = new(0.1, 0.2, -5), p1 = new Vector3d(0.01, 0.02, 1).Normalized();
   Vector3d c0 = new(0.3, 0.4, -5), c1 = new Vector3d(0.01, 0.02, 1).Normalized();
   Vector3d a = new(-1, -1, 0), b = new(1, -1, 0.2), c = new(0, 1, 0.1);
@@ -45,7 +47,22 @@ public class KernelBenchmarks
     return Intersection.FirstIntersection(list, ref c1)?.T ?? 0.0;
   }
 
-  /// <summary>Möller–Trumbore (reference kernel until the solids branch's TriangleMesh lands).</summary>
+  /// <summary>TriangleMesh (10,000-triangle torus): first accepted hit and CSG state through its BVH, no allocation.</summary>
+  [Benchmark]
+  public double RayMesh10k_fast()
+  {
+    torus.IntersectFirst(m0, m1, 1.0, out FastHit h, out _);
+    return h.T;
+  }
+
+  [Benchmark]
+  public double RayMesh10k_linkedlist()
+  {
+    LinkedList<Intersection>? list = torus.Intersect(m0, m1);
+    return Intersection.FirstIntersection(list, ref m1)?.T ?? 0.0;
+  }
+
+  /// <summary>Möller–Trumbore on one triangle (the kernel inside MeshBvh).</summary>
   [Benchmark]
   public double RayTriangle()
   {

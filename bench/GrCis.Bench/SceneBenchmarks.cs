@@ -21,7 +21,9 @@ public class SceneBenchmarks
   [GlobalSetup]
   public void Setup()
   {
-    scene = TestScenes.Flake9(4);
+    var sc = new DefaultRayScene();
+    Scenes.SphereFlake9(sc, 4);   // the real Sphere and Plane solids
+    scene = sc;
     prepared = PreparedScene.Prepare(scene.Intersectable);
     tracer = new RayTracing(scene);
     tracer.Width = 640;

@@ -94,6 +94,7 @@ public static class Program
       new AnimateCommand().Build(env),
       ListCommand.Build(env),
       new InfoCommand().Build(env),
+      BenchCommand.Build(env),
     };
     return root;
   }

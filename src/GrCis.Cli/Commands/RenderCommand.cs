@@ -72,13 +72,14 @@ public sealed class RenderCommand
   readonly Option<bool> noRefractions = new("--no-refractions") { Description = "Do not trace refracted rays" };
   readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
   readonly ScriptOptions scriptOptions = new();
+  readonly Option<string> accel = AccelOption.Create();
 
   public Command Build(CliEnvironment env)
   {
     var cmd = new Command("render", "Render a still image of a scene")
     {
       scene, output, size, spp, jitter, threads, seed, gamma, format,
-      noShadows, noReflections, noRefractions, quiet,
+      noShadows, noReflections, noRefractions, quiet, accel,
     };
     scriptOptions.AddTo(cmd);
     cmd.SetAction(parse => Execute(parse, env));
@@ -99,6 +100,7 @@ public sealed class RenderCommand
       Shadows = !parse.GetValue(noShadows),
       Reflections = !parse.GetValue(noReflections),
       Refractions = !parse.GetValue(noRefractions),
+      Accel = AccelOption.Parse(parse.GetValue(accel)),
     }.Validate();
 
     ISceneSource source = scriptOptions.Resolve(parse, parse.GetValue(scene), env);

@@ -13,23 +13,16 @@ namespace GrCis.Cli.Jobs;
 /// </summary>
 public static class RenderJob
 {
-  public static ImageSynthesizer CreateSynthesizer(RenderSettings s)
-  {
-    ImageSynthesizer r = s.SamplesPerPixel <= 1
-      ? new SimpleImageSynthesizer()
-      : new SupersamplingImageSynthesizer { Supersampling = s.SamplesPerPixel, Jittering = s.Jitter };
-    r.Width = s.Size.Width;
-    r.Height = s.Size.Height;
-    r.Gamma = s.Gamma;
-    return r;
-  }
+  // The construction is shared with the interactive demo (RenderSetup), so both make the same image.
+  public static ImageSynthesizer CreateSynthesizer(RenderSettings s) =>
+    RenderSetup.CreateSynthesizer(s.Size.Width, s.Size.Height, s.SamplesPerPixel, s.Jitter, s.Gamma);
 
-  public static RayTracing CreateImageFunction(IRayScene scene, RenderSettings s) => new(scene)
+  public static RayTracing CreateImageFunction(IRayScene scene, RenderSettings s)
   {
-    DoShadows = s.Shadows,
-    DoReflections = s.Reflections,
-    DoRefractions = s.Refractions,
-  };
+    RayTracing rt = RenderSetup.CreateRayTracing(scene, s.Shadows, s.Reflections, s.Refractions);
+    rt.Accel = s.Accel;
+    return rt;
+  }
 
   public static RenderResult Run(IRayScene scene, RenderSettings settings, Action<RenderProgress>? progress, CancellationToken cancel) =>
     Run(scene, settings, null, null, progress, cancel);
@@ -40,14 +33,14 @@ public static class RenderJob
   {
     ImageSynthesizer renderer = synthesizer ?? CreateSynthesizer(settings);
     IImageFunction function = imageFunction ?? CreateImageFunction(scene, settings);
+    if (function is RayCasting rc)
+      rc.Accel = settings.Accel;   // a script's own RayTracing honours --accel too
     var options = new RenderOptions { Threads = settings.Threads, Seed = settings.Seed };
 
-    // Intersection.countRays is GrCis's global ray counter; the difference is this render's rays.
-    long rays0 = Interlocked.Read(ref Intersection.countRays);
     var clock = Stopwatch.StartNew();
     var image = TileRenderer.Render(scene, function, renderer, options, progress, cancel);
     clock.Stop();
-    long rays = Interlocked.Read(ref Intersection.countRays) - rays0;
+    long rays = TileRenderer.LastRenderRays;   // summed from per-thread counters, exact for this render
     return new RenderResult(image, renderer.SamplesPerPixel, clock.Elapsed, rays, cancel.IsCancellationRequested);
   }
 }

@@ -1,4 +1,5 @@
 using System;
+using Rendering.Accel;
 
 namespace GrCis.Cli.Jobs;
 
@@ -24,6 +25,9 @@ public sealed record RenderSettings
   public bool Shadows { get; init; } = true;
   public bool Reflections { get; init; } = true;
   public bool Refractions { get; init; } = true;
+
+  /// <summary>Ray queries: the prepared BVH fast path (default) or GrCis's faithful path (<c>--accel none</c>).</summary>
+  public AccelMode Accel { get; init; } = AccelMode.Bvh;
 
   /// <exception cref="UsageException">A value outside its allowed range.</exception>
   public RenderSettings Validate()

@@ -28,6 +28,18 @@ public interface IFastSolid : ISolid
   /// </summary>
   bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore);
 
+  /// <summary>
+  /// Fills the cheap part (T, Enter, Front, local coordinates and normal, solid data) of a fresh or reset
+  /// <paramref name="target"/> whose <see cref="Intersection.Solid"/> is this solid, exactly as <c>Intersect</c>
+  /// would have listed the record (not completed).
+  /// </summary>
+  void InitIntersection(in FastHit hit, Intersection target);
+
   /// <summary>The <see cref="Intersection"/> that <c>Intersect</c> would have listed for this record (not completed).</summary>
-  Intersection CreateIntersection(in FastHit hit);
+  Intersection CreateIntersection(in FastHit hit)
+  {
+    var i = new Intersection(this);
+    InitIntersection(hit, i);
+    return i;
+  }
 }

@@ -19,10 +19,25 @@ internal struct PreparedMember
   /// <summary>Records only inside <see cref="WorldBox"/> and balanced: may live in the BVH.</summary>
   public bool Closed;
 
+  /// <summary>
+  /// A conservative world bounding sphere (radius² &gt; 0) of a closed member whose records all lie on a
+  /// sphere under a similarity transform: a cheap test that skips the transform chain on a clear miss.
+  /// </summary>
+  public Vector3d CullCenter;
+  public double CullRadius2;
+
   /// <summary>The solid's local NO_SHADOW attribute was set at prepare time.</summary>
   public bool NoShadow;
 
   public Aabb WorldBox;
+
+  /// <summary>Attributes resolved at prepare time (reflectance model and material found; else per hit).</summary>
+  public bool AttributesCached;
+  public IReflectanceModel? Model;
+  public IMaterial? Material;
+  public double[]? Color;
+  public System.Collections.Generic.LinkedList<ITexture>? Textures;
+  public object? Recursion;
 
   // What Intersection.Complete() would compute (Solid.ToWorld(), its inverse, Solid.ToObject()).
   public Matrix4d LocalToWorld, WorldToLocal, LocalToObject;

@@ -178,6 +178,26 @@ public sealed class PreparedScene
       m.WorldToLocal = m.LocalToWorld.Inverted();
       m.LocalToObject = f.ToObject();
       m.NoShadow = f.GetLocalAttribute(PropertyName.NO_SHADOW) != null;
+
+      // The look-ups Intersection.CompleteWith does per hit, once (only when they do not create objects).
+      if (f.GetAttribute(PropertyName.REFLECTANCE_MODEL) is IReflectanceModel model &&
+          f.GetAttribute(PropertyName.MATERIAL) is IMaterial material)
+      {
+        m.AttributesCached = true;
+        m.Model = model;
+        m.Material = material;
+        m.Color = f.GetAttribute(PropertyName.COLOR) as double[] ?? material.Color;
+        m.Textures = f.GetTextures();
+        m.Recursion = f.GetAttribute(PropertyName.RECURSION);
+      }
+    }
+
+    if (node is Sphere && m.Fast != null && TrySimilarity(path, out Vector3d center, out double radius))
+    {
+      // 1e-6 relative slack covers the rounding of the chain and of this estimate by a wide margin.
+      double r = radius * (1.0 + 1.0e-6) + 1.0e-12;
+      m.CullCenter = center;
+      m.CullRadius2 = r * r;
     }
 
     if (node is ISceneNode sn && TryClosedBox(sn, out Aabb local))
@@ -194,6 +214,26 @@ public sealed class PreparedScene
       }
     }
     members.Add(m);
+  }
+
+  /// <summary>World centre and radius of the unit sphere under the chain, when the chain is a similarity.</summary>
+  static bool TrySimilarity(List<Matrix4d> path, out Vector3d center, out double radius)
+  {
+    Matrix4d worldToLocal = Matrix4d.Identity;
+    for (int k = 0; k < path.Count; k++)
+      worldToLocal *= path[k];
+    Matrix4d l2w = worldToLocal.Inverted();
+    center = Vector3d.TransformPosition(Vector3d.Zero, l2w);
+    Vector3d a = Vector3d.TransformVector(Vector3d.UnitX, l2w);
+    Vector3d b = Vector3d.TransformVector(Vector3d.UnitY, l2w);
+    Vector3d c = Vector3d.TransformVector(Vector3d.UnitZ, l2w);
+    double la = a.Length, lb = b.Length, lc = c.Length;
+    radius = Math.Max(la, Math.Max(lb, lc));
+    double tol = 1.0e-9 * radius;
+    bool similar = Math.Abs(la - lb) <= tol && Math.Abs(la - lc) <= tol &&
+                   Math.Abs(Vector3d.Dot(a, b)) <= tol * radius && Math.Abs(Vector3d.Dot(a, c)) <= tol * radius &&
+                   Math.Abs(Vector3d.Dot(b, c)) <= tol * radius;
+    return similar && double.IsFinite(radius) && radius > 0.0 && double.IsFinite(center.X + center.Y + center.Z);
   }
 
   /// <summary>Local box of a closed member: a closed known solid, or a library CSG node over closed members.</summary>
@@ -244,28 +284,73 @@ public sealed class PreparedScene
   struct Query
   {
     public double Len2;
+    /// <summary>Pruning bound: min(EntryT, InsideT).</summary>
     public double BestT;
+
+    // The first entry over members that start outside.
+    public double EntryT;
     public int BestIndex;
     public FastHit BestHit;
     public Intersection? BestList;
+
+    // The one member the ray starts inside (-1: none) and its first valid record, an exit.
+    public int InsideIndex;
+    public double InsideT;
+    public FastHit InsideHit;
   }
 
   /// <summary>
   /// The hit <see cref="Intersection.FirstIntersection"/> would pick from the scene's list, completed
   /// with cached matrices (list members' hits are left to <see cref="Intersection.Complete"/>), or null.
   /// </summary>
-  public Intersection? FirstHit(Vector3d p0, Vector3d p1)
+  public Intersection? FirstHit(Vector3d p0, Vector3d p1) => FirstHit(p0, p1, null);
+
+  /// <summary>
+  /// <see cref="FirstHit(Vector3d, Vector3d)"/> that fills <paramref name="reuse"/> (reset first) instead of
+  /// allocating, when the winner is a known solid; hits of list members are returned as listed.
+  /// </summary>
+  public Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse)
   {
     if (members.Length == 0)
       return null;
     double len2 = p1.LengthSquared;
     if (!union)
-      return FirstHitSingle(p0, p1, len2);
+      return FirstHitSingle(p0, p1, len2, reuse);
 
-    var q = new Query { Len2 = len2, BestT = double.PositiveInfinity, BestIndex = int.MaxValue };
+    var q = NewQuery(len2, double.PositiveInfinity);
     if (!Closest(ref q, p0, p1))
       return FaithfulFirstHit(p0, p1);
-    return q.BestIndex == int.MaxValue ? null : Winner(ref q);
+    if (q.InsideIndex >= 0)
+    {
+      // Starting inside one member: the union's first record is that member's exit, unless another
+      // member is entered first (or at the same T): then the faithful path decides.
+      if (q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT)
+        return FaithfulFirstHit(p0, p1);
+      return Complete(ref members[q.InsideIndex], q.InsideHit, reuse);
+    }
+    if (q.BestIndex == int.MaxValue)
+      return null;
+    return q.BestList ?? Complete(ref members[q.BestIndex], q.BestHit, reuse);
+  }
+
+  /// <summary>The record as an <see cref="Intersection"/>, completed from the member's cached matrices and attributes.</summary>
+  static Intersection Complete(ref PreparedMember m, in FastHit hit, Intersection? reuse)
+  {
+    IFastSolid f = m.Fast!;
+    Intersection i;
+    if (reuse != null)
+    {
+      reuse.Reset(f);
+      i = reuse;
+    }
+    else
+      i = new Intersection(f);
+    f.InitIntersection(hit, i);
+    if (m.AttributesCached)
+      i.CompleteCached(m.LocalToWorld, m.WorldToLocal, m.LocalToObject, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion);
+    else
+      i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
+    return i;
   }
 
   /// <summary>
@@ -283,9 +368,15 @@ public sealed class PreparedScene
     // Hits beyond 1 + RAY_EPSILON/|dir| are Far(1): prune them (with a little slack, tested exactly below).
     double bound = 1.0 + Intersection.RAY_EPSILON / Math.Sqrt(len2);
     bound += bound * 1.0e-12;
-    var q = new Query { Len2 = len2, BestT = bound, BestIndex = int.MaxValue };
+    var q = NewQuery(len2, bound);
     if (!Closest(ref q, p0, dir))
       return FaithfulOccluded(p0, dir);
+    if (q.InsideIndex >= 0)
+    {
+      if ((q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT) || members[q.InsideIndex].NoShadow)
+        return FaithfulOccluded(p0, dir);
+      return NotFar(q.InsideT, len2);
+    }
     if (q.BestIndex == int.MaxValue)
       return false;
 
@@ -294,8 +385,17 @@ public sealed class PreparedScene
       : members[q.BestIndex].NoShadow;
     if (noShadow)
       return FaithfulOccluded(p0, dir);
-    return NotFar(q.BestT, len2);
+    return NotFar(q.EntryT, len2);
   }
+
+  static Query NewQuery(double len2, double bound) => new()
+  {
+    Len2 = len2,
+    BestT = bound,
+    EntryT = bound,
+    BestIndex = int.MaxValue,
+    InsideIndex = -1,
+  };
 
   static bool NotFar(double t, double len2)
   {
@@ -316,16 +416,6 @@ public sealed class PreparedScene
     Interlocked.Increment(ref fallbacks);
     Intersection? si = Intersection.FirstRealIntersection(Source!.Intersect(p0, dir), ref dir);
     return si != null && !si.Far(1.0, ref dir);
-  }
-
-  Intersection Winner(ref Query q)
-  {
-    if (q.BestList != null)
-      return q.BestList;
-    ref PreparedMember m = ref members[q.BestIndex];
-    Intersection i = m.Fast!.CreateIntersection(q.BestHit);
-    i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
-    return i;
   }
 
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -352,7 +442,7 @@ public sealed class PreparedScene
     }
   }
 
-  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2)
+  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2, Intersection? reuse)
   {
     ref PreparedMember m = ref members[0];
     Vector3d lp0 = p0, lp1 = p1;
@@ -361,9 +451,7 @@ public sealed class PreparedScene
     {
       if (!m.Fast.IntersectFirst(lp0, lp1, len2, out FastHit h, out _))
         return null;
-      Intersection i = m.Fast.CreateIntersection(h);
-      i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
-      return i;
+      return Complete(ref m, h, reuse);
     }
     return Intersection.FirstIntersection(m.Node.Intersect(lp0, lp1), ref p1);
   }
@@ -425,8 +513,14 @@ public sealed class PreparedScene
         {
           int end = n.Index + n.Count;
           for (int k = n.Index; k < end; k++)
-            if (!TestMember(items[k], ref q, p0, p1))
+          {
+            int item = items[k];
+            // A clear miss of the member's world bounding sphere skips its transform chain (exact: conservative).
+            if (members[item].CullRadius2 > 0.0 && MissesSphere(members[item], p0, p1))
+              continue;
+            if (!TestMember(item, ref q, p0, p1))
               return false;
+          }
         }
         else
         {
@@ -452,6 +546,18 @@ public sealed class PreparedScene
     }
   }
 
+  /// <summary>True when the line misses the member's (enlarged) world bounding sphere: it has no records.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static bool MissesSphere(in PreparedMember m, in Vector3d p0, in Vector3d p1)
+  {
+    // Squared distance of the centre from the line: |oc|² − (oc·d)²/|d|² > r².
+    double ox = m.CullCenter.X - p0.X, oy = m.CullCenter.Y - p0.Y, oz = m.CullCenter.Z - p0.Z;
+    double od = ox * p1.X + oy * p1.Y + oz * p1.Z;
+    double dd = p1.X * p1.X + p1.Y * p1.Y + p1.Z * p1.Z;
+    double oo = ox * ox + oy * oy + oz * oz;
+    return (oo - m.CullRadius2) * dd > od * od;
+  }
+
   /// <summary>Tests one member; false when the fast rule does not apply to this ray.</summary>
   bool TestMember(int index, ref Query q, in Vector3d p0, in Vector3d p1)
   {
@@ -462,14 +568,28 @@ public sealed class PreparedScene
     if (m.Fast != null)
     {
       bool has = m.Fast.IntersectFirst(lp0, lp1, q.Len2, out FastHit h, out bool inside);
-      if (inside || (has && !h.Enter))
-        return false;
-      if (has && (h.T < q.BestT || (h.T == q.BestT && index < q.BestIndex)))
+      if (inside)
       {
-        q.BestT = h.T;
+        // The ray starts inside this member: fine while it is the only one and its first record is an exit.
+        if (!has || h.Enter || q.InsideIndex >= 0)
+          return false;
+        q.InsideIndex = index;
+        q.InsideT = h.T;
+        q.InsideHit = h;
+        if (h.T < q.BestT)
+          q.BestT = h.T;
+        return true;
+      }
+      if (has && !h.Enter)
+        return false;
+      if (has && (h.T < q.EntryT || (h.T == q.EntryT && index < q.BestIndex)))
+      {
+        q.EntryT = h.T;
         q.BestIndex = index;
         q.BestHit = h;
         q.BestList = null;
+        if (h.T < q.BestT)
+          q.BestT = h.T;
       }
       return true;
     }
@@ -485,9 +605,11 @@ public sealed class PreparedScene
       {
         if (state || !i.Enter)
           return false;
-        if (i.T < q.BestT || (i.T == q.BestT && index < q.BestIndex))
+        if (i.T < q.EntryT || (i.T == q.EntryT && index < q.BestIndex))
         {
-          q.BestT = i.T;
+          q.EntryT = i.T;
+          if (i.T < q.BestT)
+            q.BestT = i.T;
           q.BestIndex = index;
           q.BestList = i;
         }

@@ -24,6 +24,16 @@ public static class TileRenderer
     return tiles;
   }
 
+  /// <summary>Rays cast by the last <see cref="Render"/> that returned on the calling thread (all workers).</summary>
+  public static long LastRenderRays
+  {
+    get => lastRenderRays;
+    private set => lastRenderRays = value;
+  }
+
+  [ThreadStatic]
+  static long lastRenderRays;
+
   /// <summary>
   /// Renders <paramref name="scene"/> through <paramref name="renderer"/> into a new linear image.
   /// Returns the image even when cancelled (unfinished tiles stay black); check the token to know.
@@ -68,9 +78,11 @@ public static class TileRenderer
     int threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tiles.Count));
     Exception? failure = null;
     object progressLock = new();
+    long renderRays = 0;
 
     void Work()
     {
+      long rays0 = RayCounter.ThreadRays;
       MT.InitThreadData();
       MT.seed = options.Seed;
       MT.frame = options.Frame;
@@ -98,6 +110,7 @@ public static class TileRenderer
       finally
       {
         MT.SetRendering(null, null, null);
+        Interlocked.Add(ref renderRays, RayCounter.ThreadRays - rays0);
       }
     }
 
@@ -114,6 +127,10 @@ public static class TileRenderer
       foreach (Thread w in workers)
         w.Join();
     }
+
+    // Publish this render's rays to GrCis's global counter once (workers counted per thread).
+    Interlocked.Add(ref Intersection.countRays, renderRays);
+    LastRenderRays = renderRays;
 
     if (failure != null)
       throw new RenderException($"Rendering failed: {failure.Message}", failure);

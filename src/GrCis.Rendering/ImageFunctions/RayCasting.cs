@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Runtime.CompilerServices;
 using OpenTK.Mathematics;
 using Rendering.Accel;
+using Rendering.Execution;
 
 namespace Rendering;
 
@@ -25,7 +26,40 @@ public class RayCasting : IImageFunction
   // Per-scene snapshots when threads render different scene clones (clone on write).
   [NonSerialized] ConditionalWeakTable<IIntersectable, PreparedScene>? preparedBySource;
 
-  public RayCasting(IRayScene? sc = null) => scene = sc;
+  /// <summary>
+  /// On the fast path, fill one <see cref="Intersection"/> per thread and recursion depth instead of a new
+  /// one per hit (default). Such an intersection is valid until the next hit at its depth; a component that
+  /// keeps intersections (a texture or recursion function in a script) may set this to false.
+  /// Ignored when a subclass overrides <see cref="FirstHit(Vector3d, Vector3d)"/>.
+  /// </summary>
+  public bool ReuseIntersections = true;
+
+  [NonSerialized] readonly bool firstHitOverridden;
+
+  static readonly System.Collections.Concurrent.ConcurrentDictionary<Type, bool> overridesFirstHit = new();
+
+  public RayCasting(IRayScene? sc = null)
+  {
+    scene = sc;
+    firstHitOverridden = overridesFirstHit.GetOrAdd(GetType(), static t =>
+      t.GetMethod(nameof(FirstHit), System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.NonPublic,
+        new[] { typeof(Vector3d), typeof(Vector3d) })?.DeclaringType != typeof(RayCasting));
+  }
+
+  /// <summary>
+  /// First hit of a ray traced at recursion <paramref name="depth"/>: <see cref="FirstHit(Vector3d, Vector3d)"/>,
+  /// or on the fast path the same hit in this thread's reusable intersection of that depth.
+  /// </summary>
+  protected Intersection? FirstHitAt(int depth, Vector3d p0, Vector3d p1)
+  {
+    if (firstHitOverridden || !ReuseIntersections || depth < 0)
+      return FirstHit(p0, p1);
+    PreparedScene? ps = Prepared;
+    if (ps == null)
+      return FirstHit(p0, p1);
+    RayCounter.CountRay();
+    return ps.FirstHit(p0, p1, ShadingScratch.Intersection(depth));
+  }
 
   /// <summary>
   /// Prepares <paramref name="sc"/> (default: <see cref="Scene"/>) for the fast path: call once per frame,
@@ -96,7 +130,7 @@ public class RayCasting : IImageFunction
   /// <summary>First hit of the ray, or null. Overridden by the prepared fast path.</summary>
   protected virtual Intersection? FirstHit(Vector3d p0, Vector3d p1)
   {
-    Intersection.countRays++;
+    RayCounter.CountRay();
     PreparedScene? ps = Prepared;
     if (ps != null)
       return ps.FirstHit(p0, p1);
@@ -122,7 +156,7 @@ public class RayCasting : IImageFunction
     if (sc.Camera == null || !sc.Camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))
       return 1L;
 
-    Intersection? i = FirstHit(p0, p1);
+    Intersection? i = FirstHitAt(0, p0, p1);
     if (i == null)
     {
       if (sc.BackgroundColor != null)

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using MathSupport;
 using OpenTK.Mathematics;
 using Rendering.Accel;
+using Rendering.Execution;
 
 namespace Rendering;
 
@@ -57,7 +58,7 @@ public class RayTracing : RayCasting
   /// <summary>True when something (not marked NO_SHADOW) lies between the point and the light at <c>p0 + dir</c>.</summary>
   protected virtual bool Occluded(Vector3d p0, Vector3d dir)
   {
-    Intersection.countRays++;
+    RayCounter.CountRay();
     PreparedScene? ps = Prepared;
     if (ps != null)
       return ps.Occluded(p0, dir);
@@ -71,7 +72,7 @@ public class RayTracing : RayCasting
   {
     IRayScene sc = Scene;
     Vector3d direction = p1;
-    Intersection? i = FirstHit(p0, direction);
+    Intersection? i = FirstHitAt(depth, p0, direction);
     if (i == null)
     {
       if (sc.Background != null)
@@ -84,7 +85,7 @@ public class RayTracing : RayCasting
     int bands = color.Length;
     Array.Clear(color);
 
-    if (DoRecursion && i.Solid?.GetAttribute(PropertyName.RECURSION) is RecursionFunction recursion)
+    if (DoRecursion && i.RecursionAttribute is RecursionFunction recursion)
       return ShadeRecursion(recursion, i, depth, importance, ref p1, color, hash);
 
     Vector3d viewer = -p1.Normalized();
@@ -99,36 +100,15 @@ public class RayTracing : RayCasting
       bool phong = i.ReflectanceModel!.GetType() == typeof(PhongModel) && i.Material is PhongMaterial && surface.Length <= 16;
       Span<double> buffer = stackalloc double[16];
 
-      foreach (ILightSource source in sc.Sources)
+      // A LinkedList (GrCis's type) is walked by nodes: no boxed enumerator per hit.
+      if (sc.Sources is LinkedList<ILightSource> linked)
       {
-        double[]? intensity = source.GetIntensity(i, out Vector3d dir);
-        if (intensity == null)
-          continue;
-        double transmit = 1.0;
-        if (DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0))
-        {
-          transmit = TransparentShadows ? ShadowTransmittance(i.CoordWorld, dir) : Occluded(i.CoordWorld, dir) ? 0.0 : 1.0;
-          if (transmit <= 0.0)
-            continue;
-        }
-        scoped ReadOnlySpan<double> reflection;
-        if (phong)
-        {
-          Span<double> r = buffer[..surface.Length];
-          PhongModel.ColorReflection((PhongMaterial)i.Material, i.Normal, dir, viewer, ReflectionComponent.ALL, r);
-          reflection = r;
-        }
-        else
-        {
-          double[]? arr = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
-          if (arr == null)
-            continue;
-          reflection = arr;
-        }
-        for (int b = 0; b < bands; b++)
-          color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * reflection[Math.Min(b, reflection.Length - 1)];
-        hash = hash * HASH_LIGHT + source.GetHashCode();
+        for (LinkedListNode<ILightSource>? n = linked.First; n != null; n = n.Next)
+          hash = AddLight(n.Value, i, viewer, phong, surface, buffer, color, hash);
       }
+      else
+        foreach (ILightSource source in sc.Sources)
+          hash = AddLight(source, i, viewer, phong, surface, buffer, color, hash);
     }
 
     if (depth++ >= MaxLevel || (!DoReflections && !DoRefractions))
@@ -230,6 +210,38 @@ public class RayTracing : RayCasting
       first = false;
     }
     return transmit;
+  }
+
+  /// <summary>Adds one light's direct contribution (shadow ray included) to <paramref name="color"/>; returns the hash.</summary>
+  long AddLight(ILightSource source, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
+  {
+    double[]? intensity = source.GetIntensity(i, out Vector3d dir);
+    if (intensity == null)
+      return hash;
+    double transmit = 1.0;
+    if (DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0))
+    {
+      transmit = TransparentShadows ? ShadowTransmittance(i.CoordWorld, dir) : Occluded(i.CoordWorld, dir) ? 0.0 : 1.0;
+      if (transmit <= 0.0)
+        return hash;
+    }
+    int bands = color.Length;
+    if (phong)
+    {
+      Span<double> r = buffer[..surface.Length];
+      PhongModel.ColorReflection((PhongMaterial)i.Material!, i.Normal, dir, viewer, ReflectionComponent.ALL, r);
+      for (int b = 0; b < bands; b++)
+        color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * r[Math.Min(b, r.Length - 1)];
+    }
+    else
+    {
+      double[]? arr = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
+      if (arr == null)
+        return hash;
+      for (int b = 0; b < bands; b++)
+        color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * arr[Math.Min(b, arr.Length - 1)];
+    }
+    return hash * HASH_LIGHT + source.GetHashCode();
   }
 
   /// <summary>Custom shading by the solid's <see cref="RecursionFunction"/>.</summary>

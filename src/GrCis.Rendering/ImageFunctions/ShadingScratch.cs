@@ -11,6 +11,14 @@ internal static class ShadingScratch
 {
   [ThreadStatic] static PhongMaterial?[]? materials;
   [ThreadStatic] static double[]?[]? buffers;
+  [ThreadStatic] static Intersection?[]? intersections;
+
+  /// <summary>This thread's reusable intersection of <paramref name="depth"/> (the fast path fills it per hit).</summary>
+  public static Intersection Intersection(int depth)
+  {
+    Intersection?[] pool = intersections = Grow(intersections, depth);
+    return pool[depth] ??= new Intersection();
+  }
 
   /// <summary>
   /// The material to shade with: <paramref name="m"/> with colour <paramref name="surface"/>. GrCis clones

@@ -285,25 +285,134 @@ internal sealed class MeshBvh
 
   void TestTriangle(int k, double ox, double oy, double oz, double dx, double dy, double dz, List<MeshHit> hits)
   {
+    if (Triangle(k, ox, oy, oz, dx, dy, dz, out double t, out double u, out double v, out bool front))
+      hits.Add(new MeshHit { T = t, Triangle = triId[k], U = u, V = v, Front = front });
+  }
+
+  /// <summary>Möller–Trumbore against the k-th triangle in leaf order (the one routine both queries use).</summary>
+  bool Triangle(int k, double ox, double oy, double oz, double dx, double dy, double dz,
+                out double t, out double u, out double v, out bool front)
+  {
     int o = 9 * k;
     double e1x = tri[o + 3], e1y = tri[o + 4], e1z = tri[o + 5];
     double e2x = tri[o + 6], e2y = tri[o + 7], e2z = tri[o + 8];
+    t = u = v = 0.0;
+    front = false;
 
     // Möller–Trumbore: pvec = d × e2, det = e1 · pvec.
     double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
     double det = e1x * px + e1y * py + e1z * pz;
     if (det == 0.0)
-      return;
+      return false;
     double inv = 1.0 / det;
     double tx = ox - tri[o], ty = oy - tri[o + 1], tz = oz - tri[o + 2];
-    double u = (tx * px + ty * py + tz * pz) * inv;
+    u = (tx * px + ty * py + tz * pz) * inv;
     if (u < 0.0 || u > 1.0)
-      return;
+      return false;
     double qx = ty * e1z - tz * e1y, qy = tz * e1x - tx * e1z, qz = tx * e1y - ty * e1x;
-    double v = (dx * qx + dy * qy + dz * qz) * inv;
+    v = (dx * qx + dy * qy + dz * qz) * inv;
     if (v < 0.0 || u + v > 1.0)
-      return;
-    double t = (e2x * qx + e2y * qy + e2z * qz) * inv;
-    hits.Add(new MeshHit { T = t, Triangle = triId[k], U = u, V = v, Front = det > 0.0 });
+      return false;
+    t = (e2x * qx + e2y * qy + e2z * qz) * inv;
+    front = det > 0.0;
+    return true;
+  }
+
+  /// <summary>
+  /// The first hit in the list's order (T, then triangle) among hits <see cref="Intersection.FirstIntersection"/>
+  /// accepts (<c>T &gt; 0</c>, <c>T² len2 &gt; RAY_EPSILON2</c>) when <paramref name="accepted"/>; otherwise the
+  /// last hit in that order among those it rejects. Allocation-free, nearest boxes first, pruned by the best so far.
+  /// </summary>
+  public bool Nearest(in Vector3d p0, in Vector3d p1, double len2, bool accepted, out MeshHit best)
+  {
+    best = default;
+    if (triId.Length == 0)
+      return false;
+    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
+    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
+
+    // Rejected hits have T ≤ sqrt(RAY_EPSILON2 / len2) (up to rounding; the exact test decides).
+    double limit = Math.Sqrt(Intersection.RAY_EPSILON2 / len2);
+    limit += 1e-9 * limit + 1e-300;
+    bool found = false;
+    double bestT = accepted ? double.PositiveInfinity : double.NegativeInfinity;
+    int bestTri = 0;
+
+    Span<int> stack = stackalloc int[128];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0)
+    {
+      int node = stack[--sp];
+      if (!LineBox(node, ox, oy, oz, dx, dy, dz, ix, iy, iz, out double tn, out double tf))
+        continue;
+      // Accepted: T in (0, best]; rejected: T in [best, limit].
+      if (accepted ? (tf <= 0.0 || tn > bestT) : (tn > limit || tf < bestT))
+        continue;
+      int count = counts[node];
+      if (count == 0)
+      {
+        if (sp + 2 > stack.Length)
+        {
+          Span<int> bigger = new int[stack.Length * 2];
+          stack.CopyTo(bigger);
+          stack = bigger;
+        }
+        int left = firstOrLeft[node];
+        // Push the far child first so that the near one (by the ray's direction) is popped first.
+        if (NearIsRight(left, dx, dy, dz) == accepted)
+        {
+          stack[sp++] = left;
+          stack[sp++] = left + 1;
+        }
+        else
+        {
+          stack[sp++] = left + 1;
+          stack[sp++] = left;
+        }
+        continue;
+      }
+      int end = firstOrLeft[node] + count;
+      for (int k = firstOrLeft[node]; k < end; k++)
+      {
+        if (!Triangle(k, ox, oy, oz, dx, dy, dz, out double t, out double u, out double v, out bool front))
+          continue;
+        if ((t > 0.0 && t * t * len2 > Intersection.RAY_EPSILON2) != accepted)
+          continue;
+        int id = triId[k];
+        bool better = accepted
+          ? t < bestT || (t == bestT && id < bestTri)
+          : t > bestT || (t == bestT && id > bestTri);
+        if (!found || better)
+        {
+          found = true;
+          bestT = t;
+          bestTri = id;
+          best = new MeshHit { T = t, Triangle = id, U = u, V = v, Front = front };
+        }
+      }
+    }
+    return found;
+  }
+
+  /// <summary>Whether the right child's box centre lies farther along the ray than the left's.</summary>
+  bool NearIsRight(int left, double dx, double dy, double dz)
+  {
+    int a = 6 * left, b = a + 6;
+    double ca = (boxes[a] + boxes[a + 3]) * dx + (boxes[a + 1] + boxes[a + 4]) * dy + (boxes[a + 2] + boxes[a + 5]) * dz;
+    double cb = (boxes[b] + boxes[b + 3]) * dx + (boxes[b + 1] + boxes[b + 4]) * dy + (boxes[b + 2] + boxes[b + 5]) * dz;
+    return cb < ca;
+  }
+
+  /// <summary>Parameter interval of the line in a node's box (the same widened slabs as <see cref="IntersectAll"/>).</summary>
+  bool LineBox(int node, double ox, double oy, double oz, double dx, double dy, double dz, double ix, double iy, double iz,
+               out double tMin, out double tMax)
+  {
+    int o = 6 * node;
+    tMin = double.NegativeInfinity;
+    tMax = double.PositiveInfinity;
+    return Slab(boxes[o], boxes[o + 3], ox, dx, ix, ref tMin, ref tMax) &&
+           Slab(boxes[o + 1], boxes[o + 4], oy, dy, iy, ref tMin, ref tMax) &&
+           Slab(boxes[o + 2], boxes[o + 5], oz, dz, iz, ref tMin, ref tMax);
   }
 }

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Threading;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -13,7 +14,7 @@ namespace Rendering;
 /// coordinates are interpolated when the mesh has them (GrCis leaves them zero). The search
 /// structure (<see cref="MeshBvh"/>) is built on first use; change the mesh before rendering.
 /// </summary>
-public class TriangleMesh : DefaultSceneNode, ISolid
+public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
 {
   /// <summary>The mesh (GrCis keeps it reachable for subclasses).</summary>
   protected SceneBrep mesh;
@@ -61,11 +62,10 @@ public class TriangleMesh : DefaultSceneNode, ISolid
     if (hits.Count == 0)
       return null;
     if (hits.Count > 1)
-      hits.Sort(static (x, y) => x.T.CompareTo(y.T));
+      hits.Sort(static (x, y) => x.T != y.T ? x.T.CompareTo(y.T) : x.Triangle.CompareTo(y.Triangle));   // ties: a fixed order
 
     // A crossing through a shared edge or vertex is found in each incident triangle: keep one.
-    double len = p1.Length;
-    double eps = 1e-10 * Math.Max(b.Extent, 1e-300) / len;
+    double eps = DuplicateTolerance(b, p1);
     var result = new LinkedList<Intersection>();
     for (int i = 0; i < hits.Count; i++)
     {
@@ -85,6 +85,71 @@ public class TriangleMesh : DefaultSceneNode, ISolid
         result.AddLast(new Intersection(this) { T = h.T, Enter = h.Front, Front = h.Front, CoordLocal = p, SolidData = data });
     }
     return result;
+  }
+
+  static double DuplicateTolerance(MeshBvh b, in Vector3d p1) => 1e-10 * Math.Max(b.Extent, 1e-300) / p1.Length;
+
+  // ---------------------------------------------------------------- fast path (same triangle test, same list)
+
+  /// <summary>Shell mode lists overlapping entry/exit pairs: answered through the list API.</summary>
+  public virtual bool SupportsFastPath => !ShellMode && SolidSupport.UsesGeometryOf(this, typeof(TriangleMesh));
+
+  /// <summary>An open mesh's list may start "inside" (a back face first): tested for every ray.</summary>
+  public virtual bool IsClosed => false;
+
+  /// <summary>
+  /// Two allocation-free BVH queries: the first accepted hit in list order, and the last rejected one
+  /// (its Enter is the CSG state before the first accepted record; duplicates dropped by
+  /// <see cref="Intersect"/> share their predecessor's Enter). In the rare case that the list would drop
+  /// the first accepted hit as a duplicate of a rejected one, the list itself answers.
+  /// </summary>
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    MeshBvh b = Bvh;
+    bool hasFirst = b.Nearest(p0, p1, len2, true, out MeshHit first);
+    bool hasLast = b.Nearest(p0, p1, len2, false, out MeshHit last);
+    insideBefore = hasLast ? last.Front : hasFirst && !first.Front;
+    if (!hasFirst)
+      return false;
+    if (hasLast && last.Front == first.Front && first.T - last.T <= DuplicateTolerance(b, p1))
+      return FirstFromList(p0, p1, len2, out hit, out insideBefore);
+    hit.T = first.T;
+    hit.CoordLocal = p0 + first.T * p1;
+    hit.Data = first.Triangle;
+    hit.Aux = new Vector3d(first.U, first.V, 0.0);
+    hit.Enter = hit.Front = first.Front;
+    return true;
+  }
+
+  bool FirstFromList(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    LinkedList<Intersection>? list = Intersect(p0, p1);
+    if (list == null || list.First == null)
+      return false;
+    insideBefore = !list.First.Value.Enter;
+    foreach (Intersection i in list)
+    {
+      if (SolidSupport.Accepted(i.T, len2))
+      {
+        var d = (HitData)i.SolidData!;
+        hit = new FastHit { T = i.T, CoordLocal = i.CoordLocal, Data = d.Face, Aux = new Vector3d(d.U, d.V, 0.0), Enter = i.Enter, Front = i.Front };
+        return true;
+      }
+      insideBefore = i.Enter;
+    }
+    return false;
+  }
+
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.SolidData = new HitData(hit.Data, hit.Aux.X, hit.Aux.Y);
   }
 
   public override void CompleteIntersection(Intersection inter)

@@ -122,6 +122,76 @@ public class Intersection : IComparable<Intersection>
     completed = true;
   }
 
+  /// <summary>The solid's RECURSION attribute resolved at prepare time (valid when <see cref="RecursionCached"/>).</summary>
+  internal object? CachedRecursion;
+  internal bool RecursionCached;
+
+  /// <summary>The solid's <see cref="PropertyName.RECURSION"/> attribute (from the prepared scene when it resolved it).</summary>
+  internal object? RecursionAttribute => RecursionCached ? CachedRecursion : Solid?.GetAttribute(PropertyName.RECURSION);
+
+  // This object's own surface-colour copy, reused when the object is (pooled fast path).
+  double[]? spareColor;
+
+  /// <summary>
+  /// Makes a pooled intersection fresh for <paramref name="solid"/>: every field as after
+  /// <c>new Intersection(solid)</c> (the fast path reuses one object per thread and recursion depth).
+  /// </summary>
+  internal void Reset(ISolid solid)
+  {
+    Enter = Front = false;
+    T = 0.0;
+    Solid = solid;
+    SolidData = null;
+    CoordLocal = NormalLocal = CoordWorld = CoordObject = Normal = TangentU = TangentV = default;
+    TextureCoord = default;
+    LocalToWorld = WorldToLocal = LocalToObject = default;
+    SurfaceColor = null;
+    ReflectanceModel = null;
+    Material = null;
+    Textures = null;
+    CachedRecursion = null;
+    RecursionCached = false;
+    completed = textureApplied = false;
+  }
+
+  /// <summary>
+  /// <see cref="CompleteWith"/> with the solid's attributes resolved at prepare time (the same look-ups,
+  /// done once per prepared member instead of once per hit): reflectance model, material, colour, textures.
+  /// </summary>
+  internal void CompleteCached(in Matrix4d localToWorld, in Matrix4d worldToLocal, in Matrix4d localToObject,
+                               IReflectanceModel model, IMaterial material, double[]? color, LinkedList<ITexture>? textures,
+                               object? recursion)
+  {
+    CachedRecursion = recursion;
+    RecursionCached = true;
+    if (completed)
+      return;
+    LocalToWorld = localToWorld;
+    WorldToLocal = worldToLocal;
+    LocalToObject = localToObject;
+    CoordWorld = Vector3d.TransformPosition(CoordLocal, LocalToWorld);
+    CoordObject = Vector3d.TransformPosition(CoordLocal, LocalToObject);
+    ReflectanceModel = model;
+    Material = material;
+    if (SurfaceColor == null && color != null)
+    {
+      // GrCis copies the colour per hit (textures may change it): reuse this object's own copy.
+      double[]? own = spareColor;
+      if (own == null || own.Length != color.Length)
+        spareColor = own = new double[color.Length];
+      Array.Copy(color, own, color.Length);
+      SurfaceColor = own;
+    }
+    Textures = textures;
+
+    Solid!.CompleteIntersection(this);
+    Normal.Normalize();
+    if (Enter != Front)
+      Normal = -Normal;
+    SurfaceColor ??= new double[] { 0.0, 0.0, 0.0 };
+    completed = true;
+  }
+
   /// <summary>The first hit in front of the ray origin (farther than <see cref="RAY_EPSILON"/>), or null.</summary>
   public static Intersection? FirstIntersection(LinkedList<Intersection>? list, ref Vector3d p1)
   {
@@ -156,7 +226,7 @@ public class Intersection : IComparable<Intersection>
     return d * d * p1.LengthSquared > RAY_EPSILON2;
   }
 
-  /// <summary>Number of primary and secondary rays cast (statistics; updated without locking).</summary>
+  /// <summary>Rays cast by finished renders (statistics): workers count per thread (<see cref="Execution.RayCounter"/>) and each render adds its total here when it ends.</summary>
   public static long countRays;
 
   /// <summary>Number of intersection queries (statistics).</summary>

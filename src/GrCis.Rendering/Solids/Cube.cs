@@ -1,5 +1,6 @@
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -7,12 +8,25 @@ namespace Rendering;
 /// The unit cube [0,1]³ (not centred). Texture coordinates are the two local coordinates
 /// spanning the face that was hit: (y, z) on ±x faces, (x, z) on ±y faces, (x, y) on ±z faces.
 /// </summary>
-public class Cube : DefaultSceneNode, ISolid
+public class Cube : DefaultSceneNode, ISolid, IFastSolid
 {
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
-    double tMin = double.NegativeInfinity, tMax = double.PositiveInfinity;
-    int faceMin = -1, faceMax = -1;
+    if (!Slabs(p0, p1, out double tMin, out int faceMin, out double tMax, out int faceMax))
+      return null;
+
+    var result = new LinkedList<Intersection>();
+    result.AddLast(new Intersection(this) { T = tMin, Enter = true, Front = true, CoordLocal = p0 + tMin * p1, NormalLocal = FaceNormal(faceMin) });
+    result.AddLast(new Intersection(this) { T = tMax, Enter = false, Front = false, CoordLocal = p0 + tMax * p1, NormalLocal = FaceNormal(faceMax) });
+    return result;
+  }
+
+  /// <summary>Entry and exit parameters and faces of the line in the cube; false on a miss.</summary>
+  static bool Slabs(in Vector3d p0, in Vector3d p1, out double tMin, out int faceMin, out double tMax, out int faceMax)
+  {
+    tMin = double.NegativeInfinity;
+    tMax = double.PositiveInfinity;
+    faceMin = faceMax = -1;
 
     // Slab test, remembering which face bounds the interval on each side.
     for (int axis = 0; axis < 3; axis++)
@@ -21,7 +35,7 @@ public class Cube : DefaultSceneNode, ISolid
       if (d == 0.0)
       {
         if (o <= 0.0 || o >= 1.0)
-          return null;
+          return false;
         continue;
       }
       double inv = 1.0 / d;
@@ -44,15 +58,39 @@ public class Cube : DefaultSceneNode, ISolid
         faceMax = faceHigh;
       }
       if (tMin >= tMax)
-        return null;
+        return false;
     }
-    if (faceMin < 0 || faceMax < 0)
-      return null;   // zero direction
+    return faceMin >= 0 && faceMax >= 0;   // both negative: zero direction
+  }
 
-    var result = new LinkedList<Intersection>();
-    result.AddLast(new Intersection(this) { T = tMin, Enter = true, Front = true, CoordLocal = p0 + tMin * p1, NormalLocal = FaceNormal(faceMin) });
-    result.AddLast(new Intersection(this) { T = tMax, Enter = false, Front = false, CoordLocal = p0 + tMax * p1, NormalLocal = FaceNormal(faceMax) });
-    return result;
+  // ---------------------------------------------------------------- fast path (same slabs, same records)
+
+  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(Cube));
+
+  public virtual bool IsClosed => true;
+
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    if (!Slabs(p0, p1, out double tMin, out int faceMin, out double tMax, out int faceMax) ||
+        !SolidSupport.FirstOfPair(tMin, tMax, len2, out bool second, out insideBefore))
+      return false;
+    double t = second ? tMax : tMin;
+    hit.T = t;
+    hit.CoordLocal = p0 + t * p1;
+    hit.Data = second ? faceMax : faceMin;
+    hit.Enter = hit.Front = !second;
+    return true;
+  }
+
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = FaceNormal(hit.Data);
   }
 
   /// <summary>Outward normal of face 2·axis (positive side) or 2·axis + 1 (negative side).</summary>

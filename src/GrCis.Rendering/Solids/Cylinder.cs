@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -9,7 +10,7 @@ namespace Rendering;
 /// at z = <see cref="ZMin"/> and z = <see cref="ZMax"/>. Texture coordinates: u = longitude
 /// about z in [0, 1) on the side and 0 on the caps, v = local z.
 /// </summary>
-public class Cylinder : DefaultSceneNode, ISolid
+public class Cylinder : DefaultSceneNode, ISolid, IFastSolid
 {
   /// <summary>Lower cap (−∞: none).</summary>
   public double ZMin { get; set; }
@@ -108,17 +109,56 @@ public class Cylinder : DefaultSceneNode, ISolid
 
   Intersection Record(Vector3d p0, Vector3d p1, double t, int cap, bool enter)
   {
-    Vector3d p = p0 + t * p1;
-    if (cap != 0)
-      p.Z = cap < 0 ? ZMin : ZMax;   // exactly on the cap plane
+    Vector3d p = RecordPoint(p0, p1, t, cap);
     return new Intersection(this)
     {
       T = t,
       Enter = enter,
       Front = enter,
       CoordLocal = p,
-      NormalLocal = cap == 0 ? new Vector3d(p.X, p.Y, 0.0) : new Vector3d(0.0, 0.0, cap),
+      NormalLocal = RecordNormal(p, cap),
     };
+  }
+
+  Vector3d RecordPoint(in Vector3d p0, in Vector3d p1, double t, int cap)
+  {
+    Vector3d p = p0 + t * p1;
+    if (cap != 0)
+      p.Z = cap < 0 ? ZMin : ZMax;   // exactly on the cap plane
+    return p;
+  }
+
+  static Vector3d RecordNormal(in Vector3d p, int cap) =>
+    cap == 0 ? new Vector3d(p.X, p.Y, 0.0) : new Vector3d(0.0, 0.0, cap);
+
+  // ---------------------------------------------------------------- fast path (same Span, same records)
+
+  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(Cylinder));
+
+  /// <summary>Capped cylinders are closed; an open-ended tube's records may lie beyond any box.</summary>
+  public virtual bool IsClosed => double.IsFinite(ZMin) && double.IsFinite(ZMax);
+
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    if (!Span(p0, p1, out double tIn, out int capIn, out double tOut, out int capOut) ||
+        !SolidSupport.FirstOfPair(tIn, tOut, len2, out bool second, out insideBefore))
+      return false;
+    hit.T = second ? tOut : tIn;
+    hit.Data = second ? capOut : capIn;
+    hit.CoordLocal = RecordPoint(p0, p1, hit.T, hit.Data);
+    hit.Enter = hit.Front = !second;
+    return true;
+  }
+
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = RecordNormal(hit.CoordLocal, hit.Data);
   }
 
   public override void CompleteIntersection(Intersection inter)

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -38,6 +39,47 @@ public class CylinderFront : Cylinder
       result.AddLast(new Intersection(this) { T = t2, Enter = false, Front = false, CoordLocal = q, NormalLocal = new Vector3d(q.X, q.Y, 0.0), SolidData = p1 });
     }
     return result;
+  }
+
+  // ---------------------------------------------------------------- fast path (same Span, same records)
+
+  public override bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(CylinderFront));
+
+  /// <summary>Without the shell the list ends inside; the shell's exit may lie just outside the box: open.</summary>
+  public override bool IsClosed => false;
+
+  public override bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    if (!Span(p0, p1, out double t, out int capIn, out _, out _) || capIn != 0)
+      return false;
+    if (SolidSupport.Accepted(t, len2))
+    {
+      hit = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
+      return true;
+    }
+    insideBefore = true;
+    if (!shell)
+      return false;
+    double t2 = t + Intersection.SHELL_THICKNESS;
+    if (!SolidSupport.Accepted(t2, len2))
+    {
+      insideBefore = false;
+      return false;
+    }
+    hit = new FastHit { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
+    return true;
+  }
+
+  public override void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = new Vector3d(hit.CoordLocal.X, hit.CoordLocal.Y, 0.0);
+    target.SolidData = hit.Aux;
   }
 
   public override void CompleteIntersection(Intersection inter)

@@ -1,5 +1,6 @@
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -9,7 +10,7 @@ namespace Rendering;
 /// (x, y) along infinite directions, normalised to [0, 1] along bounded ones; on the
 /// triangle the two barycentric-like coordinates x/xMax, y/yMax.
 /// </summary>
-public class Plane : DefaultSceneNode, ISolid
+public class Plane : DefaultSceneNode, ISolid, IFastSolid
 {
   /// <summary>Lower bound of x.</summary>
   public double XMin { get; set; }
@@ -76,13 +77,7 @@ public class Plane : DefaultSceneNode, ISolid
 
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
-    if (p1.Z == 0.0)
-      return null;
-
-    double t = -p0.Z / p1.Z;
-    double x = p0.X + t * p1.X;
-    double y = p0.Y + t * p1.Y;
-    if (!Inside(x, y))
+    if (!Hit(p0, p1, out double t, out double x, out double y))
       return null;
 
     bool front = p1.Z < 0.0;
@@ -96,6 +91,54 @@ public class Plane : DefaultSceneNode, ISolid
       NormalLocal = Vector3d.UnitZ,
     });
     return result;
+  }
+
+  /// <summary>The one record's parameter and local (x, y); false on a miss.</summary>
+  bool Hit(in Vector3d p0, in Vector3d p1, out double t, out double x, out double y)
+  {
+    t = x = y = 0.0;
+    if (p1.Z == 0.0)
+      return false;
+
+    t = -p0.Z / p1.Z;
+    x = p0.X + t * p1.X;
+    y = p0.Y + t * p1.Y;
+    return Inside(x, y);
+  }
+
+  // ---------------------------------------------------------------- fast path (same Hit, same record)
+
+  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(Plane));
+
+  /// <summary>One record (an exit from below): the list may start inside, so the plane is tested for every ray.</summary>
+  public virtual bool IsClosed => false;
+
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    if (!Hit(p0, p1, out double t, out double x, out double y))
+      return false;
+    bool front = p1.Z < 0.0;
+    if (SolidSupport.Accepted(t, len2))
+    {
+      insideBefore = !front;
+      hit.T = t;
+      hit.CoordLocal = new Vector3d(x, y, 0.0);
+      hit.Enter = hit.Front = front;
+      return true;
+    }
+    insideBefore = front;
+    return false;
+  }
+
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = Vector3d.UnitZ;
   }
 
   bool Inside(double x, double y)

@@ -1,4 +1,6 @@
 using System;
+using System.Collections.Concurrent;
+using System.Reflection;
 using OpenTK.Mathematics;
 
 namespace Rendering;
@@ -62,4 +64,42 @@ internal static class SolidSupport
   /// <summary>Longitude texture coordinate about the z axis: atan2(y, x)/2π + 0.5 (0 on the axis).</summary>
   public static double Longitude(double x, double y) =>
     x == 0.0 && y == 0.0 ? 0.0 : Math.Atan2(y, x) / (2.0 * Math.PI) + 0.5;
+
+  // ---------------------------------------------------------------- fast path (IFastSolid) support
+
+  static readonly ConcurrentDictionary<(Type Actual, Type Declaring), bool> ownGeometry = new();
+
+  /// <summary>
+  /// True when <paramref name="solid"/>'s <c>Intersect</c> is the one declared by <paramref name="declaring"/>
+  /// and its <c>GetBoundingBox</c> is not overridden below it: only then may the allocation-free kernel
+  /// of <paramref name="declaring"/> answer for it (a script subclass may change the records). Cached per type.
+  /// </summary>
+  public static bool UsesGeometryOf(object solid, Type declaring) =>
+    ownGeometry.GetOrAdd((solid.GetType(), declaring), static k =>
+    {
+      MethodInfo? intersect = k.Actual.GetMethod(nameof(IIntersectable.Intersect), new[] { typeof(Vector3d), typeof(Vector3d) });
+      Type byRef = typeof(Vector3d).MakeByRefType();
+      MethodInfo? box = k.Actual.GetMethod(nameof(ISolid.GetBoundingBox), new[] { byRef, byRef });
+      return intersect?.DeclaringType == k.Declaring && box?.DeclaringType != null && box.DeclaringType.IsAssignableFrom(k.Declaring);
+    });
+
+  /// <summary>The test <see cref="Intersection.FirstIntersection"/> applies (with the world ray's |p1|²).</summary>
+  public static bool Accepted(double t, double len2) => t > 0.0 && t * t * len2 > Intersection.RAY_EPSILON2;
+
+  /// <summary>
+  /// First accepted record of the list [enter at <paramref name="t0"/>, exit at <paramref name="t1"/>]:
+  /// <paramref name="second"/> tells which; <paramref name="insideBefore"/> is the CSG state before it.
+  /// </summary>
+  public static bool FirstOfPair(double t0, double t1, double len2, out bool second, out bool insideBefore)
+  {
+    second = insideBefore = false;
+    if (Accepted(t0, len2))
+      return true;
+    if (Accepted(t1, len2))
+    {
+      second = insideBefore = true;
+      return true;
+    }
+    return false;
+  }
 }

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -8,7 +9,7 @@ namespace Rendering;
 /// The unit sphere centred at the local origin. Texture coordinates: u = longitude about
 /// the z axis in [0, 1), v = polar angle / π (0 at the +z pole, 1 at the −z pole).
 /// </summary>
-public class Sphere : DefaultSceneNode, ISolid
+public class Sphere : DefaultSceneNode, ISolid, IFastSolid
 {
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
@@ -36,6 +37,35 @@ public class Sphere : DefaultSceneNode, ISolid
     Vector3d closest = p0 - (od / dd) * p1;
     double disc = dd * (1.0 - closest.LengthSquared);
     return SolidSupport.SolveQuadratic(dd, od, oo - 1.0, disc, out t0, out t1);
+  }
+
+  // ---------------------------------------------------------------- fast path (same Roots, same records)
+
+  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(Sphere));
+
+  public virtual bool IsClosed => true;
+
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    if (!Roots(p0, p1, out double t0, out double t1) ||
+        !SolidSupport.FirstOfPair(t0, t1, len2, out bool second, out insideBefore))
+      return false;
+    double t = second ? t1 : t0;
+    hit.T = t;
+    hit.CoordLocal = p0 + t * p1;
+    hit.Enter = hit.Front = !second;
+    return true;
+  }
+
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = hit.CoordLocal;
   }
 
   public override void CompleteIntersection(Intersection inter)

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -32,6 +33,47 @@ public class SphereFront : Sphere
       result.AddLast(new Intersection(this) { T = t, Enter = false, Front = false, CoordLocal = c, NormalLocal = c, SolidData = p1 });
     }
     return result;
+  }
+
+  // ---------------------------------------------------------------- fast path (same Roots, same records)
+
+  public override bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(SphereFront));
+
+  /// <summary>Without the shell the list ends inside; the shell's exit may lie just outside the box: open.</summary>
+  public override bool IsClosed => false;
+
+  public override bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    if (!Roots(p0, p1, out double t0, out _))
+      return false;
+    if (SolidSupport.Accepted(t0, len2))
+    {
+      hit = new FastHit { T = t0, CoordLocal = p0 + t0 * p1, Aux = p1, Enter = true, Front = true };
+      return true;
+    }
+    insideBefore = true;
+    if (!shell)
+      return false;
+    double t = t0 + Intersection.SHELL_THICKNESS;
+    if (!SolidSupport.Accepted(t, len2))
+    {
+      insideBefore = false;
+      return false;
+    }
+    hit = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1 };
+    return true;
+  }
+
+  public override void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.NormalLocal = hit.CoordLocal;
+    target.SolidData = hit.Aux;
   }
 
   public override void CompleteIntersection(Intersection inter)

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -14,7 +15,7 @@ namespace Rendering;
 /// bounded interval (<see cref="QuarticRoots"/>). All hits are returned, sorted, negative T included.
 /// Texture coordinates: u = longitude about z, v = angle around the tube / 2π (+0.5).
 /// </summary>
-public class Torus : DefaultSceneNode, ISolid
+public class Torus : DefaultSceneNode, ISolid, IFastSolid
 {
   /// <summary>Distance of the tube's centre line from the axis (R).</summary>
   public double bigRadius = 1.0;
@@ -58,6 +59,48 @@ public class Torus : DefaultSceneNode, ISolid
       });
     }
     return result;
+  }
+
+  // ---------------------------------------------------------------- fast path (same Solve, same records)
+
+  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(Torus));
+
+  /// <summary>Roots lie inside the (enlarged) bounding sphere and alternate from an entry: closed.</summary>
+  public virtual bool IsClosed => true;
+
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    if (!SelfHits && StartsOnSurface(p0))
+      return false;
+    Span<double> u = stackalloc double[4];
+    Span<bool> enter = stackalloc bool[4];
+    int n = Solve(p0, p1, u, enter, out Vector3d center, out Vector3d dir, out double sMid, out double length);
+    if (n == 0)
+      return false;
+    insideBefore = !enter[0];
+    for (int i = 0; i < n; i++)
+    {
+      double t = (sMid + u[i]) / length;
+      if (SolidSupport.Accepted(t, len2))
+      {
+        hit.T = t;
+        hit.CoordLocal = center + u[i] * dir;
+        hit.Enter = hit.Front = enter[i];
+        return true;
+      }
+      insideBefore = enter[i];
+    }
+    return false;
+  }
+
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
   }
 
   /// <summary>True when <paramref name="p0"/> lies on the surface (within rounding of a computed hit point).</summary>

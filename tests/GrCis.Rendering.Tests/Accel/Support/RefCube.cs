@@ -85,8 +85,14 @@ public sealed class RefCube : DefaultSceneNode, IFastSolid
   }
 
   // The boxed face index is allocated only for the winning hit.
-  public Intersection CreateIntersection(in FastHit hit) =>
-    new(this) { T = hit.T, Enter = hit.Enter, Front = hit.Front, CoordLocal = hit.CoordLocal, SolidData = hit.Data };
+  public void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.SolidData = hit.Data;
+  }
 
   public override void CompleteIntersection(Intersection inter)
   {

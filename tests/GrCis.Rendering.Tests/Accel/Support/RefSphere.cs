@@ -62,8 +62,13 @@ public sealed class RefSphere : DefaultSceneNode, IFastSolid
     return false;
   }
 
-  public Intersection CreateIntersection(in FastHit hit) =>
-    new(this) { T = hit.T, Enter = hit.Enter, Front = hit.Front, CoordLocal = hit.CoordLocal };
+  public void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+  }
 
   public override void CompleteIntersection(Intersection inter)
   {

@@ -1,0 +1,34 @@
+namespace GrCis.Cli.Bench;
+
+/// <summary>Measured numbers of one <see cref="BenchCase"/> (JSON field names are these property names).</summary>
+public sealed record BenchResult
+{
+  public required string Id { get; init; }
+  public required string Name { get; init; }
+  public string Description { get; init; } = "";
+  public required string Size { get; init; }
+  public int Spp { get; init; }
+  public int Threads { get; init; }
+  /// <summary>Wall-clock seconds of the timed render.</summary>
+  public double Seconds { get; init; }
+
+  /// <summary>Processor seconds of this process during the timed render (all threads): robust on a loaded machine.</summary>
+  public double CpuSeconds { get; init; }
+  public long Rays { get; init; }
+  public double RaysPerSecond { get; init; }
+
+  /// <summary>Seconds spent preparing the scene (flatten, BVHs, mesh BVH) before the timed render.</summary>
+  public double PrepareSeconds { get; init; }
+
+  /// <summary>Faithful path (<c>--accel none</c>) at <see cref="SlowSize"/>; null when skipped.</summary>
+  public string? SlowSize { get; init; }
+  public int SlowSpp { get; init; }
+  public double? SlowSeconds { get; init; }
+  public double? SlowRaysPerSecond { get; init; }
+
+  /// <summary>Fast rays/s over faithful rays/s, measured in the same run.</summary>
+  public double? Speedup { get; init; }
+
+  /// <summary>Fast-path queries that fell back to the faithful path (rays starting inside a solid …).</summary>
+  public long Fallbacks { get; init; }
+}

@@ -1,0 +1,134 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Threading;
+using GrCis.Cli.Jobs;
+using Rendering;
+using Rendering.Accel;
+using Rendering.Execution;
+
+namespace GrCis.Cli.Bench;
+
+/// <summary>
+/// The scene suite of <c>grcis bench</c>: classic scenes at 640×480 16 spp, GrCis's Sphere flake, the
+/// POV-Ray peer flake (9 children, depth 4), procedural torus meshes of 10k and 1M triangles (an OBJ mesh
+/// with <c>--mesh</c>), Two spheres at 1280×720. Each case is prepared and JIT-warmed by a tiny render,
+/// then timed once on the fast path and once on the faithful path at a small size.
+/// </summary>
+public static class BenchSuite
+{
+  static readonly ImageSize Vga = new(640, 480), Hd = new(1280, 720), Small = new(320, 240), Tiny = new(64, 48);
+
+  public static IReadOnlyList<BenchCase> Create(bool quick, string? meshFile)
+  {
+    var cases = new List<BenchCase>();
+    if (quick)
+    {
+      // CI: seconds, not minutes — tiny images, small meshes.
+      cases.Add(new BenchCase("five-balls", "Five balls", () => Scenes.Create("Five balls"), new(48, 36), 1, new(24, 18), 1));
+      cases.Add(new BenchCase("flake9", "Sphere flake 9×4 (POV-Ray peer)", () => Flake9(1), new(48, 36), 1, new(24, 18), 1) { Description = "depth 1: 10 spheres" });
+      cases.Add(new BenchCase("mesh-2k", "Torus mesh 2k", () => Mesh(ProceduralMesh.TorusWithTriangles(2_000)), new(48, 36), 1, new(24, 18), 1));
+      return cases;
+    }
+
+    foreach (string name in Scenes.Names)
+    {
+      // GrCis's flake (2,801 spheres) is slow on the faithful path: a tinier image for it.
+      bool flake = name == "Sphere flake";
+      cases.Add(new BenchCase(Slug(name), name, () => Scenes.Create(name), Vga, 16, flake ? Tiny : Small, 1)
+      {
+        Description = flake ? "2,801 spheres" : "",
+      });
+    }
+    cases.Add(new BenchCase("flake9", "Sphere flake 9×4 (POV-Ray peer)", () => Flake9(4), Vga, 16, Tiny, 1) { Description = "7,381 spheres" });
+    cases.Add(new BenchCase("mesh-10k", "Torus mesh 10k", () => Mesh(ProceduralMesh.Torus(100, 50)), Vga, 16, Small, 1) { Description = "10,000 triangles" });
+    cases.Add(new BenchCase("mesh-1m", "Torus mesh 1M", () => Mesh(ProceduralMesh.Torus(1000, 500)), Vga, 16, Tiny, 1) { Description = "1,000,000 triangles" });
+    if (meshFile != null)
+      cases.Add(new BenchCase("mesh-file", "Mesh " + System.IO.Path.GetFileName(meshFile), () => MeshFile(meshFile), Vga, 16, Tiny, 1));
+    cases.Add(new BenchCase("two-spheres-720p", "Two spheres 1280×720", () => Scenes.Create("Two spheres"), Hd, 16, Small, 1));
+    return cases;
+  }
+
+  /// <summary>The POV-Ray peer flake (sphereflake.pov) as a scene.</summary>
+  public static IRayScene Flake9(int depth)
+  {
+    var sc = new DefaultRayScene();
+    Scenes.SphereFlake9(sc, depth);
+    return sc;
+  }
+
+  static IRayScene Mesh(SceneBrep mesh)
+  {
+    var sc = new DefaultRayScene();
+    Scenes.MeshScene(sc, mesh);
+    return sc;
+  }
+
+  static IRayScene MeshFile(string path)
+  {
+    var mesh = new SceneBrep();
+    new WavefrontObj().ReadBrep(path, mesh);
+    var sc = new DefaultRayScene();
+    Scenes.MeshScene(sc, mesh, tilt: false);
+    return sc;
+  }
+
+  public static string Slug(string name) => name.ToLowerInvariant().Replace(' ', '-');
+
+  /// <summary>Renders one case (fast path, then the faithful path unless <paramref name="skipSlow"/>).</summary>
+  public static BenchResult Run(BenchCase c, int threads, bool skipSlow, CancellationToken cancel)
+  {
+    IRayScene scene = c.Build();
+
+    // Warm-up: JIT, and the lazily built mesh BVHs (timed as preparation).
+    var clock = Stopwatch.StartNew();
+    Render(scene, new ImageSize(8, 6), 1, threads, AccelMode.Bvh, cancel, out _);
+    double prepare = clock.Elapsed.TotalSeconds;
+
+    TimeSpan cpu0 = Process.GetCurrentProcess().TotalProcessorTime;
+    RenderResult fast = Render(scene, c.Size, c.Spp, threads, AccelMode.Bvh, cancel, out long fallbacks);
+    double cpu = (Process.GetCurrentProcess().TotalProcessorTime - cpu0).TotalSeconds;
+    var result = new BenchResult
+    {
+      Id = c.Id,
+      Name = c.Name,
+      Description = c.Description,
+      Size = c.Size.ToString(),
+      Spp = c.Spp,
+      Threads = threads,
+      Seconds = fast.Elapsed.TotalSeconds,
+      CpuSeconds = cpu,
+      Rays = fast.Rays,
+      RaysPerSecond = fast.Rays / Math.Max(fast.Elapsed.TotalSeconds, 1e-9),
+      PrepareSeconds = prepare,
+      Fallbacks = fallbacks,
+    };
+    if (skipSlow || cancel.IsCancellationRequested)
+      return result;
+
+    // Warm-up at the same small size first: a short faithful run would otherwise time tier-0 JIT code.
+    Render(scene, c.SlowSize, c.SlowSpp, threads, AccelMode.None, cancel, out _);
+    RenderResult slow = Render(scene, c.SlowSize, c.SlowSpp, threads, AccelMode.None, cancel, out _);
+    double slowRate = slow.Rays / Math.Max(slow.Elapsed.TotalSeconds, 1e-9);
+    return result with
+    {
+      SlowSize = c.SlowSize.ToString(),
+      SlowSpp = c.SlowSpp,
+      SlowSeconds = slow.Elapsed.TotalSeconds,
+      SlowRaysPerSecond = slowRate,
+      Speedup = slowRate > 0.0 ? result.RaysPerSecond / slowRate : null,
+    };
+  }
+
+  static RenderResult Render(IRayScene scene, ImageSize size, int spp, int threads, AccelMode accel, CancellationToken cancel, out long fallbacks)
+  {
+    var settings = new RenderSettings { Size = size, SamplesPerPixel = spp, Threads = threads, Accel = accel }.Validate();
+    ImageSynthesizer renderer = RenderJob.CreateSynthesizer(settings);
+    RayTracing function = RenderJob.CreateImageFunction(scene, settings);
+    var clock = Stopwatch.StartNew();
+    var image = TileRenderer.Render(scene, function, renderer, new RenderOptions { Threads = threads, Seed = 0 }, null, cancel);
+    clock.Stop();
+    fallbacks = function.LastPrepared?.FallbackCount ?? 0;
+    return new RenderResult(image, renderer.SamplesPerPixel, clock.Elapsed, TileRenderer.LastRenderRays, cancel.IsCancellationRequested);
+  }
+}
