@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using GrCis.Cli.Jobs;
 using Rendering;
+using Rendering.Execution;
 
 namespace GrCis.Cli.Animation;
 
@@ -35,12 +36,11 @@ public sealed class FrameParts
   public IImageFunction CreateFunction(IRayScene? scene)
   {
     if (scriptFunction == null)
-      return new RayTracing(scene)
-      {
-        DoShadows = settings.Shadows,
-        DoReflections = settings.Reflections,
-        DoRefractions = settings.Refractions,
-      };
+    {
+      RayTracing fresh = RenderSetup.CreateRayTracing(scene, settings.Shadows, settings.Reflections, settings.Refractions);
+      fresh.Accel = settings.Accel;
+      return fresh;
+    }
     if (Sequential || !IsLibraryRayCaster(scriptFunction))
       return scriptFunction;
 
@@ -54,9 +54,11 @@ public sealed class FrameParts
         DoReflections = rt.DoReflections,
         DoRefractions = rt.DoRefractions,
         DoRecursion = rt.DoRecursion,
+        TransparentShadows = rt.TransparentShadows,
+        FresnelRefraction = rt.FresnelRefraction,
       }
       : new RayCasting(scene);
-    copy.Accel = source.Accel;
+    copy.Accel = settings.Accel;
     return copy;
   }
 

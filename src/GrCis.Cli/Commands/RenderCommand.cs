@@ -25,62 +25,23 @@ public sealed class RenderCommand
     HelpName = "file",
   };
 
-  readonly Option<string> size = new("--size", "-s")
-  {
-    Description = "Image size WIDTHxHEIGHT",
-    HelpName = "WxH",
-    DefaultValueFactory = _ => ImageSize.Default.ToString(),
-  };
-
-  readonly Option<int> spp = new("--spp")
-  {
-    Description = "Samples per pixel: 1 = pixel centre, N > 1 = jittered n×n grid (rounded up to a square)",
-    DefaultValueFactory = _ => 1,
-  };
-
-  readonly Option<double> jitter = new("--jitter")
-  {
-    Description = "Jitter of supersamples within their cell, 0 to 1",
-    DefaultValueFactory = _ => 1.0,
-  };
-
-  readonly Option<int> threads = new("--threads", "-t")
-  {
-    Description = "Worker threads; 0 = one per processor",
-    DefaultValueFactory = _ => 0,
-  };
-
-  readonly Option<long> seed = new("--seed")
-  {
-    Description = "Seed of all sampling randomness (same seed ⇒ same image on any thread count)",
-    DefaultValueFactory = _ => 0L,
-  };
-
-  readonly Option<double> gamma = new("--gamma")
-  {
-    Description = "Display gamma of the PNG (1 = linear)",
-    DefaultValueFactory = _ => 2.2,
-  };
+  readonly RenderOptionSet render = new();
 
   readonly Option<string?> format = new("--format")
   {
     Description = "png or pfm (linear float); default: from the output file's extension",
   };
 
-  readonly Option<bool> noShadows = new("--no-shadows") { Description = "Do not cast shadow rays" };
-  readonly Option<bool> noReflections = new("--no-reflections") { Description = "Do not trace reflected rays" };
-  readonly Option<bool> noRefractions = new("--no-refractions") { Description = "Do not trace refracted rays" };
   readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
   readonly ScriptOptions scriptOptions = new();
-  readonly Option<string> accel = AccelOption.Create();
 
   public Command Build(CliEnvironment env)
   {
     var cmd = new Command("render", "Render a still image of a scene")
     {
-      scene, output, size, spp, jitter, threads, seed, gamma, format,
-      noShadows, noReflections, noRefractions, quiet, accel,
+      scene, output, format, quiet,
     };
+    render.AddTo(cmd);
     scriptOptions.AddTo(cmd);
     cmd.SetAction(parse => Execute(parse, env));
     return cmd;
@@ -89,19 +50,7 @@ public sealed class RenderCommand
   int Execute(ParseResult parse, CliEnvironment env)
   {
     // Validate everything before any work so usage errors never leave files behind.
-    RenderSettings settings = new RenderSettings
-    {
-      Size = ImageSize.Parse(parse.GetValue(size) ?? ImageSize.Default.ToString()),
-      SamplesPerPixel = parse.GetValue(spp),
-      Jitter = parse.GetValue(jitter),
-      Threads = parse.GetValue(threads),
-      Seed = parse.GetValue(seed),
-      Gamma = parse.GetValue(gamma),
-      Shadows = !parse.GetValue(noShadows),
-      Reflections = !parse.GetValue(noReflections),
-      Refractions = !parse.GetValue(noRefractions),
-      Accel = AccelOption.Parse(parse.GetValue(accel)),
-    }.Validate();
+    RenderSettings settings = render.Read(parse);
 
     ISceneSource source = scriptOptions.Resolve(parse, parse.GetValue(scene), env);
     using var scriptHost = source as IDisposable;
@@ -109,7 +58,7 @@ public sealed class RenderCommand
     target.CheckWritable();
 
     // Command line, then the script's context values, then the defaults.
-    SceneSetup setup = SceneSetup.Create(source, settings, Given(parse), scriptOptions.Time(parse));
+    SceneSetup setup = SceneSetup.Create(source, settings, render.Given(parse), scriptOptions.Time(parse));
     settings = setup.Settings;
     foreach (string note in setup.Notes)
       env.Error.WriteLine("grcis: note: " + note);
@@ -144,16 +93,6 @@ public sealed class RenderCommand
     return ExitCodes.Success;
   }
 
-  ExplicitOptions Given(ParseResult parse) => new(
-    Size: IsGiven(parse, size),
-    SamplesPerPixel: IsGiven(parse, spp),
-    Jitter: IsGiven(parse, jitter),
-    Gamma: IsGiven(parse, gamma),
-    NoShadows: parse.GetValue(noShadows),
-    NoReflections: parse.GetValue(noReflections),
-    NoRefractions: parse.GetValue(noRefractions));
-
-  static bool IsGiven(ParseResult parse, Option option) => parse.GetResult(option) is { Implicit: false };
 
   static string Summary(OutputTarget target, RenderSettings s, RenderResult r)
   {

@@ -46,10 +46,11 @@ public sealed class RenderOptionSet
   readonly Option<bool> noShadows = new("--no-shadows") { Description = "Do not cast shadow rays" };
   readonly Option<bool> noReflections = new("--no-reflections") { Description = "Do not trace reflected rays" };
   readonly Option<bool> noRefractions = new("--no-refractions") { Description = "Do not trace refracted rays" };
+  readonly Option<string> accel = AccelOption.Create();
 
   public void AddTo(Command command)
   {
-    foreach (Option o in new Option[] { size, spp, jitter, threads, seed, gamma, noShadows, noReflections, noRefractions })
+    foreach (Option o in new Option[] { size, spp, jitter, threads, seed, gamma, noShadows, noReflections, noRefractions, accel })
       command.Options.Add(o);
   }
 
@@ -77,5 +78,6 @@ public sealed class RenderOptionSet
     Shadows = !parse.GetValue(noShadows),
     Reflections = !parse.GetValue(noReflections),
     Refractions = !parse.GetValue(noRefractions),
+    Accel = AccelOption.Parse(parse.GetValue(accel)),
   }.Validate();
 }
