@@ -41,7 +41,7 @@ public abstract class ImageSynthesizer : IRenderer
       return;
     double inv = 1.0 / gamma;
     for (int b = 0; b < color.Length; b++)
-      color[b] = Math.Clamp(Math.Pow(color[b], inv), 0.0, 1.0);
+      color[b] = color[b] > 0.0 ? Math.Min(Math.Pow(color[b], inv), 1.0) : 0.0;   // negative or NaN → black
   }
 
   public void RenderRectangle(FloatImage image, int x1, int y1, int x2, int y2)
