@@ -27,4 +27,7 @@ public sealed class CliEnvironment
 
   /// <summary>Signalled by Ctrl+C; a cancelled render writes nothing.</summary>
   public CancellationToken Cancel { get; init; }
+
+  /// <summary>Scenes a test registers by name, tried before the resolver (the tests' animated scenes).</summary>
+  internal Func<string, SceneSources.ISceneSource?>? ExtraScenes { get; init; }
 }

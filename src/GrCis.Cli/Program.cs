@@ -58,6 +58,10 @@ public static class Program
       };
       return parse.Invoke(config);
     }
+    catch (Exception e) when (ScriptErrors.Handles(e))
+    {
+      return ScriptErrors.Report(e, env);
+    }
     catch (UsageException e)
     {
       return Fail(env, ExitCodes.Usage, e.Message);
@@ -87,7 +91,9 @@ public static class Program
     var root = new RootCommand("grcis: the GrCis ray tracer on .NET")
     {
       new RenderCommand().Build(env),
+      new AnimateCommand().Build(env),
       ListCommand.Build(env),
+      new InfoCommand().Build(env),
       BenchCommand.Build(env),
     };
     return root;

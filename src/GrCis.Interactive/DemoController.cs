@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Threading;
 using System.Threading.Tasks;
 using Rendering;
@@ -21,6 +22,24 @@ public sealed class DemoController : IDisposable
   public DemoController(SceneCatalog catalog) => Catalog = catalog ?? throw new ArgumentNullException(nameof(catalog));
 
   public SceneCatalog Catalog { get; }
+
+  /// <summary>
+  /// The demo as GrCis starts it from its command line (<c>-dir</c>, <c>-scene</c>, <c>-nodefault</c>):
+  /// the built-in scenes unless <c>-nodefault</c>, then the scripts; the first <c>-scene</c> file (else
+  /// GrCis's default scene) selected. Unknown options and missing files or folders go to
+  /// <paramref name="problems"/> as messages for the user; everything else is still loaded.
+  /// </summary>
+  public static DemoController FromCommandLine(IReadOnlyList<string> args, IScriptEvaluator? evaluator, ICollection<string> problems)
+  {
+    ArgumentNullException.ThrowIfNull(args);
+    ArgumentNullException.ThrowIfNull(problems);
+    DemoCommandLine commandLine = DemoCommandLine.Parse(args);
+    foreach (string e in commandLine.Errors)
+      problems.Add(e);
+    var catalog = new SceneCatalog(evaluator);
+    SceneEntry? first = catalog.AddFromCommandLine(commandLine, problems);
+    return new DemoController(catalog) { Selected = first };
+  }
 
   public RenderSettings Settings { get; set; } = new();
 

@@ -56,6 +56,21 @@ public sealed class CompiledScript
   public void Run(IRayScene scene, string? param, Dictionary<string, object> context) =>
     Run(new ScriptGlobals(scene, param, context));
 
+  /// <summary>
+  /// For an exception thrown later by code the script created (a texture, camera or solid class declared
+  /// in it, called while rendering): the same exception wrapped with the script line that threw, or null
+  /// when no frame of the exception lies in this script.
+  /// </summary>
+  public ScriptRuntimeException? FindScriptLine(Exception ex)
+  {
+    ArgumentNullException.ThrowIfNull(ex);
+    if (ex is ScriptRuntimeException sre && sre.Path == Path)
+      return sre;
+    return RuntimeErrors.FindScriptFrame(ex, Path, out int line, out int column)
+      ? new ScriptRuntimeException(Path, line, column, ex)
+      : null;
+  }
+
   /// <summary>Starts unloading the script's code; it goes once no object created by the script is alive.</summary>
   internal void Unload()
   {

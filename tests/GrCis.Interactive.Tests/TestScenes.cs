@@ -17,14 +17,14 @@ internal static class TestScenes
     root.SetAttribute(PropertyName.REFLECTANCE_MODEL, new PhongModel());
     root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { 0.5, 0.5, 0.5 }, 0.1, 0.6, 0.3, 16));
 
-    var sphere = new TestSphere();
+    var sphere = new Sphere();
     var m = glass
       ? new PhongMaterial(new[] { 0.0, 0.2, 0.1 }, 0.05, 0.05, 0.1, 128) { Kt = 0.9, n = 1.5 }
       : new PhongMaterial(new[] { 1.0, 1.0, 0.8 }, 0.05, 0.1, 0.85, 128);
     sphere.SetAttribute(PropertyName.MATERIAL, m);
     root.InsertChild(sphere, Matrix4d.Identity);
 
-    var plane = new TestPlane();
+    var plane = new Plane();
     plane.SetAttribute(PropertyName.COLOR, new[] { 0.6, 0.1, 0.1 });
     plane.SetAttribute(PropertyName.TEXTURE, new CheckerTexture(1.0, 1.0, new[] { 1.0, 1.0, 1.0 }));
     root.InsertChild(plane, Matrix4d.CreateRotationX(-Math.PI / 2) * Matrix4d.CreateTranslation(0, -1, 0));
@@ -46,9 +46,10 @@ internal static class TestScenes
   public static IRayScene PlaneAt(double z)
   {
     var root = new CSGInnerNode(SetOperation.Union);
-    var plane = new TestPlane();
+    var plane = new Plane();
     plane.SetAttribute(PropertyName.COLOR, new[] { 0.2, 0.7, 0.2 });
-    root.InsertChild(plane, Matrix4d.CreateTranslation(0, 0, z));
+    // The plane's front (+z) mirrored towards the camera, exactly (a rotation by π would leave 1e-16 in the normal).
+    root.InsertChild(plane, Matrix4d.Scale(1.0, 1.0, -1.0) * Matrix4d.CreateTranslation(0, 0, z));
     return new DefaultRayScene
     {
       Intersectable = root,

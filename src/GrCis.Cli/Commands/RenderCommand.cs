@@ -5,6 +5,7 @@ using GrCis.Cli.Jobs;
 using GrCis.Cli.Output;
 using GrCis.Cli.ProgressViews;
 using GrCis.Cli.SceneSources;
+using GrCis.Scripting;
 using Rendering;
 
 namespace GrCis.Cli.Commands;
@@ -14,7 +15,7 @@ public sealed class RenderCommand
 {
   readonly Argument<string?> scene = new("scene")
   {
-    Description = $"Built-in scene name (see 'grcis list'); default: \"{SceneResolver.DefaultSceneName}\"",
+    Description = $"Built-in scene name (see 'grcis list') or a scene script (*.cs); default: \"{SceneResolver.DefaultSceneName}\"",
     Arity = ArgumentArity.ZeroOrOne,
   };
 
@@ -70,6 +71,7 @@ public sealed class RenderCommand
   readonly Option<bool> noReflections = new("--no-reflections") { Description = "Do not trace reflected rays" };
   readonly Option<bool> noRefractions = new("--no-refractions") { Description = "Do not trace refracted rays" };
   readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
+  readonly ScriptOptions scriptOptions = new();
   readonly Option<string> accel = AccelOption.Create();
 
   public Command Build(CliEnvironment env)
@@ -79,6 +81,7 @@ public sealed class RenderCommand
       scene, output, size, spp, jitter, threads, seed, gamma, format,
       noShadows, noReflections, noRefractions, quiet, accel,
     };
+    scriptOptions.AddTo(cmd);
     cmd.SetAction(parse => Execute(parse, env));
     return cmd;
   }
@@ -100,18 +103,35 @@ public sealed class RenderCommand
       Accel = AccelOption.Parse(parse.GetValue(accel)),
     }.Validate();
 
-    ISceneSource source = new SceneResolver(env.WorkingDirectory).Resolve(parse.GetValue(scene));
+    ISceneSource source = scriptOptions.Resolve(parse, parse.GetValue(scene), env);
+    using var scriptHost = source as IDisposable;
     OutputTarget target = OutputTarget.Resolve(parse.GetValue(output), parse.GetValue(format), source.OutputStem, env.WorkingDirectory);
     target.CheckWritable();
 
-    if (settings.SamplesPerPixel > 1 && settings.EffectiveSamplesPerPixel != settings.SamplesPerPixel)
+    // Command line, then the script's context values, then the defaults.
+    SceneSetup setup = SceneSetup.Create(source, settings, Given(parse), scriptOptions.Time(parse));
+    settings = setup.Settings;
+    foreach (string note in setup.Notes)
+      env.Error.WriteLine("grcis: note: " + note);
+
+    if (setup.Synthesizer == null && settings.SamplesPerPixel > 1 && settings.EffectiveSamplesPerPixel != settings.SamplesPerPixel)
       env.Error.WriteLine($"grcis: note: --spp {settings.SamplesPerPixel} rounded up to {settings.EffectiveSamplesPerPixel} (a square grid)");
 
-    IRayScene sc = source.CreateScene();
+    IRayScene sc = setup.Scene;
     IProgressView view = parse.GetValue(quiet) ? new SilentProgressView()
       : env.Interactive ? new SpectreProgressView(env.Error)
       : new PlainProgressView(env.Error);
-    RenderResult result = view.Run($"render {source.DisplayName}", report => RenderJob.Run(sc, settings, report, env.Cancel));
+    RenderResult result;
+    try
+    {
+      result = view.Run($"render {source.DisplayName}",
+        report => RenderJob.Run(sc, settings, setup.ImageFunction, setup.Synthesizer, report, env.Cancel));
+    }
+    catch (Exception e) when (source is ScriptSceneSource script && script.WithScriptLine(e.InnerException ?? e) is ScriptRuntimeException located)
+    {
+      // A class declared in the script (texture, camera, solid) threw while rendering: name its line.
+      throw located;
+    }
 
     if (result.Cancelled)
     {
@@ -123,6 +143,17 @@ public sealed class RenderCommand
     env.Out.WriteLine(Summary(target, settings, result));
     return ExitCodes.Success;
   }
+
+  ExplicitOptions Given(ParseResult parse) => new(
+    Size: IsGiven(parse, size),
+    SamplesPerPixel: IsGiven(parse, spp),
+    Jitter: IsGiven(parse, jitter),
+    Gamma: IsGiven(parse, gamma),
+    NoShadows: parse.GetValue(noShadows),
+    NoReflections: parse.GetValue(noReflections),
+    NoRefractions: parse.GetValue(noRefractions));
+
+  static bool IsGiven(ParseResult parse, Option option) => parse.GetResult(option) is { Implicit: false };
 
   static string Summary(OutputTarget target, RenderSettings s, RenderResult r)
   {

@@ -32,10 +32,15 @@ public static class RenderJob
     Accel = s.Accel,
   };
 
-  public static RenderResult Run(IRayScene scene, RenderSettings settings, Action<RenderProgress>? progress, CancellationToken cancel)
+  public static RenderResult Run(IRayScene scene, RenderSettings settings, Action<RenderProgress>? progress, CancellationToken cancel) =>
+    Run(scene, settings, null, null, progress, cancel);
+
+  /// <summary>Renders with a given image function and renderer (a scene script's), or the defaults where null.</summary>
+  public static RenderResult Run(IRayScene scene, RenderSettings settings, IImageFunction? imageFunction, ImageSynthesizer? synthesizer,
+                                 Action<RenderProgress>? progress, CancellationToken cancel)
   {
-    ImageSynthesizer renderer = CreateSynthesizer(settings);
-    RayTracing function = CreateImageFunction(scene, settings);
+    ImageSynthesizer renderer = synthesizer ?? CreateSynthesizer(settings);
+    IImageFunction function = imageFunction ?? CreateImageFunction(scene, settings);
     var options = new RenderOptions { Threads = settings.Threads, Seed = settings.Seed };
 
     var clock = Stopwatch.StartNew();

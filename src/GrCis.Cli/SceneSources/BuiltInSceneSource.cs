@@ -5,11 +5,27 @@ namespace GrCis.Cli.SceneSources;
 /// <summary>One of the classic GrCis scenes from <see cref="Scenes"/>.</summary>
 public sealed class BuiltInSceneSource : ISceneSource
 {
-  public BuiltInSceneSource(string name) => DisplayName = name;
+  public BuiltInSceneSource(string name, string? param = null)
+  {
+    DisplayName = name;
+    Param = param ?? "";
+  }
 
   public string DisplayName { get; }
 
+  /// <summary>Parameter text for the scenes that take one (Two spheres, Sphere flake, Cubes).</summary>
+  public string Param { get; }
+
   public string OutputStem => Slug.Of(DisplayName);
 
-  public IRayScene CreateScene() => Scenes.Create(DisplayName);
+  /// <summary>GrCis's parameter help for the scene, or null when it takes none.</summary>
+  public string? ToolTip => DisplayName switch
+  {
+    "Two spheres" => "n=<double> (index of refraction of the glass ball, default 1.6)",
+    "Sphere flake" => "depth=<int> (default 5), coef=<double> (default 0.4), n=<double> (default 1.6), mat={mirror|glass}",
+    "Cubes" => "n=<double> (default 1.6), mat={mirror|glass}",
+    _ => null,
+  };
+
+  public IRayScene CreateScene() => Scenes.Create(DisplayName, Param);
 }

@@ -23,18 +23,29 @@ public sealed class SceneResolver
   public static string DefaultSceneName => Scenes.DefaultSceneName;
 
   /// <exception cref="UsageException">Unknown scene name (with close matches) or a script that does not exist.</exception>
-  public ISceneSource Resolve(string? spec)
+  public ISceneSource Resolve(string? spec) => Resolve(spec, null, Array.Empty<string>());
+
+  /// <summary>As <see cref="Resolve(string?)"/>; a script gets <paramref name="param"/> and the module folders.</summary>
+  /// <exception cref="UsageException">Unknown scene, missing script or module folder, or script options for a built-in scene.</exception>
+  public ISceneSource Resolve(string? spec, string? param, IReadOnlyList<string> modules)
+  {
+    if (!string.IsNullOrWhiteSpace(spec) && !spec.StartsWith('-') && IsScriptPath(spec))
+      return ResolveScript(spec, param, modules);
+    if (modules.Count > 0)
+      throw new UsageException("--module works only with a scene script (*.cs)");
+    return ResolveBuiltIn(spec, param);
+  }
+
+  ISceneSource ResolveBuiltIn(string? spec, string? param)
   {
     if (string.IsNullOrWhiteSpace(spec))
-      return new BuiltInSceneSource(DefaultSceneName);
+      return new BuiltInSceneSource(DefaultSceneName, param);
     if (spec.StartsWith('-'))
       throw new UsageException($"unknown option '{spec}' (see 'grcis render --help')");
-    if (IsScriptPath(spec))
-      return ResolveScript(spec);
 
     string? name = Scenes.CanonicalName(spec);
     if (name != null)
-      return new BuiltInSceneSource(name);
+      return new BuiltInSceneSource(name, param);
 
     IReadOnlyList<string> close = NameSuggestions.Closest(spec, BuiltInNames);
     string hint = close.Count > 0
@@ -45,13 +56,20 @@ public sealed class SceneResolver
 
   static bool IsScriptPath(string spec) => spec.EndsWith(".cs", StringComparison.OrdinalIgnoreCase);
 
-  ISceneSource ResolveScript(string spec)
+  ISceneSource ResolveScript(string spec, string? param, IReadOnlyList<string> modules)
   {
     string path = Path.GetFullPath(spec, workingDirectory);
     if (!File.Exists(path))
-      throw new UsageException($"scene script '{spec}' not found");
-    // The scripting host plugs in here (GrCis.Scripting): compile the script, return its scene source.
-    throw new UsageException($"scene scripts are not supported by this build yet: '{spec}'");
+      throw new UsageException($"scene script '{spec}' not found (looked for '{path}')");
+    var dirs = new List<string>(modules.Count);
+    foreach (string m in modules)
+    {
+      string dir = Path.GetFullPath(m, workingDirectory);
+      if (!Directory.Exists(dir))
+        throw new UsageException($"module folder '{m}' not found (looked for '{dir}')");
+      dirs.Add(dir);
+    }
+    return new ScriptSceneSource(path, param, dirs);
   }
 
   static IEnumerable<string> Quote(IEnumerable<string> names)

@@ -64,7 +64,7 @@ public sealed partial class AnimationRun
         string? dir = Path.GetDirectoryName(Path.GetFullPath(file));
         if (dir != null)
           Directory.CreateDirectory(dir);
-        PngFile.Save(file, Rgb8Image.FromFloatImage(image, Job.Renderer.Gamma > 0.001 ? Job.Renderer.Gamma : 1.0));
+        PngFile.Save(file, RenderSetup.ToDisplayImage(image, Job.Renderer.Gamma));
       }
       done++;
       FrameRendered?.Invoke(this, new FrameRenderedEventArgs(k, Timeline.FrameTime(k), image, done, total, clock.Elapsed, file));

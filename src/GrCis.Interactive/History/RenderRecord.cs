@@ -39,8 +39,8 @@ public sealed class RenderRecord
   /// <summary>False for a stopped or failed render (the image has unfinished tiles).</summary>
   public bool Complete { get; }
 
-  /// <summary>The display image (gamma applied).</summary>
-  public Rgb8Image ToRgb8() => Rgb8Image.FromFloatImage(Image, Gamma > 0.001 ? Gamma : 1.0);
+  /// <summary>The display image (gamma applied, quantized as <c>grcis render</c> saves it).</summary>
+  public Rgb8Image ToRgb8() => Rendering.Execution.RenderSetup.ToDisplayImage(Image, Gamma);
 
   /// <summary>Saves the display image as PNG; atomic, an existing file is replaced only by a complete one.</summary>
   /// <exception cref="ImageSaveException">The file could not be written.</exception>

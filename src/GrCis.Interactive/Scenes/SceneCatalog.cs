@@ -86,16 +86,47 @@ public sealed class SceneCatalog
     return null;
   }
 
-  /// <summary>Adds what a GrCis demo command line names: built-ins unless <c>-nodefault</c>, then folders, then files.</summary>
-  public void AddFromCommandLine(DemoCommandLine commandLine, Action<SceneCatalog>? addBuiltIns)
+  /// <summary>A catalog holding the classic GrCis scenes (<see cref="BuiltInScenes"/>).</summary>
+  public static SceneCatalog WithBuiltInScenes(IScriptEvaluator? evaluator = null)
+  {
+    var catalog = new SceneCatalog(evaluator);
+    BuiltInScenes.AddTo(catalog);
+    return catalog;
+  }
+
+  /// <summary>
+  /// Adds what a GrCis demo command line names: the built-in scenes unless <c>-nodefault</c>, then
+  /// folders, then files. A folder or file that cannot be added is reported in
+  /// <paramref name="problems"/> (when given, else thrown) and the rest is still added.
+  /// Returns the entry to select first: the first <c>-scene</c> file, else GrCis's default scene, else the first entry.
+  /// </summary>
+  public SceneEntry? AddFromCommandLine(DemoCommandLine commandLine, ICollection<string>? problems = null) =>
+    AddFromCommandLine(commandLine, c => BuiltInScenes.AddTo(c), problems);
+
+  /// <summary>As <see cref="AddFromCommandLine(DemoCommandLine, ICollection{string}?)"/> with a custom set of built-in scenes.</summary>
+  public SceneEntry? AddFromCommandLine(DemoCommandLine commandLine, Action<SceneCatalog>? addBuiltIns, ICollection<string>? problems = null)
   {
     ArgumentNullException.ThrowIfNull(commandLine);
     if (!commandLine.NoDefault)
       addBuiltIns?.Invoke(this);
     foreach (string dir in commandLine.Directories)
-      AddScriptsFolder(dir);
+      Try(() => AddScriptsFolder(dir), problems);
+    SceneEntry? first = null;
     foreach (string file in commandLine.SceneFiles)
-      AddScriptFile(file);
+      Try(() => first ??= AddScriptFile(file), problems);
+    return first ?? Find(BuiltInScenes.DefaultName) ?? (entries.Count > 0 ? entries[0] : null);
+  }
+
+  static void Try(Action add, ICollection<string>? problems)
+  {
+    try
+    {
+      add();
+    }
+    catch (SceneEvaluationException ex) when (problems != null)
+    {
+      problems.Add(ex.Message);
+    }
   }
 
   /// <summary>

@@ -44,22 +44,16 @@ public sealed class RenderJob
   public static RayTracing CreateImageFunction(IRayScene scene, RenderSettings settings)
   {
     ArgumentNullException.ThrowIfNull(scene);
+    ArgumentNullException.ThrowIfNull(settings);
     // Unbound: it shades MT.scene, so each render worker uses its own clone of an animated scene.
-    var rt = new RayTracing();
-    ApplySwitches(rt, settings);
-    return rt;
+    return RenderSetup.CreateRayTracing(null, settings.Shadows, settings.Reflections, settings.Refractions);
   }
 
   /// <summary>The renderer the settings select: one centred sample, or n×n (jittered) supersampling.</summary>
   public static ImageSynthesizer CreateRenderer(RenderSettings settings)
   {
     ArgumentNullException.ThrowIfNull(settings);
-    ImageSynthesizer r = settings.SamplesPerPixel > 1
-      ? new SupersamplingImageSynthesizer { Supersampling = settings.SamplesPerPixel, Jittering = settings.Jittering }
-      : new SimpleImageSynthesizer();
-    r.Width = settings.Width;
-    r.Height = settings.Height;
-    return r;
+    return RenderSetup.CreateSynthesizer(settings.Width, settings.Height, settings.SamplesPerPixel, settings.Jittering, settings.Gamma);
   }
 
   /// <summary>A job for <paramref name="scene"/>; <paramref name="function"/> and <paramref name="renderer"/> default from the settings.</summary>
@@ -112,10 +106,6 @@ public sealed class RenderJob
     return Create(built.Scene, settings.With(built.Overrides), built.ImageFunction, built.Renderer, built.Entry.Name, built.Param);
   }
 
-  static void ApplySwitches(RayTracing rt, RenderSettings s)
-  {
-    rt.DoShadows = s.Shadows;
-    rt.DoReflections = s.Reflections;
-    rt.DoRefractions = s.Refractions;
-  }
+  static void ApplySwitches(RayTracing rt, RenderSettings s) =>
+    RenderSetup.ApplySwitches(rt, s.Shadows, s.Reflections, s.Refractions);
 }

@@ -27,5 +27,5 @@ public sealed class RenderPreviewEventArgs : EventArgs
 
   public double Gamma { get; }
 
-  public Rgb8Image ToRgb8() => Rgb8Image.FromFloatImage(Image, Gamma > 0.001 ? Gamma : 1.0);
+  public Rgb8Image ToRgb8() => Rendering.Execution.RenderSetup.ToDisplayImage(Image, Gamma);
 }

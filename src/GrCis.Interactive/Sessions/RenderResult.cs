@@ -37,6 +37,6 @@ public sealed class RenderResult
   /// <summary>Display gamma of the renderer; used to show and save the image.</summary>
   public double Gamma => Job.Renderer.Gamma;
 
-  /// <summary>The 8-bit display image (gamma applied).</summary>
-  public Rgb8Image ToRgb8() => Rgb8Image.FromFloatImage(Image, Gamma > 0.001 ? Gamma : 1.0);
+  /// <summary>The 8-bit display image (gamma applied, quantized as <c>grcis render</c> saves it).</summary>
+  public Rgb8Image ToRgb8() => Rendering.Execution.RenderSetup.ToDisplayImage(Image, Gamma);
 }

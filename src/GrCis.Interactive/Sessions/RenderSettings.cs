@@ -25,6 +25,9 @@ public sealed record RenderSettings
 
   public bool Refractions { get; init; } = true;
 
+  /// <summary>Display gamma of the shown and saved image (1 = linear); the render itself is linear.</summary>
+  public double Gamma { get; init; } = RenderSetup.DefaultGamma;
+
   /// <summary>Off = render on one thread (GrCis's "multi-threading" switch).</summary>
   public bool Multithreading { get; init; } = true;
 
@@ -52,6 +55,8 @@ public sealed record RenderSettings
       throw new ArgumentOutOfRangeException(nameof(Jittering), Jittering, "Jittering must be between 0 and 1.");
     if (Threads < 0)
       throw new ArgumentOutOfRangeException(nameof(Threads), Threads, "Threads must be 0 (automatic) or positive.");
+    if (!(Gamma > 0.0) || double.IsInfinity(Gamma))
+      throw new ArgumentOutOfRangeException(nameof(Gamma), Gamma, "Gamma must be a positive number (1 = linear).");
     if (TileSize < 1)
       throw new ArgumentOutOfRangeException(nameof(TileSize), TileSize, "Tile size must be at least 1.");
   }

@@ -32,6 +32,18 @@ public class RayTracing : RayCasting
   /// <summary>Honour solids' <see cref="RecursionFunction"/> attributes.</summary>
   public bool DoRecursion = true;
 
+  /// <summary>
+  /// Opt-in (GrCis: off): transparent occluders let light through, scaled by their Kt at every
+  /// surface the shadow ray enters, instead of blocking it.
+  /// </summary>
+  public bool TransparentShadows;
+
+  /// <summary>
+  /// Opt-in (GrCis: off): the refracted ray is weighted by Kt·(1 − F) with F Schlick's Fresnel
+  /// reflectance of the interface, instead of the raw Kt.
+  /// </summary>
+  public bool FresnelRefraction;
+
   public RayTracing(IRayScene? sc = null) : base(sc) { }
 
   public override long GetSample(double x, double y, double[] color)
@@ -143,6 +155,8 @@ public class RayTracing : RayCasting
     if (DoRefractions)
     {
       double kt = i.Material!.Kt;
+      if (FresnelRefraction && kt > 0.0)
+        kt *= 1.0 - SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), i.Material.n);
       double newImportance = importance * kt;
       if (newImportance < MinImportance)
         return hash;
@@ -162,15 +176,20 @@ public class RayTracing : RayCasting
     double[]? intensity = source.GetIntensity(i, out Vector3d dir);
     if (intensity == null)
       return hash;
-    if (DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0) && Occluded(i.CoordWorld, dir))
-      return hash;
+    double transmit = 1.0;
+    if (DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0))
+    {
+      transmit = TransparentShadows ? ShadowTransmittance(i.CoordWorld, dir) : Occluded(i.CoordWorld, dir) ? 0.0 : 1.0;
+      if (transmit <= 0.0)
+        return hash;
+    }
     int bands = color.Length;
     if (phong)
     {
       Span<double> r = buffer[..surface.Length];
       PhongModel.ColorReflection((PhongMaterial)i.Material!, i.Normal, dir, viewer, ReflectionComponent.ALL, r);
       for (int b = 0; b < bands; b++)
-        color[b] += intensity[Math.Min(b, intensity.Length - 1)] * r[Math.Min(b, r.Length - 1)];
+        color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * r[Math.Min(b, r.Length - 1)];
     }
     else
     {
@@ -178,9 +197,51 @@ public class RayTracing : RayCasting
       if (arr == null)
         return hash;
       for (int b = 0; b < bands; b++)
-        color[b] += intensity[Math.Min(b, intensity.Length - 1)] * arr[Math.Min(b, arr.Length - 1)];
+        color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * arr[Math.Min(b, arr.Length - 1)];
     }
     return hash * HASH_LIGHT + source.GetHashCode();
+  }
+
+  /// <summary>Schlick's approximation of the Fresnel reflectance for incidence cosine <paramref name="cos"/>.</summary>
+  public static double SchlickReflectance(double cos, double n)
+  {
+    double r0 = (n - 1.0) / (n + 1.0);
+    r0 *= r0;
+    double m = 1.0 - Math.Clamp(cos, 0.0, 1.0);
+    return r0 + (1.0 - r0) * m * m * m * m * m;
+  }
+
+  /// <summary>
+  /// Fraction of light passing from <paramref name="p0"/> to the light at <c>p0 + dir</c>: the product
+  /// of the Kt of every surface entered on the way (0 = blocked). Uses the faithful all-hits query.
+  /// </summary>
+  protected virtual double ShadowTransmittance(Vector3d p0, Vector3d dir)
+  {
+    LinkedList<Intersection>? list = Scene.Intersectable?.Intersect(p0, dir);
+    if (list == null)
+      return 1.0;
+    double transmit = 1.0;
+    double len2 = dir.LengthSquared;
+    bool first = true;
+    foreach (Intersection hit in list)
+    {
+      if (hit.T <= 0.0 || hit.T * hit.T * len2 <= Intersection.RAY_EPSILON2)
+        continue;
+      if (hit.Far(1.0, ref dir))
+        break;
+      if (hit.Solid != null && hit.Solid.GetLocalAttribute(PropertyName.NO_SHADOW) != null)
+        continue;
+      // Count each solid once: where the ray enters it, or at its exit when the ray starts inside.
+      if (hit.Enter || first)
+      {
+        double kt = (hit.Solid?.GetAttribute(PropertyName.MATERIAL) as IMaterial)?.Kt ?? 0.0;
+        transmit *= kt;
+        if (transmit <= 0.0)
+          return 0.0;
+      }
+      first = false;
+    }
+    return transmit;
   }
 
   /// <summary>Custom shading by the solid's <see cref="RecursionFunction"/>.</summary>

@@ -1,0 +1,31 @@
+using System;
+using System.Collections.Generic;
+using System.Windows.Forms;
+using GrCis.Interactive;
+
+namespace GrCis.Demo.WinForms;
+
+/// <summary>
+/// <c>grcis-demo [-dir DIR]… [-scene FILE]… [-nodefault]</c>: GrCis's ray-tracing demo window.
+/// Everything but the drawing lives in <see cref="DemoController"/> (GrCis.Interactive).
+/// </summary>
+static class Program
+{
+  [STAThread]
+  static int Main(string[] args)
+  {
+    Application.SetHighDpiMode(HighDpiMode.SystemAware);
+    Application.EnableVisualStyles();
+    Application.SetCompatibleTextRenderingDefault(false);
+
+    using var evaluator = new ScriptHostEvaluator();
+    var problems = new List<string>();
+    using DemoController controller = DemoController.FromCommandLine(args, evaluator, problems);
+    using var form = new MainForm(controller);
+    if (problems.Count > 0)
+      form.Shown += (_, _) => MessageBox.Show(form, string.Join(Environment.NewLine, problems), "GrCis demo: command line",
+        MessageBoxButtons.OK, MessageBoxIcon.Warning);
+    Application.Run(form);
+    return 0;
+  }
+}

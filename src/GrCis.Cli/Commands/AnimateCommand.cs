@@ -1,0 +1,223 @@
+using System;
+using System.CommandLine;
+using System.Globalization;
+using System.IO;
+using GrCis.Cli.Animation;
+using GrCis.Cli.Jobs;
+using GrCis.Cli.ProgressViews;
+using GrCis.Cli.SceneSources;
+using GrCis.Scripting;
+
+namespace GrCis.Cli.Commands;
+
+/// <summary>
+/// <c>grcis animate scene -o frames/out####.png [--from A] [--to B] [--fps F] [--frames a-b]
+/// [--shard i/n] [--resume] [--video out.mp4] [--shutter S] [--parallel auto|frames|tiles]</c>
+/// plus the render options: the frames of an animation, each written atomically, resumable and
+/// shardable over processes and machines (docs/scale-out.md).
+/// </summary>
+public sealed class AnimateCommand
+{
+  readonly Argument<string?> scene = new("scene")
+  {
+    Description = $"Scene script (*.cs) or built-in scene name (see 'grcis list'); default: \"{SceneResolver.DefaultSceneName}\"",
+    Arity = ArgumentArity.ZeroOrOne,
+  };
+
+  readonly Option<string?> output = new("--output", "-o")
+  {
+    Description = "Frame files: #### is the zero-padded frame number (Blender's convention), e.g. frames/out####.png",
+    HelpName = "pattern",
+  };
+
+  readonly Option<double?> from = new("--from") { Description = "Start time in seconds (default: the script's, else 0)", HelpName = "A" };
+  readonly Option<double?> to = new("--to") { Description = "End time in seconds, included (default: the script's, else 10)", HelpName = "B" };
+  readonly Option<double?> fps = new("--fps") { Description = "Frames per second (default: the script's, else 25)", HelpName = "F" };
+
+  readonly Option<string?> frames = new("--frames")
+  {
+    Description = "Only frames a to b (numbers from 0; frame k is at start + k/fps)",
+    HelpName = "a-b",
+  };
+
+  readonly Option<string?> shard = new("--shard")
+  {
+    Description = "Render only frames k ≡ i (mod n): one of n processes or machines (i from 0)",
+    HelpName = "i/n",
+  };
+
+  readonly Option<bool> resume = new("--resume") { Description = "Skip frames whose files are complete (exist and decode)" };
+
+  readonly Option<string?> video = new("--video")
+  {
+    Description = "Also encode the frames into a video with ffmpeg (e.g. out.mp4)",
+    HelpName = "file",
+  };
+
+  readonly Option<double> shutter = new("--shutter")
+  {
+    Description = "Motion blur: the shutter stays open this fraction of a frame (0 = sharp, 1 = a whole frame)",
+    HelpName = "S",
+    DefaultValueFactory = _ => 0.0,
+  };
+
+  readonly Option<string> parallel = new("--parallel")
+  {
+    Description = "auto: frames in parallel up to 640x480 pixels, else tiles (measured, docs/animation.md); frames: N frames at once, one thread each; tiles: one frame at a time on all threads",
+    HelpName = "auto|frames|tiles",
+    DefaultValueFactory = _ => "auto",
+  };
+
+  readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
+
+  readonly RenderOptionSet render = new();
+  readonly ScriptOptions scriptOptions = new();
+
+  public Command Build(CliEnvironment env)
+  {
+    var cmd = new Command("animate", "Render the frames of an animation (resumable, shardable) and optionally a video")
+    {
+      scene, output, from, to, fps, frames, shard, resume, video, shutter, parallel,
+    };
+    render.AddTo(cmd);
+    scriptOptions.AddTo(cmd, withTime: false);
+    cmd.Options.Add(quiet);
+    cmd.SetAction(parse => Execute(parse, env));
+    return cmd;
+  }
+
+  int Execute(ParseResult parse, CliEnvironment env)
+  {
+    // Validate everything before any work so usage errors never leave files behind.
+    RenderSettings settings = render.Read(parse);
+    string? outputText = parse.GetValue(output);
+    if (string.IsNullOrWhiteSpace(outputText))
+      throw new UsageException("missing -o: give the frame files, e.g. -o frames/out####.png");
+    FramePattern pattern = FramePattern.Parse(outputText, env.WorkingDirectory);
+    FrameRange? range = parse.GetValue(frames) is string f ? FrameRange.Parse(f) : null;
+    ShardSpec part = parse.GetValue(shard) is string s ? ShardSpec.Parse(s) : ShardSpec.All;
+    ParallelMode requested = ParseParallel(parse.GetValue(parallel) ?? "auto");
+    double open = parse.GetValue(shutter);
+    if (!(open >= 0.0 && open <= 1.0))
+      throw new UsageException($"invalid --shutter {open.ToString(CultureInfo.InvariantCulture)}: must be between 0 (sharp) and 1 (a whole frame)");
+    string? videoPath = parse.GetValue(video) is string v ? Path.GetFullPath(v, env.WorkingDirectory) : null;
+    if (videoPath != null && part.Count > 1)
+      throw new UsageException(
+        "--video cannot be combined with --shard: each shard has only some frames; when all shards are done, run the same command once with --resume --video (it renders nothing and encodes)");
+    if (videoPath != null && Path.GetExtension(videoPath).Length < 2)
+      throw new UsageException($"--video '{parse.GetValue(video)}' has no extension; e.g. out.mp4 (ffmpeg picks the container from it)");
+
+    if (videoPath != null && !Directory.Exists(Path.GetDirectoryName(videoPath)))
+      throw new CliFailure($"cannot write video '{videoPath}': directory '{Path.GetDirectoryName(videoPath)}' does not exist");
+
+    ISceneSource source = ResolveScene(env, parse, parse.GetValue(scene));
+    using var scriptHost = source as IDisposable;
+
+    // The script runs once (its preprocessing too); every frame renders a clone of its scene.
+    // Command line, then the script's context values (size, spp, range, …), then the defaults.
+    SceneSetup setup = SceneSetup.Create(source, settings, render.Given(parse), null);
+    settings = setup.Settings;
+    foreach (string note in setup.Notes)
+      env.Error.WriteLine("grcis: note: " + note);
+    ISceneTiming? timing = setup.Script is { } run ? AnimationPlan.TimingOf(run) : source as ISceneTiming;
+    AnimationPlan plan = AnimationPlan.Create(parse.GetValue(from), parse.GetValue(to), parse.GetValue(fps), timing, setup.Scene, range, part);
+
+    if (setup.Synthesizer == null && settings.SamplesPerPixel > 1 && settings.EffectiveSamplesPerPixel != settings.SamplesPerPixel)
+      env.Error.WriteLine($"grcis: note: --spp {settings.SamplesPerPixel} rounded up to {settings.EffectiveSamplesPerPixel} (a square grid)");
+
+    var store = new FrameStore(pattern, settings.Size, settings.Gamma);
+    store.Prepare();
+    var todo = new System.Collections.Generic.List<int>(plan.Frames.Count);
+    foreach (int k in plan.Frames)
+    {
+      store.RemoveStaleTemporaries(k);
+      if (!parse.GetValue(resume) || !store.IsComplete(k))
+        todo.Add(k);
+    }
+    int skipped = plan.Frames.Count - todo.Count;
+
+    var parts = new FrameParts(settings, setup.ImageFunction, setup.Synthesizer);
+    var renderer = new FrameRenderer(setup.Scene, settings, plan.Timeline, open, parts);
+    foreach (string note in parts.Notes())
+      env.Error.WriteLine("grcis: note: " + note);
+    if (open > 0.0 && (!renderer.IsAnimated || renderer.Sequential))
+      env.Error.WriteLine("grcis: note: --shutter has no effect: " +
+        (renderer.Sequential ? "the script's own image function renders its scene at one time per frame" : "nothing in this scene moves"));
+    int threads = settings.Threads > 0 ? settings.Threads : Environment.ProcessorCount;
+    ParallelMode mode = renderer.Sequential ? ParallelMode.Tiles : FrameScheduler.Choose(requested, settings.Size, threads, todo.Count);
+    var scheduler = new FrameScheduler(renderer, store);
+
+    IAnimationProgressView view = parse.GetValue(quiet) ? new SilentAnimationProgressView()
+      : env.Interactive ? new SpectreAnimationProgressView(env.Error)
+      : new PlainAnimationProgressView(env.Error);
+    var clock = System.Diagnostics.Stopwatch.StartNew();
+    int saved;
+    try
+    {
+      saved = view.Run($"animate {source.DisplayName}", plan.Frames.Count, skipped, report =>
+      {
+        int done = skipped, rendered = 0;
+        return scheduler.Run(todo, mode, threads, k =>
+        {
+          done++;
+          rendered++;
+          report(new AnimationProgress(done, plan.Frames.Count, rendered, clock.Elapsed, k));
+        }, env.Cancel);
+      });
+    }
+    catch (Exception e) when (source is ScriptSceneSource script && script.WithScriptLine(e.InnerException ?? e) is ScriptRuntimeException located)
+    {
+      // A class declared in the script (texture, camera, solid) threw while rendering: name its line.
+      throw located;
+    }
+    clock.Stop();
+
+    if (env.Cancel.IsCancellationRequested)
+    {
+      env.Error.WriteLine($"grcis: error: cancelled after {saved} new frames; run again with --resume to continue");
+      return ExitCodes.Cancelled;
+    }
+
+    env.Out.WriteLine(Summary(pattern, plan, saved, skipped, mode, threads, clock.Elapsed));
+
+    if (videoPath != null)
+    {
+      VideoEncoder? encoder = VideoEncoder.Find();
+      if (encoder == null)
+      {
+        // The frames are done and kept; the missing video still fails the job so a batch run notices.
+        env.Error.WriteLine($"grcis: error: {VideoEncoder.MissingMessage()}; the frames are kept in '{pattern.Directory}'");
+        return ExitCodes.Failure;
+      }
+      encoder.Encode(pattern, plan.Range.First, plan.Range.Count, plan.Timeline.Fps, videoPath);
+      env.Out.WriteLine(string.Create(CultureInfo.InvariantCulture,
+        $"wrote {videoPath}: frames {plan.Range} at {plan.Timeline.Fps:0.###} fps"));
+    }
+    return ExitCodes.Success;
+  }
+
+  ISceneSource ResolveScene(CliEnvironment env, ParseResult parse, string? spec)
+  {
+    if (spec != null && env.ExtraScenes?.Invoke(spec) is ISceneSource extra)
+      return extra;
+    return scriptOptions.Resolve(parse, spec, env);
+  }
+
+  static ParallelMode ParseParallel(string text) => text.Trim().ToLowerInvariant() switch
+  {
+    "auto" => ParallelMode.Auto,
+    "frames" => ParallelMode.Frames,
+    "tiles" => ParallelMode.Tiles,
+    _ => throw new UsageException($"invalid --parallel '{text}': use auto, frames or tiles"),
+  };
+
+  static string Summary(FramePattern pattern, AnimationPlan plan, int saved, int skipped, ParallelMode mode, int threads, TimeSpan elapsed)
+  {
+    double rate = saved > 0 && elapsed.TotalSeconds > 0 ? saved / elapsed.TotalSeconds : 0.0;
+    string shardText = plan.Shard.Count > 1 ? $", shard {plan.Shard}" : "";
+    string skippedText = skipped > 0 ? $" ({skipped} complete, skipped)" : "";
+    return string.Create(CultureInfo.InvariantCulture,
+      $"wrote {saved} frames{skippedText} to {pattern.FullPattern}: frames {plan.Range}{shardText} of 0-{plan.Timeline.FrameCount - 1}, " +
+      $"{elapsed.TotalSeconds:0.00} s, {rate:0.00} frames/s, parallel {mode.ToString().ToLowerInvariant()} on {threads} threads");
+  }
+}

@@ -1,0 +1,81 @@
+using System.CommandLine;
+using GrCis.Cli.Jobs;
+
+namespace GrCis.Cli.Commands;
+
+/// <summary>The options that shape one rendered image (size, sampling, threads, seed, gamma, switches), for commands that render.</summary>
+public sealed class RenderOptionSet
+{
+  readonly Option<string> size = new("--size", "-s")
+  {
+    Description = "Image size WIDTHxHEIGHT",
+    HelpName = "WxH",
+    DefaultValueFactory = _ => ImageSize.Default.ToString(),
+  };
+
+  readonly Option<int> spp = new("--spp")
+  {
+    Description = "Samples per pixel: 1 = pixel centre, N > 1 = jittered n×n grid (rounded up to a square)",
+    DefaultValueFactory = _ => 1,
+  };
+
+  readonly Option<double> jitter = new("--jitter")
+  {
+    Description = "Jitter of supersamples within their cell, 0 to 1",
+    DefaultValueFactory = _ => 1.0,
+  };
+
+  readonly Option<int> threads = new("--threads", "-t")
+  {
+    Description = "Worker threads; 0 = one per processor",
+    DefaultValueFactory = _ => 0,
+  };
+
+  readonly Option<long> seed = new("--seed")
+  {
+    Description = "Seed of all sampling randomness (same seed ⇒ same image on any thread count)",
+    DefaultValueFactory = _ => 0L,
+  };
+
+  readonly Option<double> gamma = new("--gamma")
+  {
+    Description = "Display gamma of the PNG (1 = linear)",
+    DefaultValueFactory = _ => 2.2,
+  };
+
+  readonly Option<bool> noShadows = new("--no-shadows") { Description = "Do not cast shadow rays" };
+  readonly Option<bool> noReflections = new("--no-reflections") { Description = "Do not trace reflected rays" };
+  readonly Option<bool> noRefractions = new("--no-refractions") { Description = "Do not trace refracted rays" };
+
+  public void AddTo(Command command)
+  {
+    foreach (Option o in new Option[] { size, spp, jitter, threads, seed, gamma, noShadows, noReflections, noRefractions })
+      command.Options.Add(o);
+  }
+
+  /// <summary>Which options the user typed (they win over a scene script's context values).</summary>
+  public ExplicitOptions Given(ParseResult parse) => new(
+    Size: IsGiven(parse, size),
+    SamplesPerPixel: IsGiven(parse, spp),
+    Jitter: IsGiven(parse, jitter),
+    Gamma: IsGiven(parse, gamma),
+    NoShadows: parse.GetValue(noShadows),
+    NoReflections: parse.GetValue(noReflections),
+    NoRefractions: parse.GetValue(noRefractions));
+
+  static bool IsGiven(ParseResult parse, Option option) => parse.GetResult(option) is { Implicit: false };
+
+  /// <exception cref="UsageException">A value outside its allowed range.</exception>
+  public RenderSettings Read(ParseResult parse) => new RenderSettings
+  {
+    Size = ImageSize.Parse(parse.GetValue(size) ?? ImageSize.Default.ToString()),
+    SamplesPerPixel = parse.GetValue(spp),
+    Jitter = parse.GetValue(jitter),
+    Threads = parse.GetValue(threads),
+    Seed = parse.GetValue(seed),
+    Gamma = parse.GetValue(gamma),
+    Shadows = !parse.GetValue(noShadows),
+    Reflections = !parse.GetValue(noReflections),
+    Refractions = !parse.GetValue(noRefractions),
+  }.Validate();
+}

@@ -1,0 +1,68 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using GrCis.Scripting;
+using Rendering;
+
+namespace GrCis.Cli.SceneSources;
+
+/// <summary>
+/// A GrCis scene script (<c>*.cs</c>): compiled once by a <see cref="ScriptHost"/> (with the modules
+/// given by <c>--module</c>) and run with GrCis's context protocol. The script gets an
+/// <see cref="AnimatedRayScene"/>, as in GrCis's animation-capable front ends, so
+/// <c>scene is ITimeDependent</c> lets it animate; a still script never notices.
+/// </summary>
+public sealed class ScriptSceneSource : ISceneSource, IDisposable
+{
+  readonly ScriptHost host = new(cacheCapacity: 4);
+  readonly IReadOnlyList<string> modules;
+  bool modulesLoaded;
+
+  /// <param name="path">Full path of an existing script file.</param>
+  /// <param name="param">The <c>--param</c> text passed to the script as <c>param</c>.</param>
+  /// <param name="modules">Full paths of existing module folders, in the order given.</param>
+  public ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules)
+  {
+    Path = path;
+    Param = param ?? "";
+    this.modules = modules;
+  }
+
+  /// <summary>Full path of the script.</summary>
+  public string Path { get; }
+
+  /// <summary>Parameter text handed to the script.</summary>
+  public string Param { get; }
+
+  public string DisplayName => System.IO.Path.GetFileName(Path);
+
+  public string OutputStem => Slug.Of(System.IO.Path.GetFileNameWithoutExtension(Path));
+
+  /// <summary>The compiled script (after the first <see cref="Load"/>).</summary>
+  public CompiledScript? Script { get; private set; }
+
+  /// <summary>Compiles (once) and runs the script on a fresh context: preprocessing call, then the regular one.</summary>
+  /// <exception cref="ScriptCompilationException">The script or a module did not compile.</exception>
+  /// <exception cref="ScriptRuntimeException">The script threw; names its line.</exception>
+  public ScriptScene Load()
+  {
+    if (!modulesLoaded)
+    {
+      foreach (string dir in modules)
+        host.AddModule(dir);
+      modulesLoaded = true;
+    }
+    Script ??= host.Compile(Path);
+    return host.Run(Script, Param, new Dictionary<string, object>(), new AnimatedRayScene());
+  }
+
+  public IRayScene CreateScene() => Load().Scene;
+
+  /// <summary>
+  /// An exception from rendering (thrown by a class the script declared) with the script line that threw,
+  /// or the exception itself when the script is not on its stack.
+  /// </summary>
+  public Exception WithScriptLine(Exception e) => Script?.FindScriptLine(e) ?? e;
+
+  public void Dispose() => host.Dispose();
+}

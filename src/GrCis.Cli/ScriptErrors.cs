@@ -1,0 +1,54 @@
+using System;
+using GrCis.Scripting;
+
+namespace GrCis.Cli;
+
+/// <summary>
+/// How scene-script errors reach the user. A compilation error prints every diagnostic as
+/// <c>path(line,col): error CSxxxx: message</c> (then one summary line), a script that throws prints
+/// its message with the script line, a malformed parameter value is a usage error.
+/// </summary>
+public static class ScriptErrors
+{
+  /// <summary>True when <paramref name="e"/> is a script error this class reports.</summary>
+  public static bool Handles(Exception e) =>
+    e is ScriptCompilationException || Runtime(e) != null;
+
+  /// <summary>Writes the error to stderr and returns the exit code.</summary>
+  public static int Report(Exception e, CliEnvironment env)
+  {
+    if (e is ScriptCompilationException ce)
+    {
+      int errors = 0;
+      foreach (ScriptDiagnostic d in ce.Diagnostics)
+      {
+        env.Error.WriteLine(d.ToString());
+        if (d.IsError)
+          errors++;
+      }
+      string what = ce.Path.EndsWith(".cs", StringComparison.OrdinalIgnoreCase) ? "scene script" : "module";
+      env.Error.WriteLine($"grcis: error: {what} '{ce.Path}' did not compile ({errors} error{(errors == 1 ? "" : "s")})");
+      return ExitCodes.Failure;
+    }
+
+    ScriptRuntimeException re = Runtime(e)!;
+    if (re.InnerException is ScriptParameterException pe)
+    {
+      env.Error.WriteLine($"grcis: error: invalid --param: {pe.Message} ({System.IO.Path.GetFileName(re.Path)}, line {re.Line})");
+      return ExitCodes.Usage;
+    }
+    env.Error.WriteLine("grcis: error: " + Flatten(re.Message));
+    return ExitCodes.Failure;
+  }
+
+  static ScriptRuntimeException? Runtime(Exception e)
+  {
+    for (Exception? x = e; x != null; x = x.InnerException)
+      if (x is ScriptRuntimeException sre)
+        return sre;
+    return null;
+  }
+
+  static string Flatten(string message) =>
+    message.Replace("\r\n", " ", StringComparison.Ordinal).Replace('\n', ' ').Replace('\r', ' ').Trim();
+}

@@ -1,0 +1,67 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+
+namespace GrCis.Cli.Tests;
+
+/// <summary>The built <c>grcis</c> as a real process (<c>dotnet exec grcis.dll …</c>).</summary>
+internal static class GrcisProcess
+{
+  public static string Dll
+  {
+    get
+    {
+      string dll = Path.Combine(AppContext.BaseDirectory, "grcis.dll");
+      Assert.True(File.Exists(dll), $"built CLI not found at {dll}");
+      return dll;
+    }
+  }
+
+  public static string Dotnet => Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") is { Length: > 0 } host ? host : "dotnet";
+
+  /// <summary>Starts <c>grcis</c> with its output captured (read it with <see cref="Finish"/>).</summary>
+  public static Process Start(string workingDirectory, IDictionary<string, string>? env, params string[] args)
+  {
+    var psi = new ProcessStartInfo(Dotnet)
+    {
+      WorkingDirectory = workingDirectory,
+      RedirectStandardOutput = true,
+      RedirectStandardError = true,
+      UseShellExecute = false,
+    };
+    psi.ArgumentList.Add("exec");
+    psi.ArgumentList.Add(Dll);
+    foreach (string a in args)
+      psi.ArgumentList.Add(a);
+    if (env != null)
+      foreach (var (k, v) in env)
+        psi.Environment[k] = v;
+    return Process.Start(psi)!;
+  }
+
+  /// <summary>Waits (at most 3 minutes) and returns exit code and output.</summary>
+  public static (int Code, string Out, string Error) Finish(Process p)
+  {
+    var stdout = p.StandardOutput.ReadToEndAsync();
+    var stderr = p.StandardError.ReadToEndAsync();
+    if (!p.WaitForExit(180_000))
+    {
+      p.Kill(entireProcessTree: true);
+      Assert.Fail("grcis did not finish in 3 minutes");
+    }
+    return (p.ExitCode, stdout.Result, stderr.Result);
+  }
+
+  public static (int Code, string Out, string Error) Run(string workingDirectory, params string[] args)
+  {
+    using Process p = Start(workingDirectory, null, args);
+    return Finish(p);
+  }
+
+  public static (int Code, string Out, string Error) Run(string workingDirectory, IDictionary<string, string> env, params string[] args)
+  {
+    using Process p = Start(workingDirectory, env, args);
+    return Finish(p);
+  }
+}
