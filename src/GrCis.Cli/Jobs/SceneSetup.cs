@@ -102,6 +102,8 @@ public sealed class SceneSetup
     // The script's image function; switches given on the command line apply to it when it is a RayTracing.
     if (run.Algorithm != null)
     {
+      if (run.Algorithm is RayCasting rc)
+        rc.Accel = s.Accel;   // --accel applies to the script's own ray caster too
       if (run.Algorithm is RayTracing rt)
       {
         if (given.NoShadows) rt.DoShadows = false;
