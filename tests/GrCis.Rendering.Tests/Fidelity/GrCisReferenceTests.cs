@@ -83,30 +83,8 @@ public class GrCisReferenceTests
     return Rgb8Image.FromFloatImage(linear, renderer.Gamma, Quantization.Truncate);
   }
 
-  /// <summary>
-  /// The shared reference folder: $GRCIS_SHARED/refs/grcis (or $GRCIS_SHARED itself when it holds
-  /// the images), else the first shared/refs/grcis found walking up from the test binaries.
-  /// </summary>
-  internal static string RefsDirectory()
-  {
-    string? env = Environment.GetEnvironmentVariable("GRCIS_SHARED");
-    if (!string.IsNullOrEmpty(env))
-    {
-      foreach (string candidate in new[] { Path.Combine(env, "refs", "grcis"), Path.Combine(env, "shared", "refs", "grcis"), env })
-        if (Directory.Exists(candidate) && Directory.EnumerateFiles(candidate, "*.png").Any())
-          return candidate;
-      throw new DirectoryNotFoundException($"GRCIS_SHARED is '{env}' but neither it nor its refs/grcis holds the reference PNGs.");
-    }
-    for (DirectoryInfo? d = new(AppContext.BaseDirectory); d != null; d = d.Parent)
-    {
-      string candidate = Path.Combine(d.FullName, "shared", "refs", "grcis");
-      if (Directory.Exists(candidate))
-        return candidate;
-    }
-    throw new DirectoryNotFoundException(
-      $"GrCis reference images not found: no shared/refs/grcis above {AppContext.BaseDirectory}. " +
-      "Set GRCIS_SHARED to the shared folder (the one containing refs/grcis).");
-  }
+  /// <summary>The reference renders in the shared folder.</summary>
+  internal static string RefsDirectory() => GrCis.Rendering.Tests.SharedFolder.Combine("refs", "grcis");
 
   static string FailureDirectory()
   {

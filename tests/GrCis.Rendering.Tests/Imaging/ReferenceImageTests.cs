@@ -33,18 +33,6 @@ public class ReferenceImageTests
     Assert.Equal(double.PositiveInfinity, ImageComparison.Psnr(image, again));
   }
 
-  /// <summary>shared/refs/grcis sits beside the repository root (or is given by GRCIS_REFS).</summary>
-  private static string RefsDirectory()
-  {
-    string? env = Environment.GetEnvironmentVariable("GRCIS_REFS");
-    if (!string.IsNullOrEmpty(env))
-      return env;
-    for (DirectoryInfo? d = new(AppContext.BaseDirectory); d is not null; d = d.Parent)
-    {
-      string candidate = Path.Combine(d.FullName, "shared", "refs", "grcis");
-      if (Directory.Exists(candidate))
-        return candidate;
-    }
-    throw new DirectoryNotFoundException("shared/refs/grcis not found above " + AppContext.BaseDirectory + "; set GRCIS_REFS.");
-  }
+  /// <summary>The reference renders in the shared folder.</summary>
+  private static string RefsDirectory() => GrCis.Rendering.Tests.SharedFolder.Combine("refs", "grcis");
 }

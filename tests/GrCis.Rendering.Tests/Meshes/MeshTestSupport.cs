@@ -7,7 +7,7 @@ namespace GrCis.Rendering.Tests.Meshes;
 internal static class MeshTestSupport
 {
   /// <summary>Shared read-only meshes of the project machine (never copied into the repository).</summary>
-  public const string MeshDir = "/work/shared/data/meshes";
+  public static string MeshDir => GrCis.Rendering.Tests.SharedFolder.Combine("data", "meshes");
 
   /// <summary>The unit cube [0,1]³ as 12 outward-oriented triangles.</summary>
   public const string CubeObj = @"# unit cube
