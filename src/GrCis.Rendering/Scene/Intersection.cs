@@ -134,7 +134,8 @@ public class Intersection : IComparable<Intersection>
 
   /// <summary>
   /// Makes a pooled intersection fresh for <paramref name="solid"/>: every field as after
-  /// <c>new Intersection(solid)</c> (the fast path reuses one object per thread and recursion depth).
+  /// <c>new Intersection(solid)</c> except the three matrices, which completion always sets (the fast
+  /// path reuses one object per thread and recursion depth).
   /// </summary>
   internal void Reset(ISolid solid)
   {
@@ -144,7 +145,8 @@ public class Intersection : IComparable<Intersection>
     SolidData = null;
     CoordLocal = NormalLocal = CoordWorld = CoordObject = Normal = TangentU = TangentV = default;
     TextureCoord = default;
-    LocalToWorld = WorldToLocal = LocalToObject = default;
+    // LocalToWorld, WorldToLocal and LocalToObject (384 bytes) are not cleared: the prepared scene's
+    // CompleteCached/CompleteWith overwrites all three before the hit is handed out.
     SurfaceColor = null;
     ReflectanceModel = null;
     Material = null;
