@@ -488,6 +488,8 @@ public sealed class PreparedScene
     double ox = p0.X, oy = p0.Y, oz = p0.Z;
     BvhNode[] nodes = bvh.Nodes;
     int[] items = bvh.Items;
+    // Per-axis "direction is negative" as bits (bit a set: near child is the right one along axis a).
+    int negMask = (dx < 0.0 ? 1 : 0) | (dy < 0.0 ? 2 : 0) | (dz < 0.0 ? 4 : 0);
 
     Span<int> stack = stackSize <= 256 ? stackalloc int[stackSize] : new int[stackSize];
     int sp = 0;
@@ -525,7 +527,7 @@ public sealed class PreparedScene
         else
         {
           // Near child first (by the ray's sign along the split axis).
-          bool negative = n.Axis == 0 ? dx < 0.0 : n.Axis == 1 ? dy < 0.0 : dz < 0.0;
+          bool negative = ((negMask >> n.Axis) & 1) != 0;
           int left = ni + 1, right = n.Index;
           if (negative)
           {

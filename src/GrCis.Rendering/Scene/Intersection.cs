@@ -133,8 +133,22 @@ public class Intersection : IComparable<Intersection>
   double[]? spareColor;
 
   /// <summary>
+  /// Sets the surface colour to a copy of <paramref name="color"/> by overwriting this hit's own pooled
+  /// copy when it holds the current colour (same values as a fresh clone, no allocation); false otherwise.
+  /// </summary>
+  internal bool TryCopySurfaceColor(double[] color)
+  {
+    double[]? own = spareColor;
+    if (own == null || !ReferenceEquals(SurfaceColor, own) || own.Length != color.Length)
+      return false;
+    Array.Copy(color, own, color.Length);
+    return true;
+  }
+
+  /// <summary>
   /// Makes a pooled intersection fresh for <paramref name="solid"/>: every field as after
-  /// <c>new Intersection(solid)</c> (the fast path reuses one object per thread and recursion depth).
+  /// <c>new Intersection(solid)</c> except the three matrices, which completion always sets (the fast
+  /// path reuses one object per thread and recursion depth).
   /// </summary>
   internal void Reset(ISolid solid)
   {
@@ -144,7 +158,8 @@ public class Intersection : IComparable<Intersection>
     SolidData = null;
     CoordLocal = NormalLocal = CoordWorld = CoordObject = Normal = TangentU = TangentV = default;
     TextureCoord = default;
-    LocalToWorld = WorldToLocal = LocalToObject = default;
+    // LocalToWorld, WorldToLocal and LocalToObject (384 bytes) are not cleared: the prepared scene's
+    // CompleteCached/CompleteWith overwrites all three before the hit is handed out.
     SurfaceColor = null;
     ReflectanceModel = null;
     Material = null;

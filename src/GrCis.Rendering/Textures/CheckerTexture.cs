@@ -24,7 +24,8 @@ public class CheckerTexture : ITexture
   {
     long ui = (long)Math.Floor(inter.TextureCoord.X * Fu);
     long vi = (long)Math.Floor(inter.TextureCoord.Y * Fv);
-    if (((ui + vi) & 1) != 0)
+    // GrCis gives the hit its own copy of Color2; a pooled hit's own colour array takes the values instead.
+    if (((ui + vi) & 1) != 0 && !inter.TryCopySurfaceColor(Color2))
       inter.SurfaceColor = (double[])Color2.Clone();
     inter.textureApplied = true;
     return ui + (long)RandomStatic.numericRecipes((ulong)vi);

@@ -97,6 +97,17 @@ public class AllocationTests
   }
 
   [Fact]
+  public void Checker_floor_pixels_allocate_nothing_per_hit()
+  {
+    // "Sphere on the plane": the floor's CheckerTexture used to clone its second colour on every odd cell.
+    IRayScene scene = global::Rendering.Scenes.Create("Sphere on the plane");
+    var f = new RayTracing(scene) { DoReflections = false, DoRefractions = false };
+    double perPixel = BytesPerPixel(scene, f, 200, 420, 32);
+    output.WriteLine($"checker floor: {perPixel:F1} B/pixel");
+    Assert.True(perPixel <= 8, $"{perPixel:F1} B/pixel");
+  }
+
+  [Fact]
   public void Mesh_pixels_allocate_only_per_hit()
   {
     var sc = new DefaultRayScene();
