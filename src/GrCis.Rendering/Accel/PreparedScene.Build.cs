@@ -1,0 +1,192 @@
+using System;
+using System.Collections.Generic;
+using OpenTK.Mathematics;
+
+namespace Rendering.Accel;
+
+/// <summary>Building a <see cref="PreparedScene"/>: flattening unions, classifying members, bounds.</summary>
+public sealed partial class PreparedScene
+{
+  /// <summary>Prepares <paramref name="root"/> (usually <see cref="IRayScene.Intersectable"/>).</summary>
+  public static PreparedScene Prepare(IIntersectable? root)
+  {
+    var members = new List<PreparedMember>();
+    var chain = new List<Matrix4d>();
+    var path = new List<Matrix4d>();
+    bool union = false;
+    if (root != null)
+      union = Classify(root, path, members, chain);
+    return new PreparedScene(root, union, members.ToArray(), chain.ToArray());
+  }
+
+  // ---------------------------------------------------------------- preparation
+
+  static bool IsPureUnion(ISceneNode node) =>
+    node.GetType() == typeof(CSGInnerNode) &&
+    node is CSGInnerNode c && c.Operation == SetOperation.Union && c.BoundingVolume == null;
+
+  /// <summary>Top level: returns true for union semantics, false for a single member's raw list.</summary>
+  static bool Classify(IIntersectable node, List<Matrix4d> path, List<PreparedMember> members, List<Matrix4d> chain)
+  {
+    if (node is ISceneNode sn && IsPureUnion(sn))
+    {
+      if (sn.Children.Count == 0)
+        return false;
+      if (sn.Children.Count == 1)
+      {
+        // A union of one child returns the child's list unmerged.
+        foreach (ISceneNode only in sn.Children)
+        {
+          int mark = Push(path, only.FromParent);
+          bool u = Classify(only, path, members, chain);
+          path.RemoveRange(mark, path.Count - mark);
+          return u;
+        }
+      }
+      Flatten(sn, path, members, chain);
+      return true;
+    }
+    AddMember(node, path, members, chain);
+    return false;
+  }
+
+  static void Flatten(ISceneNode node, List<Matrix4d> path, List<PreparedMember> members, List<Matrix4d> chain)
+  {
+    foreach (ISceneNode child in node.Children)
+    {
+      int mark = Push(path, child.FromParent);
+      if (IsPureUnion(child))
+        Flatten(child, path, members, chain);
+      else
+        AddMember(child, path, members, chain);
+      path.RemoveRange(mark, path.Count - mark);
+    }
+  }
+
+  static int Push(List<Matrix4d> path, in Matrix4d m)
+  {
+    int mark = path.Count;
+    // An identity step is exact to skip (x·1 + y·0 + z·0 + 0 == x for finite coordinates).
+    if (m != Matrix4d.Identity)
+      path.Add(m);
+    return mark;
+  }
+
+  static void AddMember(IIntersectable node, List<Matrix4d> path, List<PreparedMember> members, List<Matrix4d> chain)
+  {
+    var m = new PreparedMember
+    {
+      Node = node,
+      ChainStart = chain.Count,
+      ChainCount = path.Count,
+      WorldBox = Aabb.Empty,
+    };
+    chain.AddRange(path);
+
+    if (node is IFastSolid f && f.SupportsFastPath)
+    {
+      m.Fast = f;
+      m.LocalToWorld = f.ToWorld();
+      m.WorldToLocal = m.LocalToWorld.Inverted();
+      m.LocalToObject = f.ToObject();
+      m.NoShadow = f.GetLocalAttribute(PropertyName.NO_SHADOW) != null;
+
+      // The look-ups Intersection.CompleteWith does per hit, once (only when they do not create objects).
+      if (f.GetAttribute(PropertyName.REFLECTANCE_MODEL) is IReflectanceModel model &&
+          f.GetAttribute(PropertyName.MATERIAL) is IMaterial material)
+      {
+        m.AttributesCached = true;
+        m.Model = model;
+        m.Material = material;
+        m.Color = f.GetAttribute(PropertyName.COLOR) as double[] ?? material.Color;
+        m.Textures = f.GetTextures();
+        m.Recursion = f.GetAttribute(PropertyName.RECURSION);
+      }
+    }
+
+    if (node is Sphere && m.Fast != null && TrySimilarity(path, out Vector3d center, out double radius))
+    {
+      // 1e-6 relative slack covers the rounding of the chain and of this estimate by a wide margin.
+      double r = radius * (1.0 + 1.0e-6) + 1.0e-12;
+      m.CullCenter = center;
+      m.CullRadius2 = r * r;
+    }
+
+    if (node is ISceneNode sn && TryClosedBox(sn, out Aabb local))
+    {
+      // World box from the same chain the ray goes through (padded for rounding).
+      Matrix4d worldToLocal = Matrix4d.Identity;
+      for (int k = 0; k < path.Count; k++)
+        worldToLocal *= path[k];
+      Aabb world = local.Transformed(worldToLocal.Inverted());
+      if (world.IsEmpty || world.IsFinite)
+      {
+        m.Closed = true;
+        m.WorldBox = world.IsEmpty ? world : world.Padded();
+      }
+    }
+    members.Add(m);
+  }
+
+  /// <summary>World centre and radius of the unit sphere under the chain, when the chain is a similarity.</summary>
+  static bool TrySimilarity(List<Matrix4d> path, out Vector3d center, out double radius)
+  {
+    Matrix4d worldToLocal = Matrix4d.Identity;
+    for (int k = 0; k < path.Count; k++)
+      worldToLocal *= path[k];
+    Matrix4d l2w = worldToLocal.Inverted();
+    center = Vector3d.TransformPosition(Vector3d.Zero, l2w);
+    Vector3d a = Vector3d.TransformVector(Vector3d.UnitX, l2w);
+    Vector3d b = Vector3d.TransformVector(Vector3d.UnitY, l2w);
+    Vector3d c = Vector3d.TransformVector(Vector3d.UnitZ, l2w);
+    double la = a.Length, lb = b.Length, lc = c.Length;
+    radius = Math.Max(la, Math.Max(lb, lc));
+    double tol = 1.0e-9 * radius;
+    bool similar = Math.Abs(la - lb) <= tol && Math.Abs(la - lc) <= tol &&
+                   Math.Abs(Vector3d.Dot(a, b)) <= tol * radius && Math.Abs(Vector3d.Dot(a, c)) <= tol * radius &&
+                   Math.Abs(Vector3d.Dot(b, c)) <= tol * radius;
+    return similar && double.IsFinite(radius) && radius > 0.0 && double.IsFinite(center.X + center.Y + center.Z);
+  }
+
+  /// <summary>Local box of a closed member: a closed known solid, or a library CSG node over closed members.</summary>
+  static bool TryClosedBox(ISceneNode node, out Aabb box)
+  {
+    box = Aabb.Empty;
+    if (node is IFastSolid f)
+    {
+      if (!f.SupportsFastPath || !f.IsClosed)
+        return false;
+      f.GetBoundingBox(out Vector3d c1, out Vector3d c2);
+      box = new Aabb(c1, c2);
+      return true;
+    }
+    if (node.GetType() != typeof(CSGInnerNode))
+      return false;
+
+    var csg = (CSGInnerNode)node;
+    bool first = true;
+    foreach (ISceneNode child in csg.Children)
+    {
+      if (!TryClosedBox(child, out Aabb cb))
+        return false;
+      cb = cb.Transformed(child.ToParent);
+      switch (csg.Operation)
+      {
+        case SetOperation.Intersection:
+          box = first ? cb : Aabb.Intersect(box, cb);
+          break;
+        case SetOperation.Difference:
+          if (first)
+            box = cb;
+          break;
+        default:
+          box.Add(cb);
+          break;
+      }
+      first = false;
+    }
+    if (box.IsEmpty)
+      box = Aabb.Empty;
+    return true;
+  }
+}
