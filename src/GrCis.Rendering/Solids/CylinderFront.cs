@@ -54,22 +54,7 @@ public class CylinderFront : Cylinder
     insideBefore = false;
     if (!Span(p0, p1, out double t, out int capIn, out _, out _) || capIn != 0)
       return false;
-    if (SolidSupport.Accepted(t, len2))
-    {
-      hit = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
-      return true;
-    }
-    insideBefore = true;
-    if (!shell)
-      return false;
-    double t2 = t + Intersection.SHELL_THICKNESS;
-    if (!SolidSupport.Accepted(t2, len2))
-    {
-      insideBefore = false;
-      return false;
-    }
-    hit = new FastHit { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
-    return true;
+    return SolidSupport.FrontOrShell(t, p0, p1, len2, shell, out hit, out insideBefore);
   }
 
   public override void InitIntersection(in FastHit hit, Intersection target)

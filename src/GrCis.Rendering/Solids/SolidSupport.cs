@@ -2,6 +2,7 @@ using System;
 using System.Collections.Concurrent;
 using System.Reflection;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -85,6 +86,33 @@ internal static class SolidSupport
 
   /// <summary>The test <see cref="Intersection.FirstIntersection"/> applies (with the world ray's |p1|²).</summary>
   public static bool Accepted(double t, double len2) => t > 0.0 && t * t * len2 > Intersection.RAY_EPSILON2;
+
+  /// <summary>
+  /// First accepted record of a one-sided "front" solid's list: the front hit at <paramref name="t"/>
+  /// (an entry), else — with a <paramref name="shell"/> — the exit <see cref="Intersection.SHELL_THICKNESS"/>
+  /// behind it. <see cref="FastHit.Aux"/> keeps the ray direction for texture coordinates.
+  /// </summary>
+  public static bool FrontOrShell(double t, in Vector3d p0, in Vector3d p1, double len2, bool shell, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    if (Accepted(t, len2))
+    {
+      hit = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
+      return true;
+    }
+    if (!shell)
+    {
+      insideBefore = true;
+      return false;
+    }
+    double t2 = t + Intersection.SHELL_THICKNESS;
+    if (!Accepted(t2, len2))
+      return false;
+    insideBefore = true;
+    hit = new FastHit { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
+    return true;
+  }
 
   /// <summary>
   /// First accepted record of the list [enter at <paramref name="t0"/>, exit at <paramref name="t1"/>]:

@@ -48,22 +48,7 @@ public class SphereFront : Sphere
     insideBefore = false;
     if (!Roots(p0, p1, out double t0, out _))
       return false;
-    if (SolidSupport.Accepted(t0, len2))
-    {
-      hit = new FastHit { T = t0, CoordLocal = p0 + t0 * p1, Aux = p1, Enter = true, Front = true };
-      return true;
-    }
-    insideBefore = true;
-    if (!shell)
-      return false;
-    double t = t0 + Intersection.SHELL_THICKNESS;
-    if (!SolidSupport.Accepted(t, len2))
-    {
-      insideBefore = false;
-      return false;
-    }
-    hit = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1 };
-    return true;
+    return SolidSupport.FrontOrShell(t0, p0, p1, len2, shell, out hit, out insideBefore);
   }
 
   public override void InitIntersection(in FastHit hit, Intersection target)
