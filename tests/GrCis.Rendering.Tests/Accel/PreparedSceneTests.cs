@@ -13,8 +13,8 @@ public class PreparedSceneTests
   {
     IRayScene scene = TestScenes.Flake9(2);
     PreparedScene ps = PreparedScene.Prepare(scene.Intersectable);
-    Assert.Equal(TestScenes.Flake9Count(2) + 1, ps.MemberCount);
-    Assert.Equal(TestScenes.Flake9Count(2), ps.BoundedCount);
+    Assert.Equal(global::Rendering.Scenes.SphereFlake9Count(2) + 1, ps.MemberCount);
+    Assert.Equal(global::Rendering.Scenes.SphereFlake9Count(2), ps.BoundedCount);
     Assert.Equal(1, ps.UnboundedCount); // the floor plane
     Assert.Equal(0, ps.ListMemberCount);
   }

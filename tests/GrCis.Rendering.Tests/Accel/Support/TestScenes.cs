@@ -248,16 +248,13 @@ public static class TestScenes
   public static IRayScene Flake9(int depth = 4)
   {
     CSGInnerNode root = Root(new PhongMaterial(new[] { 1.0, 0.8, 0.1 }, 0.1, 0.6, 0.4, 128));
-    ISceneNode sf = Flake9Node(depth, Flake9Transforms());
+    ISceneNode sf = Flake9Node(depth, global::Rendering.Scenes.Flake9Transforms());
     sf.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { 1.0, 0.6, 0.1 }, 0.1, 0.6, 0.3, 16));
     root.InsertChild(sf, Matrix4d.Identity);
     root.InsertChild(Floor(new[] { 0.3, 0.0, 0.0 }, 0.6), FloorMatrix);
     return Base(root, new Vector3d(1.6, 2.2, -7), new Vector3d(-0.12, -0.3, 1), 50,
       new AmbientLightSource(0.8), new PointLightSource(new Vector3d(-5, 4, -3), 1.2));
   }
-
-  /// <summary>Number of spheres of <see cref="Flake9"/> at a depth.</summary>
-  public static int Flake9Count(int depth) => depth < 0 ? 0 : 1 + 9 * Flake9Count(depth - 1);
 
   static ISceneNode Flake9Node(int depth, Matrix4d[] children)
   {
@@ -267,34 +264,5 @@ public static class TestScenes
       foreach (Matrix4d m in children)
         node.InsertChild(Flake9Node(depth - 1, children), m);
     return node;
-  }
-
-  static Matrix4d[] Flake9Transforms()
-  {
-    var dirs = new Vector3d[9];
-    for (int k = 0; k < 6; k++)
-    {
-      double az = (15 + 60 * k) * Math.PI / 180;
-      dirs[k] = new Vector3d(Math.Cos(az), 0, -Math.Sin(az));
-    }
-    double el = Math.Asin(Math.Sqrt(2.0 / 3.0));
-    for (int k = 0; k < 3; k++)
-    {
-      double az = (45 + 120 * k) * Math.PI / 180;
-      dirs[6 + k] = new Vector3d(Math.Cos(el) * Math.Cos(az), Math.Sin(el), -Math.Cos(el) * Math.Sin(az));
-    }
-    var result = new Matrix4d[9];
-    for (int k = 0; k < 9; k++)
-    {
-      // Child frame: its "up" (+y) points away from the parent along dirs[k].
-      Vector3d d = dirs[k];
-      Vector3d axis = Vector3d.Cross(Vector3d.UnitY, d);
-      double angle = Math.Acos(Math.Clamp(d.Y, -1, 1));
-      Matrix4d r = axis.LengthSquared < 1e-24 ? Matrix4d.Identity : Matrix4d.CreateFromAxisAngle(axis.Normalized(), angle);
-      if ((Vector3d.TransformVector(Vector3d.UnitY, r) - d).Length > 1e-9)
-        r = Matrix4d.CreateFromAxisAngle(axis.Normalized(), -angle);
-      result[k] = Matrix4d.Scale(1.0 / 3.0) * r * Matrix4d.CreateTranslation(d * (4.0 / 3.0));
-    }
-    return result;
   }
 }
