@@ -97,10 +97,12 @@ public static class TileRenderer
         {
           Tile t = tiles[k];
           renderer.RenderRectangle(image, t.X1, t.Y1, t.X2, t.Y2);
-          int d = Interlocked.Increment(ref done);
-          if (progress != null)
-            lock (progressLock)
-              progress(new RenderProgress(d, tiles.Count, t));
+          // Count and report under one lock so listeners see TilesDone strictly increasing.
+          lock (progressLock)
+          {
+            int d = ++done;
+            progress?.Invoke(new RenderProgress(d, tiles.Count, t));
+          }
         }
       }
       catch (Exception e)
