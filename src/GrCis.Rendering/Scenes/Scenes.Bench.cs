@@ -38,7 +38,7 @@ public static partial class Scenes
   }
 
   /// <summary>The nine child frames of the POV-Ray peer flake (also used by the fast-path tests).</summary>
-  internal static Matrix4d[] Flake9Transforms()
+  public static Matrix4d[] Flake9Transforms()
   {
     // Child directions with the parent's axis +y: 6 on the equator, 3 above (the SPD "balls" set).
     var dirs = new Vector3d[9];
