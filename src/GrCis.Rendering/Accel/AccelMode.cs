@@ -3,7 +3,10 @@ namespace Rendering.Accel;
 /// <summary>How ray queries are answered.</summary>
 public enum AccelMode
 {
-  /// <summary>Faithful GrCis path: every query goes through <see cref="IIntersectable.Intersect"/> of the whole scene.</summary>
+  /// <summary>
+  /// Faithful GrCis path: every query goes through <see cref="IIntersectable.Intersect"/> of the whole scene,
+  /// with no search structure anywhere (a <see cref="TriangleMesh"/> tests every triangle, as in GrCis).
+  /// </summary>
   None = 0,
 
   /// <summary>Prepared scene: flattened unions, cached matrices, a BVH and allocation-free kernels (the default).</summary>

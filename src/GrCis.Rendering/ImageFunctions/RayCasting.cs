@@ -134,9 +134,16 @@ public class RayCasting : IImageFunction
     PreparedScene? ps = Prepared;
     if (ps != null)
       return ps.FirstHit(p0, p1);
-    LinkedList<Intersection>? list = Scene.Intersectable?.Intersect(p0, p1);
+    LinkedList<Intersection>? list = FaithfulQuery.Intersect(Scene.Intersectable, p0, p1);
     return Intersection.FirstIntersection(list, ref p1);
   }
+
+  /// <summary>
+  /// All records along the ray from the whole scene (the LinkedList API), searched as the current
+  /// <see cref="Accel"/> mode says: with <see cref="AccelMode.None"/> without any search structure.
+  /// </summary>
+  protected LinkedList<Intersection>? IntersectScene(Vector3d p0, Vector3d p1) =>
+    Accel == AccelMode.None ? FaithfulQuery.Intersect(Scene.Intersectable, p0, p1) : Scene.Intersectable?.Intersect(p0, p1);
 
   /// <summary>Completes the hit and applies its textures; returns the hash of the solid and texture cells.</summary>
   protected static long CompleteAndTexture(Intersection i)

@@ -62,7 +62,7 @@ public class RayTracing : RayCasting
     PreparedScene? ps = Prepared;
     if (ps != null)
       return ps.Occluded(p0, dir);
-    LinkedList<Intersection>? list = Scene.Intersectable?.Intersect(p0, dir);
+    LinkedList<Intersection>? list = FaithfulQuery.Intersect(Scene.Intersectable, p0, dir);
     Intersection? si = Intersection.FirstRealIntersection(list, ref dir);
     return si != null && !si.Far(1.0, ref dir);
   }
@@ -185,7 +185,7 @@ public class RayTracing : RayCasting
   /// </summary>
   protected virtual double ShadowTransmittance(Vector3d p0, Vector3d dir)
   {
-    LinkedList<Intersection>? list = Scene.Intersectable?.Intersect(p0, dir);
+    LinkedList<Intersection>? list = IntersectScene(p0, dir);
     if (list == null)
       return 1.0;
     double transmit = 1.0;

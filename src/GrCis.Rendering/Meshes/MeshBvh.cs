@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Runtime.CompilerServices;
 using OpenTK.Mathematics;
 
 namespace Rendering;
@@ -87,11 +88,7 @@ internal sealed class MeshBvh
     {
       int i = order[k];
       triId[k] = i;
-      Vector3d e1 = b[i] - a[i], e2 = c[i] - a[i];
-      int o = 9 * k;
-      tri[o] = a[i].X; tri[o + 1] = a[i].Y; tri[o + 2] = a[i].Z;
-      tri[o + 3] = e1.X; tri[o + 4] = e1.Y; tri[o + 5] = e1.Z;
-      tri[o + 6] = e2.X; tri[o + 7] = e2.Y; tri[o + 8] = e2.Z;
+      MeshTriangles.Store(tri, 9 * k, a[i], b[i], c[i]);
     }
   }
 
@@ -289,34 +286,11 @@ internal sealed class MeshBvh
       hits.Add(new MeshHit { T = t, Triangle = triId[k], U = u, V = v, Front = front });
   }
 
-  /// <summary>Möller–Trumbore against the k-th triangle in leaf order (the one routine both queries use).</summary>
+  /// <summary>Möller–Trumbore against the k-th triangle in leaf order.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   bool Triangle(int k, double ox, double oy, double oz, double dx, double dy, double dz,
-                out double t, out double u, out double v, out bool front)
-  {
-    int o = 9 * k;
-    double e1x = tri[o + 3], e1y = tri[o + 4], e1z = tri[o + 5];
-    double e2x = tri[o + 6], e2y = tri[o + 7], e2z = tri[o + 8];
-    t = u = v = 0.0;
-    front = false;
-
-    // Möller–Trumbore: pvec = d × e2, det = e1 · pvec.
-    double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
-    double det = e1x * px + e1y * py + e1z * pz;
-    if (det == 0.0)
-      return false;
-    double inv = 1.0 / det;
-    double tx = ox - tri[o], ty = oy - tri[o + 1], tz = oz - tri[o + 2];
-    u = (tx * px + ty * py + tz * pz) * inv;
-    if (u < 0.0 || u > 1.0)
-      return false;
-    double qx = ty * e1z - tz * e1y, qy = tz * e1x - tx * e1z, qz = tx * e1y - ty * e1x;
-    v = (dx * qx + dy * qy + dz * qz) * inv;
-    if (v < 0.0 || u + v > 1.0)
-      return false;
-    t = (e2x * qx + e2y * qy + e2z * qz) * inv;
-    front = det > 0.0;
-    return true;
-  }
+                out double t, out double u, out double v, out bool front) =>
+    MeshTriangles.Hit(tri, 9 * k, ox, oy, oz, dx, dy, dz, out t, out u, out v, out front);
 
   /// <summary>
   /// The first hit in the list's order (T, then triangle) among hits <see cref="Intersection.FirstIntersection"/>

@@ -20,6 +20,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
   protected SceneBrep mesh;
 
   MeshBvh? bvh;
+  MeshTriangles? triangles;
 
   [ThreadStatic]
   static List<MeshHit>? hitBuffer;
@@ -53,19 +54,45 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
     }
   }
 
+  /// <summary>The flat triangle list the faithful path searches (built on first use).</summary>
+  internal MeshTriangles Triangles
+  {
+    get
+    {
+      MeshTriangles? t = Volatile.Read(ref triangles);
+      if (t != null)
+        return t;
+      Interlocked.CompareExchange(ref triangles, new MeshTriangles(mesh), null);
+      return triangles!;
+    }
+  }
+
+  /// <summary>Whether the BVH has been built (the faithful path never builds it).</summary>
+  internal bool HasBvh => Volatile.Read(ref bvh) != null;
+
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
-    MeshBvh b = Bvh;
     List<MeshHit> hits = hitBuffer ??= new List<MeshHit>(16);
     hits.Clear();
-    b.IntersectAll(p0, p1, hits);
+    double eps;
+    if (FaithfulQuery.Active)
+    {
+      // --accel none: every triangle, as GrCis searched it.
+      Triangles.IntersectAll(p0, p1, hits);
+      eps = hits.Count > 1 ? DuplicateTolerance(Triangles.Extent, p1) : 0.0;
+    }
+    else
+    {
+      MeshBvh b = Bvh;
+      b.IntersectAll(p0, p1, hits);
+      eps = hits.Count > 1 ? DuplicateTolerance(b.Extent, p1) : 0.0;
+    }
     if (hits.Count == 0)
       return null;
     if (hits.Count > 1)
       hits.Sort(static (x, y) => x.T != y.T ? x.T.CompareTo(y.T) : x.Triangle.CompareTo(y.Triangle));   // ties: a fixed order
 
     // A crossing through a shared edge or vertex is found in each incident triangle: keep one.
-    double eps = DuplicateTolerance(b, p1);
     var result = new LinkedList<Intersection>();
     for (int i = 0; i < hits.Count; i++)
     {
@@ -87,7 +114,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
     return result;
   }
 
-  static double DuplicateTolerance(MeshBvh b, in Vector3d p1) => 1e-10 * Math.Max(b.Extent, 1e-300) / p1.Length;
+  static double DuplicateTolerance(double extent, in Vector3d p1) => 1e-10 * Math.Max(extent, 1e-300) / p1.Length;
 
   // ---------------------------------------------------------------- fast path (same triangle test, same list)
 
@@ -112,7 +139,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
     insideBefore = hasLast ? last.Front : hasFirst && !first.Front;
     if (!hasFirst)
       return false;
-    if (hasLast && last.Front == first.Front && first.T - last.T <= DuplicateTolerance(b, p1))
+    if (hasLast && last.Front == first.Front && first.T - last.T <= DuplicateTolerance(b.Extent, p1))
       return FirstFromList(p0, p1, len2, out hit, out insideBefore);
     hit.T = first.T;
     hit.CoordLocal = p0 + first.T * p1;

@@ -115,6 +115,58 @@ public class RealSolidsTests
   }
 
   [Fact]
+  public void Faithful_path_tests_every_triangle_without_building_the_mesh_bvh()
+  {
+    // GrCis had no search structures: --accel none must not build one, and must list the same hits.
+    IRayScene slowScene = Mesh(ProceduralMesh.Torus(40, 20), tilt: true);
+    RenderHelper.Render(slowScene, AccelMode.None, 40, 30);
+    TriangleMesh slowMesh = FindMesh(slowScene.Intersectable!);
+    Assert.False(slowMesh.HasBvh);
+
+    IRayScene fastScene = Mesh(ProceduralMesh.Torus(40, 20), tilt: true);
+    RenderHelper.Render(fastScene, AccelMode.Bvh, 40, 30);
+    Assert.True(FindMesh(fastScene.Intersectable!).HasBvh);
+
+    // Ray by ray, the brute-force list equals the BVH's list record for record (bits of T included).
+    var mesh = new TriangleMesh(ProceduralMesh.Torus(40, 20));
+    var rnd = new System.Random(7);
+    int crossings = 0;
+    for (int n = 0; n < 2000; n++)
+    {
+      var p0 = new Vector3d(rnd.NextDouble() * 6 - 3, rnd.NextDouble() * 6 - 3, rnd.NextDouble() * 6 - 3);
+      var p1 = new Vector3d(rnd.NextDouble() * 2 - 1, rnd.NextDouble() * 2 - 1, rnd.NextDouble() * 2 - 1) - 0.1 * p0;
+      var brute = FaithfulQuery.Intersect(mesh, p0, p1);
+      var tree = mesh.Intersect(p0, p1);
+      Assert.Equal(tree?.Count ?? 0, brute?.Count ?? 0);
+      if (tree == null)
+        continue;
+      crossings += tree.Count;
+      using var a = tree.GetEnumerator();
+      using var b = brute!.GetEnumerator();
+      while (a.MoveNext() && b.MoveNext())
+      {
+        Assert.Equal(a.Current.T, b.Current.T);
+        Assert.Equal(a.Current.Enter, b.Current.Enter);
+        Assert.Equal(a.Current.CoordLocal, b.Current.CoordLocal);
+      }
+    }
+    Assert.True(crossings > 500, $"only {crossings} crossings: the rays should hit the torus often");
+  }
+
+  static TriangleMesh FindMesh(IIntersectable root) => Find(root) ?? throw new Xunit.Sdk.XunitException("no mesh in the scene");
+
+  static TriangleMesh? Find(IIntersectable node)
+  {
+    if (node is TriangleMesh m)
+      return m;
+    if (node is ISceneNode sn)
+      foreach (ISceneNode child in sn.Children)
+        if (Find(child) is TriangleMesh found)
+          return found;
+    return null;
+  }
+
+  [Fact]
   public void Procedural_torus_has_the_asked_triangle_count_and_outward_faces()
   {
     SceneBrep m = ProceduralMesh.Torus(100, 50);
