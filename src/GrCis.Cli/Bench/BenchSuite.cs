@@ -17,7 +17,7 @@ namespace GrCis.Cli.Bench;
 /// </summary>
 public static class BenchSuite
 {
-  static readonly ImageSize Vga = new(640, 480), Hd = new(1280, 720), Small = new(320, 240), Tiny = new(64, 48);
+  static readonly ImageSize Vga = new(640, 480), Hd = new(1280, 720), Small = new(320, 240), Mini = new(160, 120), Tiny = new(64, 48), Micro = new(32, 24);
 
   public static IReadOnlyList<BenchCase> Create(bool quick, string? meshFile)
   {
@@ -31,6 +31,7 @@ public static class BenchSuite
       return cases;
     }
 
+    // The faithful path tests every solid and every triangle: the flakes and meshes get smaller images there.
     foreach (string name in Scenes.Names)
     {
       // GrCis's flake (2,801 spheres) is slow on the faithful path: a tinier image for it.
@@ -42,9 +43,9 @@ public static class BenchSuite
     }
     cases.Add(new BenchCase("flake9", "Sphere flake 9×4 (POV-Ray peer)", () => Flake9(4), Vga, 16, Tiny, 1) { Description = "7,381 spheres" });
     cases.Add(new BenchCase("mesh-10k", "Torus mesh 10k", () => Mesh(ProceduralMesh.Torus(100, 50)), Vga, 16, Small, 1) { Description = "10,000 triangles" });
-    cases.Add(new BenchCase("mesh-1m", "Torus mesh 1M", () => Mesh(ProceduralMesh.Torus(1000, 500)), Vga, 16, Tiny, 1) { Description = "1,000,000 triangles" });
+    cases.Add(new BenchCase("mesh-1m", "Torus mesh 1M", () => Mesh(ProceduralMesh.Torus(1000, 500)), Vga, 16, Micro, 1) { Description = "1,000,000 triangles" });
     if (meshFile != null)
-      cases.Add(new BenchCase("mesh-file", "Mesh " + System.IO.Path.GetFileName(meshFile), () => MeshFile(meshFile), Vga, 16, Tiny, 1));
+      cases.Add(new BenchCase("mesh-file", "Mesh " + System.IO.Path.GetFileName(meshFile), () => MeshFile(meshFile), Vga, 16, Mini, 1));
     cases.Add(new BenchCase("two-spheres-720p", "Two spheres 1280×720", () => Scenes.Create("Two spheres"), Hd, 16, Small, 1));
     return cases;
   }

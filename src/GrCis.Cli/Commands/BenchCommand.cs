@@ -105,7 +105,7 @@ public static class BenchCommand
       $"{r.Name,-34} {r.Size,9} {r.Spp,2} spp  {r.Seconds,8:0.000} s (cpu {r.CpuSeconds,7:0.000} s)  {r.RaysPerSecond / 1e6,7:0.00} Mrays/s  prep {r.PrepareSeconds:0.00} s");
     if (r.Speedup is double sp)
       s += string.Create(CultureInfo.InvariantCulture,
-        $"  none@{r.SlowSize} {r.SlowSpp}spp {r.SlowSeconds:0.00} s {r.SlowRaysPerSecond / 1e6:0.000} Mrays/s  speedup {sp:0.0}×");
+        $"  none@{r.SlowSize} {r.SlowSpp}spp {r.SlowSeconds:0.00} s {r.SlowRaysPerSecond:0.###e+0} rays/s  speedup {sp:#,0.0}×");
     if (r.Fallbacks > 0)
       s += string.Create(CultureInfo.InvariantCulture, $"  fallbacks {r.Fallbacks}");
     if (r.Description.Length > 0)
