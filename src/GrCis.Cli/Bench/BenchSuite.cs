@@ -36,7 +36,7 @@ public static class BenchSuite
     {
       // GrCis's flake (2,801 spheres) is slow on the faithful path: a tinier image for it.
       bool flake = name == "Sphere flake";
-      cases.Add(new BenchCase(Slug(name), name, () => Scenes.Create(name), Vga, 16, flake ? Tiny : Small, 1)
+      cases.Add(new BenchCase(Slug(name), name, () => Scenes.Create(name), Vga, 16, flake ? Tiny : Vga, 1)
       {
         Description = flake ? "2,801 spheres" : "",
       });
@@ -46,7 +46,7 @@ public static class BenchSuite
     cases.Add(new BenchCase("mesh-1m", "Torus mesh 1M", () => Mesh(ProceduralMesh.Torus(1000, 500)), Vga, 16, Micro, 1) { Description = "1,000,000 triangles" });
     if (meshFile != null)
       cases.Add(new BenchCase("mesh-file", "Mesh " + System.IO.Path.GetFileName(meshFile), () => MeshFile(meshFile), Vga, 16, Mini, 1));
-    cases.Add(new BenchCase("two-spheres-720p", "Two spheres 1280×720", () => Scenes.Create("Two spheres"), Hd, 16, Small, 1));
+    cases.Add(new BenchCase("two-spheres-720p", "Two spheres 1280×720", () => Scenes.Create("Two spheres"), Hd, 16, Vga, 1));
     return cases;
   }
 
