@@ -78,4 +78,22 @@ public class BenchAndAccelTests
     CliRun run = CliRun.Of(dir.Path, "bench", "--quick", "--scene", "no-such-case");
     Assert.Equal(ExitCodes.Usage, run.ExitCode);
   }
+
+  [Fact]
+  public void Bench_scaling_times_one_thread_and_n_threads_and_the_machine_ceiling()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "bench", "--quick", "--json", "--no-slow", "--scaling", "--threads", "2", "--scene", "five-balls");
+    Assert.Equal(0, run.ExitCode);
+    using JsonDocument doc = JsonDocument.Parse(run.Out);
+    JsonElement c = Assert.Single(doc.RootElement.EnumerateArray().ToArray());
+    double one = c.GetProperty("oneThreadSeconds").GetDouble(), two = c.GetProperty("threadsSeconds").GetDouble();
+    Assert.True(one > 0 && two > 0, c.ToString());
+    Assert.Equal(one / two, c.GetProperty("scaling").GetDouble(), 9);
+    // Two threads of pure arithmetic: between one core's worth (fully shared) and a little over two.
+    double ceiling = c.GetProperty("scalingCeiling").GetDouble();
+    Assert.InRange(ceiling, 0.5, 2.5);
+    Assert.Contains("ceiling", run.Error);
+    Assert.Equal(JsonValueKind.Null, c.GetProperty("speedup").ValueKind);
+  }
 }

@@ -31,4 +31,14 @@ public sealed record BenchResult
 
   /// <summary>Fast-path queries that fell back to the faithful path (rays starting inside a solid …).</summary>
   public long Fallbacks { get; init; }
+
+  /// <summary>With <c>--scaling</c>: best fast-path seconds on one thread and on <see cref="Threads"/>, alternated.</summary>
+  public double? OneThreadSeconds { get; init; }
+  public double? ThreadsSeconds { get; init; }
+
+  /// <summary>One-thread seconds over N-thread seconds (ideal: N); compare with <see cref="ScalingCeiling"/>.</summary>
+  public double? Scaling { get; init; }
+
+  /// <summary>The machine's own N-thread throughput gain on register-only arithmetic (<see cref="ParallelCeiling"/>).</summary>
+  public double? ScalingCeiling { get; init; }
 }

@@ -77,9 +77,12 @@ public static class BenchSuite
   public static string Slug(string name) => name.ToLowerInvariant().Replace(' ', '-');
 
   /// <summary>Renders one case (fast path, then the faithful path unless <paramref name="skipSlow"/>).</summary>
-  public static BenchResult Run(BenchCase c, int threads, bool skipSlow, CancellationToken cancel)
+  public static BenchResult Run(BenchCase c, int threads, bool skipSlow, CancellationToken cancel) =>
+    Run(c, c.Build(), threads, skipSlow, cancel);
+
+  /// <summary>Renders one case of an already built scene.</summary>
+  public static BenchResult Run(BenchCase c, IRayScene scene, int threads, bool skipSlow, CancellationToken cancel)
   {
-    IRayScene scene = c.Build();
 
     // Warm-up: JIT, and the lazily built mesh BVHs (timed as preparation).
     var clock = Stopwatch.StartNew();
@@ -121,7 +124,7 @@ public static class BenchSuite
     };
   }
 
-  static RenderResult Render(IRayScene scene, ImageSize size, int spp, int threads, AccelMode accel, CancellationToken cancel, out long fallbacks)
+  internal static RenderResult Render(IRayScene scene, ImageSize size, int spp, int threads, AccelMode accel, CancellationToken cancel, out long fallbacks)
   {
     var settings = new RenderSettings { Size = size, SamplesPerPixel = spp, Threads = threads, Accel = accel }.Validate();
     ImageSynthesizer renderer = RenderJob.CreateSynthesizer(settings);

@@ -5,11 +5,12 @@ using System.Globalization;
 using System.Text.Json;
 using GrCis.Cli.Bench;
 using GrCis.Cli.Jobs;
+using Rendering;
 
 namespace GrCis.Cli.Commands;
 
 /// <summary>
-/// <c>grcis bench [--json] [--quick] [--scene ID] [--threads N] [--no-slow] [--mesh FILE]</c>: the scene
+/// <c>grcis bench [--json] [--quick] [--scene ID] [--threads N] [--no-slow] [--scaling] [--mesh FILE]</c>: the scene
 /// suite, printing seconds, rays per second and the speedup over <c>--accel none</c> measured in the same run.
 /// </summary>
 public static class BenchCommand
@@ -27,11 +28,15 @@ public static class BenchCommand
     var noSlow = new Option<bool>("--no-slow") { Description = "Skip the faithful path (no speedup column)" };
     var size = new Option<string?>("--size", "-s") { Description = "Override every case's image size (WxH)", HelpName = "WxH" };
     var spp = new Option<int?>("--spp") { Description = "Override every case's samples per pixel" };
+    var scaling = new Option<bool>("--scaling")
+    {
+      Description = "Also time each case's fast path on 1 thread vs --threads (alternated, best of 2) and this machine's own parallel ceiling",
+    };
     var mesh = new Option<string?>("--mesh") { Description = "Also bench this OBJ mesh (.obj or .obj.gz), e.g. the Utah teapot", HelpName = "file" };
 
     var cmd = new Command("bench", "Benchmark the scene suite: seconds, rays/s, speedup over --accel none")
     {
-      json, quick, scene, threads, noSlow, mesh, size, spp,
+      json, quick, scene, threads, noSlow, scaling, mesh, size, spp,
     };
     cmd.SetAction(parse =>
     {
@@ -61,12 +66,23 @@ public static class BenchCommand
       bool skipSlow = parse.GetValue(noSlow);
       env.Error.WriteLine(string.Create(CultureInfo.InvariantCulture,
         $"grcis bench: {cases.Count} cases, {effective} threads; speedup = fast rays/s ÷ faithful (--accel none) rays/s, the faithful path rendered at the small size shown"));
+      bool measureScaling = parse.GetValue(scaling);
+      double? ceiling = null;
+      if (measureScaling)
+      {
+        ceiling = ParallelCeiling.Measure(effective);
+        env.Error.WriteLine(string.Create(CultureInfo.InvariantCulture,
+          $"grcis bench: this machine's {effective}-thread ceiling (register-only arithmetic, throughput vs 1 thread): {ceiling:0.00}×"));
+      }
       var results = new List<BenchResult>();
       foreach (BenchCase c in cases)
       {
         if (env.Cancel.IsCancellationRequested)
           break;
-        BenchResult r = BenchSuite.Run(c, effective, skipSlow, env.Cancel);
+        IRayScene built = c.Build();
+        BenchResult r = BenchSuite.Run(c, built, effective, skipSlow, env.Cancel);
+        if (measureScaling)
+          r = ThreadScaling.Measure(r, c, built, effective, rounds: 2, env.Cancel) with { ScalingCeiling = ceiling };
         results.Add(r);
         (asJson ? env.Error : env.Out).WriteLine(Line(r));
       }
@@ -106,6 +122,9 @@ public static class BenchCommand
     if (r.Speedup is double sp)
       s += string.Create(CultureInfo.InvariantCulture,
         $"  none@{r.SlowSize} {r.SlowSpp}spp {r.SlowSeconds:0.00} s {r.SlowRaysPerSecond:0.###e+0} rays/s  speedup {sp:#,0.0}×");
+    if (r.Scaling is double sc)
+      s += string.Create(CultureInfo.InvariantCulture,
+        $"  1→{r.Threads} threads {r.OneThreadSeconds:0.000}→{r.ThreadsSeconds:0.000} s = {sc:0.00}× (machine {r.ScalingCeiling:0.00}×)");
     if (r.Fallbacks > 0)
       s += string.Create(CultureInfo.InvariantCulture, $"  fallbacks {r.Fallbacks}");
     if (r.Description.Length > 0)
