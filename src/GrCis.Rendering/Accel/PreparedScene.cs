@@ -28,6 +28,9 @@ namespace Rendering.Accel;
 /// order, as <see cref="CSGInnerNode.Intersect"/> does, so T and local coordinates are bit-identical.
 /// Shadow rays use the same query bounded by the light (<see cref="Intersection.Far"/>), and fall back to
 /// the faithful path when the closest blocker is marked NO_SHADOW.</para>
+/// <para><b>Non-union CSG members.</b> A subtree of library CSG nodes over elementary solids is evaluated by
+/// its <see cref="CsgKernel"/> (the same merged list, in stack buffers) and reports the same pair as a solid
+/// (first valid record, inside state before it); its record is completed from its leaf's cached matrices.</para>
 /// <para>The prepared scene is a snapshot: prepare again after changing the scene graph or attributes.</para>
 /// </remarks>
 public sealed partial class PreparedScene

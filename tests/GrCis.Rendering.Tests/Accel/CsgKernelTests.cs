@@ -257,12 +257,19 @@ public class CsgKernelTests
   }
 
   [Fact]
-  public void Mesh_script_animated_and_oversized_subtrees_stay_on_the_list_path()
+  public void Mesh_script_bezier_animated_bounded_and_oversized_subtrees_stay_on_the_list_path()
   {
     var root = new CSGInnerNode(SetOperation.Union);
     root.InsertChild(Difference(new Sphere(), new Cube()), Matrix4d.Identity);                                    // kernel
     root.InsertChild(Difference(new Sphere(), new TriangleMesh(ProceduralMesh.Torus(8, 4))), Matrix4d.Identity);  // mesh
     root.InsertChild(Difference(new ScriptSphere(), new Sphere()), Matrix4d.Identity);                           // script solid
+    var net = new double[48];
+    for (int i = 0; i < 16; i++)
+    {
+      net[3 * i] = i % 4;
+      net[3 * i + 1] = i / 4;
+    }
+    root.InsertChild(Difference(new Sphere(), new BezierSurface(1, 1, net)), Matrix4d.Identity);                 // Bézier patch
     var animated = new AnimatedCSGInnerNode(SetOperation.Intersection);
     animated.InsertChild(new Sphere(), Matrix4d.Identity);
     animated.InsertChild(new Cube(), Matrix4d.Identity);
@@ -276,9 +283,9 @@ public class CsgKernelTests
     root.InsertChild(bounded, Matrix4d.Identity);                                                                 // bounding volume
 
     PreparedScene p = PreparedScene.Prepare(root);
-    Assert.Equal(6, p.MemberCount);
+    Assert.Equal(7, p.MemberCount);
     Assert.Equal(1, p.CsgMemberCount);
-    Assert.Equal(5, p.ListMemberCount);
+    Assert.Equal(6, p.ListMemberCount);
   }
 
   sealed class NeverMissVolume : IBoundingVolume
