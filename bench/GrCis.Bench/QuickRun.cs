@@ -39,7 +39,7 @@ internal static class QuickRun
     var sw = Stopwatch.StartNew();
     PreparedScene ps = PreparedScene.Prepare(scene.Intersectable);
     double prepareMs = sw.Elapsed.TotalMilliseconds;
-    Console.WriteLine($"scene {sceneName}: {ps.MemberCount} members ({ps.BoundedCount} in BVH, {ps.UnboundedCount} always tested, {ps.ListMemberCount} via LinkedList); prepare {prepareMs:F1} ms");
+    Console.WriteLine($"scene {sceneName}: {ps.MemberCount} members ({ps.BoundedCount} in BVH, {ps.UnboundedCount} always tested, {ps.CsgMemberCount} CSG kernels, {ps.ListMemberCount} via LinkedList); prepare {prepareMs:F1} ms");
 
     // Warm up both paths (JIT) on a tiny image.
     Time(scene, AccelMode.Bvh, 32, 24);

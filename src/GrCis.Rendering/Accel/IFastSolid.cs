@@ -1,3 +1,4 @@
+using System;
 using OpenTK.Mathematics;
 
 namespace Rendering.Accel;
@@ -34,6 +35,20 @@ public interface IFastSolid : ISolid
   /// would have listed the record (not completed).
   /// </summary>
   void InitIntersection(in FastHit hit, Intersection target);
+
+  /// <summary>
+  /// Upper bound on the records <see cref="IntersectAll"/> writes for any ray; -1 when unknown (meshes),
+  /// which keeps CSG subtrees over this solid on the list path.
+  /// </summary>
+  int MaxRecords => -1;
+
+  /// <summary>
+  /// Writes every record of the local ray <c>p0 + t p1</c> into <paramref name="dst"/> (at least
+  /// <see cref="MaxRecords"/> long) in the order and with the bits <c>Intersect</c> would list them
+  /// (T, Enter, Front, local coordinates, solid data), without allocating; returns the count, or -1
+  /// when this solid cannot (then <see cref="MaxRecords"/> is -1 too). For the CSG kernel (<see cref="CsgKernel"/>).
+  /// </summary>
+  int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst) => -1;
 
   /// <summary>The <see cref="Intersection"/> that <c>Intersect</c> would have listed for this record (not completed).</summary>
   Intersection CreateIntersection(in FastHit hit)

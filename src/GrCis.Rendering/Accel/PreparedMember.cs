@@ -4,7 +4,8 @@ namespace Rendering.Accel;
 
 /// <summary>
 /// One leaf of a flattened scene: a known solid answered by its <see cref="IFastSolid"/> kernel, or any
-/// other intersectable (non-union CSG subtree, script solid) answered through its LinkedList API.
+/// non-union CSG subtree over such solids (<see cref="Csg"/>), or any other intersectable (CSG over meshes,
+/// script solids) answered through its LinkedList API.
 /// </summary>
 internal struct PreparedMember
 {
@@ -12,6 +13,9 @@ internal struct PreparedMember
 
   /// <summary>Non-null when the allocation-free kernel answers for this member.</summary>
   public IFastSolid? Fast;
+
+  /// <summary>Non-null for a non-union CSG subtree evaluated by its allocation-free kernel (then <see cref="Fast"/> is null).</summary>
+  public CsgKernel? Csg;
 
   /// <summary>FromParent matrices from the scene root down to this member (identities left out), in order.</summary>
   public int ChainStart, ChainCount;

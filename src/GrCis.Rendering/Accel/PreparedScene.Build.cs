@@ -84,24 +84,13 @@ public sealed partial class PreparedScene
     chain.AddRange(path);
 
     if (node is IFastSolid f && f.SupportsFastPath)
+      BindSolid(ref m, f);
+    else if (node is ISceneNode csg && CsgKernel.TryCompile(csg) is CsgKernel kernel)
     {
-      m.Fast = f;
-      m.LocalToWorld = f.ToWorld();
-      m.WorldToLocal = m.LocalToWorld.Inverted();
-      m.LocalToObject = f.ToObject();
-      m.NoShadow = f.GetLocalAttribute(PropertyName.NO_SHADOW) != null;
-
-      // The look-ups Intersection.CompleteWith does per hit, once (only when they do not create objects).
-      if (f.GetAttribute(PropertyName.REFLECTANCE_MODEL) is IReflectanceModel model &&
-          f.GetAttribute(PropertyName.MATERIAL) is IMaterial material)
-      {
-        m.AttributesCached = true;
-        m.Model = model;
-        m.Material = material;
-        m.Color = f.GetAttribute(PropertyName.COLOR) as double[] ?? material.Color;
-        m.Textures = f.GetTextures();
-        m.Recursion = f.GetAttribute(PropertyName.RECURSION);
-      }
+      // A non-union CSG subtree over kernel solids: evaluated without lists (NO_SHADOW if any leaf has it).
+      m.Csg = kernel;
+      foreach (PreparedMember leaf in kernel.Leaves)
+        m.NoShadow |= leaf.NoShadow;
     }
 
     if (node is Sphere && m.Fast != null && TrySimilarity(path, out Vector3d center, out double radius))
@@ -126,6 +115,28 @@ public sealed partial class PreparedScene
       }
     }
     members.Add(m);
+  }
+
+  /// <summary>Binds a known solid: its kernel, completion matrices and the attributes resolved once.</summary>
+  internal static void BindSolid(ref PreparedMember m, IFastSolid f)
+  {
+    m.Fast = f;
+    m.LocalToWorld = f.ToWorld();
+    m.WorldToLocal = m.LocalToWorld.Inverted();
+    m.LocalToObject = f.ToObject();
+    m.NoShadow = f.GetLocalAttribute(PropertyName.NO_SHADOW) != null;
+
+    // The look-ups Intersection.CompleteWith does per hit, once (only when they do not create objects).
+    if (f.GetAttribute(PropertyName.REFLECTANCE_MODEL) is IReflectanceModel model &&
+        f.GetAttribute(PropertyName.MATERIAL) is IMaterial material)
+    {
+      m.AttributesCached = true;
+      m.Model = model;
+      m.Material = material;
+      m.Color = f.GetAttribute(PropertyName.COLOR) as double[] ?? material.Color;
+      m.Textures = f.GetTextures();
+      m.Recursion = f.GetAttribute(PropertyName.RECURSION);
+    }
   }
 
   /// <summary>World centre and radius of the unit sphere under the chain, when the chain is a similarity.</summary>

@@ -28,6 +28,9 @@ namespace Rendering.Accel;
 /// order, as <see cref="CSGInnerNode.Intersect"/> does, so T and local coordinates are bit-identical.
 /// Shadow rays use the same query bounded by the light (<see cref="Intersection.Far"/>), and fall back to
 /// the faithful path when the closest blocker is marked NO_SHADOW.</para>
+/// <para><b>Non-union CSG members.</b> A subtree of library CSG nodes over elementary solids is evaluated by
+/// its <see cref="CsgKernel"/> (the same merged list, in stack buffers) and reports the same pair as a solid
+/// (first valid record, inside state before it); its record is completed from its leaf's cached matrices.</para>
 /// <para>The prepared scene is a snapshot: prepare again after changing the scene graph or attributes.</para>
 /// </remarks>
 public sealed partial class PreparedScene
@@ -58,6 +61,9 @@ public sealed partial class PreparedScene
   /// <summary>Members answered through the LinkedList API.</summary>
   public int ListMemberCount { get; }
 
+  /// <summary>Non-union CSG subtrees answered by their allocation-free kernel (<see cref="CsgKernel"/>).</summary>
+  public int CsgMemberCount { get; }
+
   /// <summary>Queries of this snapshot answered by the faithful path because the fast rule did not apply.</summary>
   public long FallbackCount => Interlocked.Read(ref fallbacks);
 
@@ -71,10 +77,12 @@ public sealed partial class PreparedScene
     var bounded = new List<int>();
     var open = new List<int>();
     var boxes = new Aabb[members.Length];
-    int listMembers = 0;
+    int listMembers = 0, csgMembers = 0;
     for (int i = 0; i < members.Length; i++)
     {
-      if (members[i].Fast == null)
+      if (members[i].Csg != null)
+        csgMembers++;
+      else if (members[i].Fast == null)
         listMembers++;
       boxes[i] = members[i].WorldBox;
       if (!members[i].Closed)
@@ -84,6 +92,7 @@ public sealed partial class PreparedScene
       // A closed member with an empty box has no records: it can be left out.
     }
     ListMemberCount = listMembers;
+    CsgMemberCount = csgMembers;
     BoundedCount = bounded.Count;
     always = open.ToArray();
     if (union && bounded.Count > 0)
@@ -108,11 +117,14 @@ public sealed partial class PreparedScene
     // The first entry over members that start outside.
     public double EntryT;
     public int BestIndex;
+    /// <summary>Leaf of a CSG member's record (-1: the member's own solid).</summary>
+    public int BestLeaf;
     public FastHit BestHit;
     public Intersection? BestList;
 
     // The one member the ray starts inside (-1: none) and its first valid record, an exit.
     public int InsideIndex;
+    public int InsideLeaf;
     public double InsideT;
     public FastHit InsideHit;
   }
@@ -144,11 +156,19 @@ public sealed partial class PreparedScene
       // member is entered first (or at the same T): then the faithful path decides.
       if (q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT)
         return FaithfulFirstHit(p0, p1);
-      return Complete(ref members[q.InsideIndex], q.InsideHit, reuse);
+      return Complete(ref Solid(q.InsideIndex, q.InsideLeaf), q.InsideHit, reuse);
     }
     if (q.BestIndex == int.MaxValue)
       return null;
-    return q.BestList ?? Complete(ref members[q.BestIndex], q.BestHit, reuse);
+    return q.BestList ?? Complete(ref Solid(q.BestIndex, q.BestLeaf), q.BestHit, reuse);
+  }
+
+  /// <summary>The solid a record belongs to: the member itself, or leaf <paramref name="leaf"/> of its CSG kernel.</summary>
+  ref PreparedMember Solid(int member, int leaf)
+  {
+    if (leaf < 0)
+      return ref members[member];
+    return ref members[member].Csg!.Leaves[leaf];
   }
 
   /// <summary>The record as an <see cref="Intersection"/>, completed from the member's cached matrices and attributes.</summary>
@@ -191,7 +211,7 @@ public sealed partial class PreparedScene
       return FaithfulOccluded(p0, dir);
     if (q.InsideIndex >= 0)
     {
-      if ((q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT) || members[q.InsideIndex].NoShadow)
+      if ((q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT) || Solid(q.InsideIndex, q.InsideLeaf).NoShadow)
         return FaithfulOccluded(p0, dir);
       return NotFar(q.InsideT, len2);
     }
@@ -200,7 +220,7 @@ public sealed partial class PreparedScene
 
     bool noShadow = q.BestList != null
       ? q.BestList.Solid != null && q.BestList.Solid.GetLocalAttribute(PropertyName.NO_SHADOW) != null
-      : members[q.BestIndex].NoShadow;
+      : Solid(q.BestIndex, q.BestLeaf).NoShadow;
     if (noShadow)
       return FaithfulOccluded(p0, dir);
     return NotFar(q.EntryT, len2);
@@ -212,7 +232,9 @@ public sealed partial class PreparedScene
     BestT = bound,
     EntryT = bound,
     BestIndex = int.MaxValue,
+    BestLeaf = -1,
     InsideIndex = -1,
+    InsideLeaf = -1,
   };
 
   static bool NotFar(double t, double len2)
@@ -243,21 +265,7 @@ public sealed partial class PreparedScene
     // reading the matrix by reference instead of copying 128 bytes per step.
     int end = m.ChainStart + m.ChainCount;
     for (int k = m.ChainStart; k < end; k++)
-    {
-      ref Matrix4d t = ref chain[k];
-      double x = p0.X, y = p0.Y, z = p0.Z;
-      p0 = new Vector3d(
-        x * t.Row0.X + y * t.Row1.X + z * t.Row2.X + t.Row3.X,
-        x * t.Row0.Y + y * t.Row1.Y + z * t.Row2.Y + t.Row3.Y,
-        x * t.Row0.Z + y * t.Row1.Z + z * t.Row2.Z + t.Row3.Z);
-      x = p1.X;
-      y = p1.Y;
-      z = p1.Z;
-      p1 = new Vector3d(
-        x * t.Row0.X + y * t.Row1.X + z * t.Row2.X,
-        x * t.Row0.Y + y * t.Row1.Y + z * t.Row2.Y,
-        x * t.Row0.Z + y * t.Row1.Z + z * t.Row2.Z);
-    }
+      CsgKernel.Transform(ref chain[k], ref p0, ref p1);
   }
 
   Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2, Intersection? reuse)
@@ -270,6 +278,14 @@ public sealed partial class PreparedScene
       if (!m.Fast.IntersectFirst(lp0, lp1, len2, out FastHit h, out _))
         return null;
       return Complete(ref m, h, reuse);
+    }
+    if (m.Csg != null)
+    {
+      int status = m.Csg.IntersectFirst(lp0, lp1, len2, out FastHit h, out int leaf, out _);
+      if (status == 0)
+        return null;
+      if (status > 0)
+        return Complete(ref m.Csg.Leaves[leaf], h, reuse);
     }
     return Intersection.FirstIntersection(m.Node.Intersect(lp0, lp1), ref p1);
   }
@@ -285,6 +301,15 @@ public sealed partial class PreparedScene
       if (m.NoShadow || !m.Fast.IntersectFirst(lp0, lp1, len2, out FastHit h, out _))
         return false;
       return NotFar(h.T, len2);
+    }
+    if (m.Csg != null)
+    {
+      // FirstRealIntersection skips NO_SHADOW records: the list decides when the first one is such.
+      int status = m.Csg.IntersectFirst(lp0, lp1, len2, out FastHit h, out int leaf, out _);
+      if (status == 0)
+        return false;
+      if (status > 0 && !m.Csg.Leaves[leaf].NoShadow)
+        return NotFar(h.T, len2);
     }
     Intersection? si = Intersection.FirstRealIntersection(m.Node.Intersect(lp0, lp1), ref dir);
     return si != null && !si.Far(1.0, ref dir);
@@ -385,15 +410,28 @@ public sealed partial class PreparedScene
     Vector3d lp0 = p0, lp1 = p1;
     ToLocal(m, ref lp0, ref lp1);
 
-    if (m.Fast != null)
+    if (m.Fast != null || m.Csg != null)
     {
-      bool has = m.Fast.IntersectFirst(lp0, lp1, q.Len2, out FastHit h, out bool inside);
+      bool has;
+      FastHit h;
+      bool inside;
+      int leaf = -1;
+      if (m.Fast != null)
+        has = m.Fast.IntersectFirst(lp0, lp1, q.Len2, out h, out inside);
+      else
+      {
+        int status = m.Csg!.IntersectFirst(lp0, lp1, q.Len2, out h, out leaf, out inside);
+        if (status < 0)
+          return false;
+        has = status > 0;
+      }
       if (inside)
       {
         // The ray starts inside this member: fine while it is the only one and its first record is an exit.
         if (!has || h.Enter || q.InsideIndex >= 0)
           return false;
         q.InsideIndex = index;
+        q.InsideLeaf = leaf;
         q.InsideT = h.T;
         q.InsideHit = h;
         if (h.T < q.BestT)
@@ -406,6 +444,7 @@ public sealed partial class PreparedScene
       {
         q.EntryT = h.T;
         q.BestIndex = index;
+        q.BestLeaf = leaf;
         q.BestHit = h;
         q.BestList = null;
         if (h.T < q.BestT)
@@ -431,6 +470,7 @@ public sealed partial class PreparedScene
           if (i.T < q.BestT)
             q.BestT = i.T;
           q.BestIndex = index;
+          q.BestLeaf = -1;
           q.BestList = i;
         }
         return true;

@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
 using Rendering.Accel;
@@ -82,6 +83,17 @@ public class Cube : DefaultSceneNode, ISolid, IFastSolid
     hit.Data = second ? faceMax : faceMin;
     hit.Enter = hit.Front = !second;
     return true;
+  }
+
+  public virtual int MaxRecords => 2;
+
+  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  {
+    if (!Slabs(p0, p1, out double tMin, out int faceMin, out double tMax, out int faceMax))
+      return 0;
+    dst[0] = new FastHit { T = tMin, CoordLocal = p0 + tMin * p1, Data = faceMin, Enter = true, Front = true };
+    dst[1] = new FastHit { T = tMax, CoordLocal = p0 + tMax * p1, Data = faceMax };
+    return 2;
   }
 
   public virtual void InitIntersection(in FastHit hit, Intersection target)

@@ -152,6 +152,17 @@ public class Cylinder : DefaultSceneNode, ISolid, IFastSolid
     return true;
   }
 
+  public virtual int MaxRecords => 2;
+
+  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  {
+    if (!Span(p0, p1, out double tIn, out int capIn, out double tOut, out int capOut))
+      return 0;
+    dst[0] = new FastHit { T = tIn, CoordLocal = RecordPoint(p0, p1, tIn, capIn), Data = capIn, Enter = true, Front = true };
+    dst[1] = new FastHit { T = tOut, CoordLocal = RecordPoint(p0, p1, tOut, capOut), Data = capOut };
+    return 2;
+  }
+
   public virtual void InitIntersection(in FastHit hit, Intersection target)
   {
     target.T = hit.T;

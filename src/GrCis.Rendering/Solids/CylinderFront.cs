@@ -57,6 +57,20 @@ public class CylinderFront : Cylinder
     return SolidSupport.FrontOrShell(t, p0, p1, len2, shell, out hit, out insideBefore);
   }
 
+  public override int MaxRecords => 2;
+
+  public override int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  {
+    if (!Span(p0, p1, out double t, out int capIn, out _, out _) || capIn != 0)
+      return 0;
+    dst[0] = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
+    if (!shell)
+      return 1;
+    double t2 = t + Intersection.SHELL_THICKNESS;
+    dst[1] = new FastHit { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
+    return 2;
+  }
+
   public override void InitIntersection(in FastHit hit, Intersection target)
   {
     target.T = hit.T;

@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
 using Rendering.Accel;
@@ -130,6 +131,17 @@ public class Plane : DefaultSceneNode, ISolid, IFastSolid
     }
     insideBefore = front;
     return false;
+  }
+
+  public virtual int MaxRecords => 1;
+
+  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  {
+    if (!Hit(p0, p1, out double t, out double x, out double y))
+      return 0;
+    bool front = p1.Z < 0.0;
+    dst[0] = new FastHit { T = t, CoordLocal = new Vector3d(x, y, 0.0), Enter = front, Front = front };
+    return 1;
   }
 
   public virtual void InitIntersection(in FastHit hit, Intersection target)

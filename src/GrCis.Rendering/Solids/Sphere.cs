@@ -59,6 +59,17 @@ public class Sphere : DefaultSceneNode, ISolid, IFastSolid
     return true;
   }
 
+  public virtual int MaxRecords => 2;
+
+  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  {
+    if (!Roots(p0, p1, out double t0, out double t1))
+      return 0;
+    dst[0] = new FastHit { T = t0, CoordLocal = p0 + t0 * p1, Enter = true, Front = true };
+    dst[1] = new FastHit { T = t1, CoordLocal = p0 + t1 * p1 };
+    return 2;
+  }
+
   public virtual void InitIntersection(in FastHit hit, Intersection target)
   {
     target.T = hit.T;

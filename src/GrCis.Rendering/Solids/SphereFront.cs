@@ -51,6 +51,20 @@ public class SphereFront : Sphere
     return SolidSupport.FrontOrShell(t0, p0, p1, len2, shell, out hit, out insideBefore);
   }
 
+  public override int MaxRecords => 2;
+
+  public override int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  {
+    if (!Roots(p0, p1, out double t0, out _))
+      return 0;
+    dst[0] = new FastHit { T = t0, CoordLocal = p0 + t0 * p1, Aux = p1, Enter = true, Front = true };
+    if (!shell)
+      return 1;
+    double t = t0 + Intersection.SHELL_THICKNESS;
+    dst[1] = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1 };
+    return 2;
+  }
+
   public override void InitIntersection(in FastHit hit, Intersection target)
   {
     target.T = hit.T;

@@ -95,6 +95,20 @@ public class Torus : DefaultSceneNode, ISolid, IFastSolid
     return false;
   }
 
+  public virtual int MaxRecords => 4;
+
+  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  {
+    if (!SelfHits && StartsOnSurface(p0))
+      return 0;
+    Span<double> u = stackalloc double[4];
+    Span<bool> enter = stackalloc bool[4];
+    int n = Solve(p0, p1, u, enter, out Vector3d center, out Vector3d dir, out double sMid, out double length);
+    for (int i = 0; i < n; i++)
+      dst[i] = new FastHit { T = (sMid + u[i]) / length, CoordLocal = center + u[i] * dir, Enter = enter[i], Front = enter[i] };
+    return n;
+  }
+
   public virtual void InitIntersection(in FastHit hit, Intersection target)
   {
     target.T = hit.T;

@@ -1,6 +1,8 @@
 using System;
 using GrCis.Testing;
+using OpenTK.Mathematics;
 using Rendering;
+using Rendering.Accel;
 using Rendering.Imaging;
 using Xunit.Abstractions;
 
@@ -104,6 +106,50 @@ public class AllocationTests
     var f = new RayTracing(scene) { DoReflections = false, DoRefractions = false };
     double perPixel = BytesPerPixel(scene, f, 200, 420, 32);
     output.WriteLine($"checker floor: {perPixel:F1} B/pixel");
+    Assert.True(perPixel <= 8, $"{perPixel:F1} B/pixel");
+  }
+
+  /// <summary>How many of the block's pixel centres hit a leaf of a non-union CSG subtree first.</summary>
+  static int CsgHits(IRayScene scene, int x0, int y0, int size)
+  {
+    var csgLeaves = new System.Collections.Generic.HashSet<ISolid>();
+    Collect(scene.Intersectable!, false, csgLeaves);
+    PreparedScene p = PreparedScene.Prepare(scene.Intersectable);
+    scene.Camera!.Width = 640;
+    scene.Camera.Height = 480;
+    int n = 0;
+    for (int y = y0; y < y0 + size; y++)
+      for (int x = x0; x < x0 + size; x++)
+        if (scene.Camera.GetRay(x + 0.5, y + 0.5, out Vector3d p0, out Vector3d p1) &&
+            p.FirstHit(p0, p1)?.Solid is ISolid s && csgLeaves.Contains(s))
+          n++;
+    return n;
+  }
+
+  static void Collect(IIntersectable node, bool inCsg, System.Collections.Generic.HashSet<ISolid> leaves)
+  {
+    if (node is ISolid s && inCsg)
+      leaves.Add(s);
+    if (node is ISceneNode sn)
+    {
+      bool csg = inCsg || (node is CSGInnerNode c && c.Operation != SetOperation.Union);
+      foreach (ISceneNode child in sn.Children)
+        Collect(child, csg, leaves);
+    }
+  }
+
+  [Theory]
+  [InlineData("Toroids", 160, 200)]
+  [InlineData("Hedgehog in the cage", 250, 392)]
+  public void Csg_pixels_allocate_nothing_per_ray(string name, int x0, int y0)
+  {
+    // Non-union CSG subtrees are evaluated by their kernel in stack buffers: no lists per ray.
+    IRayScene scene = global::Rendering.Scenes.Create(name);
+    int hits = CsgHits(scene, x0, y0, 32);
+    var f = new RayTracing(scene);
+    double perPixel = BytesPerPixel(scene, f, x0, y0, 32);
+    output.WriteLine($"{name}: {hits} of 1024 pixels hit a CSG subtree first, {perPixel:F1} B/pixel");
+    Assert.True(hits >= 256, $"only {hits} pixels hit CSG: move the block");
     Assert.True(perPixel <= 8, $"{perPixel:F1} B/pixel");
   }
 

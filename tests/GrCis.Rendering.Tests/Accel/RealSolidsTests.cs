@@ -29,10 +29,11 @@ public class RealSolidsTests
   public void Classic_scene_solids_all_answer_through_the_allocation_free_kernels(string name)
   {
     PreparedScene p = PreparedScene.Prepare(global::Rendering.Scenes.Create(name).Intersectable);
-    output.WriteLine($"{name}: {p.MemberCount} members, {p.BoundedCount} in the BVH, {p.UnboundedCount} always tested, {p.ListMemberCount} through lists");
+    output.WriteLine($"{name}: {p.MemberCount} members, {p.BoundedCount} in the BVH, {p.UnboundedCount} always tested, {p.CsgMemberCount} CSG kernels, {p.ListMemberCount} through lists");
     Assert.True(p.MemberCount > 0);
-    // Only non-union CSG subtrees (list members by design) remain; every solid has a kernel.
-    Assert.Equal(CountNonUnion(global::Rendering.Scenes.Create(name).Intersectable), p.ListMemberCount);
+    // Every solid has a kernel, and every non-union CSG subtree the CSG kernel: nothing goes through lists.
+    Assert.Equal(CountNonUnion(global::Rendering.Scenes.Create(name).Intersectable), p.CsgMemberCount);
+    Assert.Equal(0, p.ListMemberCount);
   }
 
   static int CountNonUnion(IIntersectable? node)
