@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
 using System.Threading;
 using OpenTK.Mathematics;
 
@@ -305,64 +306,91 @@ public sealed partial class PreparedScene
     double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
     double ox = p0.X, oy = p0.Y, oz = p0.Z;
     BvhNode[] nodes = bvh.Nodes;
+    BvhChildBoxes[] children = bvh.Children;
     int[] items = bvh.Items;
     // Per-axis "direction is negative" as bits (bit a set: near child is the right one along axis a).
     int negMask = (dx < 0.0 ? 1 : 0) | (dy < 0.0 ? 2 : 0) | (dz < 0.0 ? 4 : 0);
 
+    // Visit boxes overlapping [0, best]; "≤ best" keeps equal-T ties for the depth-first order rule.
+    if (!BvhChildBoxes.Slab(nodes[0], ox, oy, oz, ix, iy, iz, q.BestT, out _))
+      return true;
+    Vector128<double> vox = Vector128.Create(ox), voy = Vector128.Create(oy), voz = Vector128.Create(oz);
+    Vector128<double> vix = Vector128.Create(ix), viy = Vector128.Create(iy), viz = Vector128.Create(iz);
+
+    // A pushed child's box is known to be hit; only its entry t against the shrinking best is checked again.
     Span<int> stack = stackSize <= 256 ? stackalloc int[stackSize] : new int[stackSize];
+    Span<double> stackT = stackSize <= 256 ? stackalloc double[stackSize] : new double[stackSize];
     int sp = 0;
     int ni = 0;
     while (true)
     {
       ref BvhNode n = ref nodes[ni];
-      double t0 = (n.MinX - ox) * ix, t1 = (n.MaxX - ox) * ix;
-      double tn = Math.Min(t0, t1), tf = Math.Max(t0, t1);
-      t0 = (n.MinY - oy) * iy;
-      t1 = (n.MaxY - oy) * iy;
-      tn = Math.Max(tn, Math.Min(t0, t1));
-      tf = Math.Min(tf, Math.Max(t0, t1));
-      t0 = (n.MinZ - oz) * iz;
-      t1 = (n.MaxZ - oz) * iz;
-      tn = Math.Max(tn, Math.Min(t0, t1));
-      tf = Math.Min(tf, Math.Max(t0, t1));
-
-      // Visit boxes overlapping [0, best]; "≤ best" keeps equal-T ties for the depth-first order rule.
-      if (tn <= tf && tf >= 0.0 && tn <= q.BestT)
+      if (n.Count > 0)
       {
-        if (n.Count > 0)
+        int end = n.Index + n.Count;
+        for (int k = n.Index; k < end; k++)
         {
-          int end = n.Index + n.Count;
-          for (int k = n.Index; k < end; k++)
-          {
-            int item = items[k];
-            // A clear miss of the member's world bounding sphere skips its transform chain (exact: conservative).
-            if (members[item].CullRadius2 > 0.0 && MissesSphere(members[item], p0, p1))
-              continue;
-            if (!TestMember(item, ref q, p0, p1))
-              return false;
-          }
+          int item = items[k];
+          // A clear miss of the member's world bounding sphere skips its transform chain (exact: conservative).
+          if (members[item].CullRadius2 > 0.0 && MissesSphere(members[item], p0, p1))
+            continue;
+          if (!TestMember(item, ref q, p0, p1))
+            return false;
         }
-        else
+      }
+      else
+      {
+        // Both children at once; near child first (by the ray's sign along the split axis).
+        int hit = children[ni].Hit(vox, voy, voz, vix, viy, viz, q.BestT, out Vector128<double> entry);
+        if (hit != 0)
         {
-          // Near child first (by the ray's sign along the split axis).
-          bool negative = ((negMask >> n.Axis) & 1) != 0;
           int left = ni + 1, right = n.Index;
-          if (negative)
+          if (((negMask >> n.Axis) & 1) != 0)
           {
-            stack[sp++] = left;
+            if ((hit & 1) != 0)
+            {
+              if ((hit & 2) != 0)
+              {
+                stackT[sp] = entry.GetElement(0);
+                stack[sp++] = left;
+              }
+              else
+              {
+                ni = left;
+                continue;
+              }
+            }
             ni = right;
           }
           else
           {
-            stack[sp++] = right;
+            if ((hit & 2) != 0)
+            {
+              if ((hit & 1) != 0)
+              {
+                stackT[sp] = entry.GetElement(1);
+                stack[sp++] = right;
+              }
+              else
+              {
+                ni = right;
+                continue;
+              }
+            }
             ni = left;
           }
           continue;
         }
       }
-      if (sp == 0)
-        return true;
-      ni = stack[--sp];
+      while (true)
+      {
+        if (sp == 0)
+          return true;
+        --sp;
+        if (stackT[sp] <= q.BestT)
+          break;
+      }
+      ni = stack[sp];
     }
   }
 
