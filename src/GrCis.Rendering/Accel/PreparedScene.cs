@@ -128,13 +128,19 @@ public sealed partial class PreparedScene
   /// <see cref="FirstHit(Vector3d, Vector3d)"/> that fills <paramref name="reuse"/> (reset first) instead of
   /// allocating, when the winner is a known solid; hits of list members are returned as listed.
   /// </summary>
-  public Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse)
+  public Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse) => FirstHit(p0, p1, reuse, false);
+
+  /// <summary>
+  /// <see cref="FirstHit(Vector3d, Vector3d, Intersection?)"/>; with <paramref name="lean"/> (only the library's own
+  /// shading will read the hit) members that allow it are completed leanly (<see cref="LeanCompletion"/>).
+  /// </summary>
+  internal Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse, bool lean)
   {
     if (members.Length == 0)
       return null;
     double len2 = p1.LengthSquared;
     if (!union)
-      return FirstHitSingle(p0, p1, len2, reuse);
+      return FirstHitSingle(p0, p1, len2, reuse, lean);
 
     var q = NewQuery(len2, double.PositiveInfinity);
     if (!Closest(ref q, p0, p1))
@@ -145,15 +151,15 @@ public sealed partial class PreparedScene
       // member is entered first (or at the same T): then the faithful path decides.
       if (q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT)
         return FaithfulFirstHit(p0, p1);
-      return Complete(ref members[q.InsideIndex], q.InsideHit, reuse);
+      return Complete(ref members[q.InsideIndex], q.InsideHit, reuse, lean);
     }
     if (q.BestIndex == int.MaxValue)
       return null;
-    return q.BestList ?? Complete(ref members[q.BestIndex], q.BestHit, reuse);
+    return q.BestList ?? Complete(ref members[q.BestIndex], q.BestHit, reuse, lean);
   }
 
   /// <summary>The record as an <see cref="Intersection"/>, completed from the member's cached matrices and attributes.</summary>
-  static Intersection Complete(ref PreparedMember m, in FastHit hit, Intersection? reuse)
+  static Intersection Complete(ref PreparedMember m, in FastHit hit, Intersection? reuse, bool lean)
   {
     IFastSolid f = m.Fast!;
     Intersection i;
@@ -165,7 +171,9 @@ public sealed partial class PreparedScene
     else
       i = new Intersection(f);
     f.InitIntersection(hit, i);
-    if (m.AttributesCached)
+    if (lean && m.Lean != LeanCompletion.None)
+      i.CompleteLean(m.LocalToWorld, m.WorldToLocal, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion, m.Lean);
+    else if (m.AttributesCached)
       i.CompleteCached(m.LocalToWorld, m.WorldToLocal, m.LocalToObject, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion);
     else
       i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
@@ -261,7 +269,7 @@ public sealed partial class PreparedScene
     }
   }
 
-  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2, Intersection? reuse)
+  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2, Intersection? reuse, bool lean)
   {
     ref PreparedMember m = ref members[0];
     Vector3d lp0 = p0, lp1 = p1;
@@ -270,7 +278,7 @@ public sealed partial class PreparedScene
     {
       if (!m.Fast.IntersectFirst(lp0, lp1, len2, out FastHit h, out _))
         return null;
-      return Complete(ref m, h, reuse);
+      return Complete(ref m, h, reuse, lean);
     }
     return Intersection.FirstIntersection(m.Node.Intersect(lp0, lp1), ref p1);
   }

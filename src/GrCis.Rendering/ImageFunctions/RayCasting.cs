@@ -58,7 +58,31 @@ public class RayCasting : IImageFunction
     if (ps == null)
       return FirstHit(p0, p1);
     RayCounter.CountRay();
-    return ps.FirstHit(p0, p1, ShadingScratch.Intersection(depth));
+    return ps.FirstHit(p0, p1, ShadingScratch.Intersection(depth), ReferenceEquals(ps, leanPrepared));
+  }
+
+  // Set by Prepare when only this library's shading reads the pooled hits of that snapshot (of that scene's
+  // lights): its members may complete them leanly. A snapshot built on first use, for another scene, is not lean.
+  [NonSerialized] PreparedScene? leanPrepared;
+
+  /// <summary>
+  /// True when nothing but the library's own code reads a shaded hit: this is a plain RayTracing or RayCasting
+  /// (no overridden shade) and every light is a library light (they read only the world point and normal).
+  /// Materials, reflectance models and textures are checked per member (<see cref="LeanCompletion"/>).
+  /// </summary>
+  bool LibraryShadingOnly(IRayScene sc)
+  {
+    Type type = GetType();
+    if (type != typeof(RayTracing) && type != typeof(RayCasting))
+      return false;
+    if (sc.Sources != null)
+      foreach (ILightSource light in sc.Sources)
+      {
+        Type lt = light.GetType();
+        if (lt != typeof(PointLightSource) && lt != typeof(AmbientLightSource) && lt != typeof(RectangleLightSource))
+          return false;
+      }
+    return true;
   }
 
   /// <summary>
@@ -73,6 +97,7 @@ public class RayCasting : IImageFunction
     if (source == null)
       return null;
     PreparedScene ps = PreparedScene.Prepare(source);
+    leanPrepared = LibraryShadingOnly(sc ?? Scene) ? ps : null;
     (preparedBySource ??= new ConditionalWeakTable<IIntersectable, PreparedScene>()).AddOrUpdate(source, ps);
     prepared = ps;
     return ps;
