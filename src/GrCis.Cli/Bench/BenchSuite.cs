@@ -77,8 +77,8 @@ public static class BenchSuite
   public static string Slug(string name) => name.ToLowerInvariant().Replace(' ', '-');
 
   static readonly ImageSize WarmUpSize = new(64, 48);
-  const double WarmUpSeconds = 0.25;
-  const int WarmUpMaxPasses = 20;
+  const double WarmUpSeconds = 1.0;
+  const int WarmUpMaxPasses = 100;
 
   /// <summary>Renders one case (fast path, then the faithful path unless <paramref name="skipSlow"/>).</summary>
   public static BenchResult Run(BenchCase c, int threads, bool skipSlow, CancellationToken cancel)
@@ -86,9 +86,10 @@ public static class BenchSuite
     IRayScene scene = c.Build();
 
     // Warm-up (timed as preparation, with the lazily built mesh BVHs): small real renders at the case's
-    // samples per pixel for a quarter of a second. The runtime moves a method to tier-1 code only after
-    // 100 ms without new tier-0 JIT work and 30 further calls, so one tiny render left the timed render
-    // running tier-0 code for its first fraction of a second.
+    // samples per pixel for a second. The runtime moves a method to tier-1 code only after 100 ms without
+    // new tier-0 JIT work and 30 further calls (twice with dynamic PGO), so the old single 8×6 render left
+    // the timed render on tier-0 code for its first fraction of a second; 0.25 s of warm-up was still
+    // measurably short (Five balls 0.87 vs 0.70 CPU s with DOTNET_TC_CallCountingDelayMs=0), 1 s is not.
     var clock = Stopwatch.StartNew();
     for (int pass = 0; pass < WarmUpMaxPasses && !cancel.IsCancellationRequested; pass++)
     {
