@@ -25,11 +25,18 @@ internal sealed class Bvh
   /// <summary>Maximal depth (for sizing the traversal stack).</summary>
   public readonly int Depth;
 
+  /// <summary>Per inner node, both children's boxes packed for the two-box SIMD test (unused for leaves).</summary>
+  public readonly BvhChildBoxes[] Children;
+
   Bvh(BvhNode[] nodes, int[] items, int depth)
   {
     Nodes = nodes;
     Items = items;
     Depth = depth;
+    Children = new BvhChildBoxes[nodes.Length];
+    for (int i = 0; i < nodes.Length; i++)
+      if (nodes[i].Count == 0)
+        Children[i] = new BvhChildBoxes(nodes[i + 1], nodes[nodes[i].Index]);
   }
 
   /// <summary>Builds over <paramref name="boxes"/>[ids[k]]; ids are reordered into leaf order.</summary>

@@ -43,6 +43,9 @@ internal struct PreparedMember
   public System.Collections.Generic.LinkedList<ITexture>? Textures;
   public object? Recursion;
 
+  /// <summary>What a lean completion may leave out for this member (when the caller allows it).</summary>
+  public LeanCompletion Lean;
+
   // What Intersection.Complete() would compute (Solid.ToWorld(), its inverse, Solid.ToObject()).
   public Matrix4d LocalToWorld, WorldToLocal, LocalToObject;
 }

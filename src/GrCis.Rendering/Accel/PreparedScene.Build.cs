@@ -136,6 +136,7 @@ public sealed partial class PreparedScene
       m.Color = f.GetAttribute(PropertyName.COLOR) as double[] ?? material.Color;
       m.Textures = f.GetTextures();
       m.Recursion = f.GetAttribute(PropertyName.RECURSION);
+      m.Lean = LeanKind(f, model, material, m.Textures, m.Recursion);
     }
   }
 
@@ -199,5 +200,29 @@ public sealed partial class PreparedScene
     if (box.IsEmpty)
       box = Aabb.Empty;
     return true;
+  }
+
+  /// <summary>
+  /// The lean completion a member allows: an exact library Sphere or Plane, shaded by the library's Phong
+  /// model and material, with no RECURSION function and no texture but checkers (which read only TextureCoord).
+  /// </summary>
+  static LeanCompletion LeanKind(IFastSolid f, IReflectanceModel model, IMaterial material, LinkedList<ITexture>? textures, object? recursion)
+  {
+    if (recursion != null || model.GetType() != typeof(PhongModel) || material.GetType() != typeof(PhongMaterial))
+      return LeanCompletion.None;
+    bool textured = false;
+    if (textures != null)
+      foreach (ITexture t in textures)
+      {
+        if (t.GetType() != typeof(CheckerTexture))
+          return LeanCompletion.None;
+        textured = true;
+      }
+    Type type = f.GetType();
+    if (type == typeof(Sphere))
+      return textured ? LeanCompletion.SphereTextured : LeanCompletion.Sphere;
+    if (type == typeof(Plane))
+      return LeanCompletion.Plane;
+    return LeanCompletion.None;
   }
 }

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
 using System.Threading;
 using OpenTK.Mathematics;
 
@@ -139,13 +140,19 @@ public sealed partial class PreparedScene
   /// <see cref="FirstHit(Vector3d, Vector3d)"/> that fills <paramref name="reuse"/> (reset first) instead of
   /// allocating, when the winner is a known solid; hits of list members are returned as listed.
   /// </summary>
-  public Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse)
+  public Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse) => FirstHit(p0, p1, reuse, false);
+
+  /// <summary>
+  /// <see cref="FirstHit(Vector3d, Vector3d, Intersection?)"/>; with <paramref name="lean"/> (only the library's own
+  /// shading will read the hit) members that allow it are completed leanly (<see cref="LeanCompletion"/>).
+  /// </summary>
+  internal Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse, bool lean)
   {
     if (members.Length == 0)
       return null;
     double len2 = p1.LengthSquared;
     if (!union)
-      return FirstHitSingle(p0, p1, len2, reuse);
+      return FirstHitSingle(p0, p1, len2, reuse, lean);
 
     var q = NewQuery(len2, double.PositiveInfinity);
     if (!Closest(ref q, p0, p1))
@@ -156,11 +163,11 @@ public sealed partial class PreparedScene
       // member is entered first (or at the same T): then the faithful path decides.
       if (q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT)
         return FaithfulFirstHit(p0, p1);
-      return Complete(ref Solid(q.InsideIndex, q.InsideLeaf), q.InsideHit, reuse);
+      return Complete(ref Solid(q.InsideIndex, q.InsideLeaf), q.InsideHit, reuse, lean);
     }
     if (q.BestIndex == int.MaxValue)
       return null;
-    return q.BestList ?? Complete(ref Solid(q.BestIndex, q.BestLeaf), q.BestHit, reuse);
+    return q.BestList ?? Complete(ref Solid(q.BestIndex, q.BestLeaf), q.BestHit, reuse, lean);
   }
 
   /// <summary>The solid a record belongs to: the member itself, or leaf <paramref name="leaf"/> of its CSG kernel.</summary>
@@ -172,7 +179,7 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>The record as an <see cref="Intersection"/>, completed from the member's cached matrices and attributes.</summary>
-  static Intersection Complete(ref PreparedMember m, in FastHit hit, Intersection? reuse)
+  static Intersection Complete(ref PreparedMember m, in FastHit hit, Intersection? reuse, bool lean)
   {
     IFastSolid f = m.Fast!;
     Intersection i;
@@ -184,7 +191,9 @@ public sealed partial class PreparedScene
     else
       i = new Intersection(f);
     f.InitIntersection(hit, i);
-    if (m.AttributesCached)
+    if (lean && m.Lean != LeanCompletion.None)
+      i.CompleteLean(m.LocalToWorld, m.WorldToLocal, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion, m.Lean);
+    else if (m.AttributesCached)
       i.CompleteCached(m.LocalToWorld, m.WorldToLocal, m.LocalToObject, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion);
     else
       i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);
@@ -268,7 +277,7 @@ public sealed partial class PreparedScene
       CsgKernel.Transform(ref chain[k], ref p0, ref p1);
   }
 
-  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2, Intersection? reuse)
+  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2, Intersection? reuse, bool lean)
   {
     ref PreparedMember m = ref members[0];
     Vector3d lp0 = p0, lp1 = p1;
@@ -277,7 +286,7 @@ public sealed partial class PreparedScene
     {
       if (!m.Fast.IntersectFirst(lp0, lp1, len2, out FastHit h, out _))
         return null;
-      return Complete(ref m, h, reuse);
+      return Complete(ref m, h, reuse, lean);
     }
     if (m.Csg != null)
     {
@@ -285,7 +294,7 @@ public sealed partial class PreparedScene
       if (status == 0)
         return null;
       if (status > 0)
-        return Complete(ref m.Csg.Leaves[leaf], h, reuse);
+        return Complete(ref m.Csg.Leaves[leaf], h, reuse, lean);
     }
     return Intersection.FirstIntersection(m.Node.Intersect(lp0, lp1), ref p1);
   }
@@ -330,64 +339,91 @@ public sealed partial class PreparedScene
     double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
     double ox = p0.X, oy = p0.Y, oz = p0.Z;
     BvhNode[] nodes = bvh.Nodes;
+    BvhChildBoxes[] children = bvh.Children;
     int[] items = bvh.Items;
     // Per-axis "direction is negative" as bits (bit a set: near child is the right one along axis a).
     int negMask = (dx < 0.0 ? 1 : 0) | (dy < 0.0 ? 2 : 0) | (dz < 0.0 ? 4 : 0);
 
+    // Visit boxes overlapping [0, best]; "≤ best" keeps equal-T ties for the depth-first order rule.
+    if (!BvhChildBoxes.Slab(nodes[0], ox, oy, oz, ix, iy, iz, q.BestT, out _))
+      return true;
+    Vector128<double> vox = Vector128.Create(ox), voy = Vector128.Create(oy), voz = Vector128.Create(oz);
+    Vector128<double> vix = Vector128.Create(ix), viy = Vector128.Create(iy), viz = Vector128.Create(iz);
+
+    // A pushed child's box is known to be hit; only its entry t against the shrinking best is checked again.
     Span<int> stack = stackSize <= 256 ? stackalloc int[stackSize] : new int[stackSize];
+    Span<double> stackT = stackSize <= 256 ? stackalloc double[stackSize] : new double[stackSize];
     int sp = 0;
     int ni = 0;
     while (true)
     {
       ref BvhNode n = ref nodes[ni];
-      double t0 = (n.MinX - ox) * ix, t1 = (n.MaxX - ox) * ix;
-      double tn = Math.Min(t0, t1), tf = Math.Max(t0, t1);
-      t0 = (n.MinY - oy) * iy;
-      t1 = (n.MaxY - oy) * iy;
-      tn = Math.Max(tn, Math.Min(t0, t1));
-      tf = Math.Min(tf, Math.Max(t0, t1));
-      t0 = (n.MinZ - oz) * iz;
-      t1 = (n.MaxZ - oz) * iz;
-      tn = Math.Max(tn, Math.Min(t0, t1));
-      tf = Math.Min(tf, Math.Max(t0, t1));
-
-      // Visit boxes overlapping [0, best]; "≤ best" keeps equal-T ties for the depth-first order rule.
-      if (tn <= tf && tf >= 0.0 && tn <= q.BestT)
+      if (n.Count > 0)
       {
-        if (n.Count > 0)
+        int end = n.Index + n.Count;
+        for (int k = n.Index; k < end; k++)
         {
-          int end = n.Index + n.Count;
-          for (int k = n.Index; k < end; k++)
-          {
-            int item = items[k];
-            // A clear miss of the member's world bounding sphere skips its transform chain (exact: conservative).
-            if (members[item].CullRadius2 > 0.0 && MissesSphere(members[item], p0, p1))
-              continue;
-            if (!TestMember(item, ref q, p0, p1))
-              return false;
-          }
+          int item = items[k];
+          // A clear miss of the member's world bounding sphere skips its transform chain (exact: conservative).
+          if (members[item].CullRadius2 > 0.0 && MissesSphere(members[item], p0, p1))
+            continue;
+          if (!TestMember(item, ref q, p0, p1))
+            return false;
         }
-        else
+      }
+      else
+      {
+        // Both children at once; near child first (by the ray's sign along the split axis).
+        int hit = children[ni].Hit(vox, voy, voz, vix, viy, viz, q.BestT, out Vector128<double> entry);
+        if (hit != 0)
         {
-          // Near child first (by the ray's sign along the split axis).
-          bool negative = ((negMask >> n.Axis) & 1) != 0;
           int left = ni + 1, right = n.Index;
-          if (negative)
+          if (((negMask >> n.Axis) & 1) != 0)
           {
-            stack[sp++] = left;
+            if ((hit & 1) != 0)
+            {
+              if ((hit & 2) != 0)
+              {
+                stackT[sp] = entry.GetElement(0);
+                stack[sp++] = left;
+              }
+              else
+              {
+                ni = left;
+                continue;
+              }
+            }
             ni = right;
           }
           else
           {
-            stack[sp++] = right;
+            if ((hit & 2) != 0)
+            {
+              if ((hit & 1) != 0)
+              {
+                stackT[sp] = entry.GetElement(1);
+                stack[sp++] = right;
+              }
+              else
+              {
+                ni = right;
+                continue;
+              }
+            }
             ni = left;
           }
           continue;
         }
       }
-      if (sp == 0)
-        return true;
-      ni = stack[--sp];
+      while (true)
+      {
+        if (sp == 0)
+          return true;
+        --sp;
+        if (stackT[sp] <= q.BestT)
+          break;
+      }
+      ni = stack[sp];
     }
   }
 

@@ -1,22 +1,19 @@
-using System;
 using System.Runtime.CompilerServices;
 
 namespace Rendering.Execution;
 
 /// <summary>
-/// Per-thread ray counters: each worker increments its own thread-static count (no shared cache
-/// line per ray, no lost updates); <see cref="TileRenderer"/> sums the workers' counts at the end of
-/// a render and adds them to GrCis's <see cref="Intersection.countRays"/>, which scripts may read.
+/// Per-thread ray counters: each worker increments its own count (no shared cache line per ray, no lost
+/// updates; the count lives in the thread's shading scratch, which the shading loop fetches anyway);
+/// <see cref="TileRenderer"/> sums the workers' counts at the end of a render and adds them to GrCis's
+/// <see cref="Intersection.countRays"/>, which scripts may read.
 /// </summary>
 public static class RayCounter
 {
-  [ThreadStatic]
-  static long rays;
-
   /// <summary>Counts one primary or secondary ray (shadow rays included) on the calling thread.</summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  public static void CountRay() => rays++;
+  public static void CountRay() => ShadingScratch.Current.Rays++;
 
   /// <summary>Rays counted on the calling thread so far.</summary>
-  public static long ThreadRays => rays;
+  public static long ThreadRays => ShadingScratch.Current.Rays;
 }

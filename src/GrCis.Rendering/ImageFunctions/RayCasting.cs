@@ -50,15 +50,42 @@ public class RayCasting : IImageFunction
   /// First hit of a ray traced at recursion <paramref name="depth"/>: <see cref="FirstHit(Vector3d, Vector3d)"/>,
   /// or on the fast path the same hit in this thread's reusable intersection of that depth.
   /// </summary>
-  protected Intersection? FirstHitAt(int depth, Vector3d p0, Vector3d p1)
+  protected Intersection? FirstHitAt(int depth, Vector3d p0, Vector3d p1) => FirstHitAt(ShadingScratch.Current, depth, p0, p1);
+
+  /// <summary><see cref="FirstHitAt(int, Vector3d, Vector3d)"/> with the thread's scratch already at hand.</summary>
+  internal Intersection? FirstHitAt(ShadingScratch scratch, int depth, Vector3d p0, Vector3d p1)
   {
     if (firstHitOverridden || !ReuseIntersections || depth < 0)
       return FirstHit(p0, p1);
     PreparedScene? ps = Prepared;
     if (ps == null)
       return FirstHit(p0, p1);
-    RayCounter.CountRay();
-    return ps.FirstHit(p0, p1, ShadingScratch.Intersection(depth));
+    scratch.Rays++;
+    return ps.FirstHit(p0, p1, scratch.Intersection(depth), ReferenceEquals(ps, leanPrepared));
+  }
+
+  // Set by Prepare when only this library's shading reads the pooled hits of that snapshot (of that scene's
+  // lights): its members may complete them leanly. A snapshot built on first use, for another scene, is not lean.
+  [NonSerialized] PreparedScene? leanPrepared;
+
+  /// <summary>
+  /// True when nothing but the library's own code reads a shaded hit: this is a plain RayTracing or RayCasting
+  /// (no overridden shade) and every light is a library light (they read only the world point and normal).
+  /// Materials, reflectance models and textures are checked per member (<see cref="LeanCompletion"/>).
+  /// </summary>
+  bool LibraryShadingOnly(IRayScene sc)
+  {
+    Type type = GetType();
+    if (type != typeof(RayTracing) && type != typeof(RayCasting))
+      return false;
+    if (sc.Sources != null)
+      foreach (ILightSource light in sc.Sources)
+      {
+        Type lt = light.GetType();
+        if (lt != typeof(PointLightSource) && lt != typeof(AmbientLightSource) && lt != typeof(RectangleLightSource))
+          return false;
+      }
+    return true;
   }
 
   /// <summary>
@@ -73,6 +100,7 @@ public class RayCasting : IImageFunction
     if (source == null)
       return null;
     PreparedScene ps = PreparedScene.Prepare(source);
+    leanPrepared = LibraryShadingOnly(sc ?? Scene) ? ps : null;
     (preparedBySource ??= new ConditionalWeakTable<IIntersectable, PreparedScene>()).AddOrUpdate(source, ps);
     prepared = ps;
     return ps;
@@ -180,7 +208,7 @@ public class RayCasting : IImageFunction
     }
 
     Vector3d viewer = -p1.Normalized();
-    i.Material = ShadingScratch.Material(i.Material!, surface, 0);
+    i.Material = ShadingScratch.Current.Material(i.Material!, surface, 0);
 
     foreach (ILightSource source in sc.Sources)
     {

@@ -44,7 +44,15 @@ public class RayTracing : RayCasting
   /// </summary>
   public bool FresnelRefraction;
 
-  public RayTracing(IRayScene? sc = null) : base(sc) { }
+  public RayTracing(IRayScene? sc = null) : base(sc) =>
+    occludedOverridden = overridesOccluded.GetOrAdd(GetType(), static t =>
+      t.GetMethod(nameof(Occluded), System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.NonPublic,
+        new[] { typeof(Vector3d), typeof(Vector3d) })?.DeclaringType != typeof(RayTracing));
+
+  // A subclass's Occluded must see every shadow ray; otherwise the scratch at hand counts it.
+  [NonSerialized] readonly bool occludedOverridden;
+
+  static readonly System.Collections.Concurrent.ConcurrentDictionary<Type, bool> overridesOccluded = new();
 
   public override long GetSample(double x, double y, double[] color)
   {
@@ -56,9 +64,11 @@ public class RayTracing : RayCasting
   }
 
   /// <summary>True when something (not marked NO_SHADOW) lies between the point and the light at <c>p0 + dir</c>.</summary>
-  protected virtual bool Occluded(Vector3d p0, Vector3d dir)
+  protected virtual bool Occluded(Vector3d p0, Vector3d dir) => Occluded(ShadingScratch.Current, p0, dir);
+
+  bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
   {
-    RayCounter.CountRay();
+    scratch.Rays++;
     PreparedScene? ps = Prepared;
     if (ps != null)
       return ps.Occluded(p0, dir);
@@ -72,7 +82,8 @@ public class RayTracing : RayCasting
   {
     IRayScene sc = Scene;
     Vector3d direction = p1;
-    Intersection? i = FirstHitAt(depth, p0, direction);
+    ShadingScratch scratch = ShadingScratch.Current;
+    Intersection? i = FirstHitAt(scratch, depth, p0, direction);
     if (i == null)
     {
       if (sc.Background != null)
@@ -95,7 +106,7 @@ public class RayTracing : RayCasting
       AddScaled(color, surface, 1.0);
     else
     {
-      i.Material = ShadingScratch.Material(i.Material!, surface, depth);
+      i.Material = scratch.Material(i.Material!, surface, depth);
       // The library's Phong model writes into a stack buffer instead of a new array per light.
       bool phong = i.ReflectanceModel!.GetType() == typeof(PhongModel) && i.Material is PhongMaterial && surface.Length <= 16;
       Span<double> buffer = stackalloc double[16];
@@ -104,17 +115,17 @@ public class RayTracing : RayCasting
       if (sc.Sources is LinkedList<ILightSource> linked)
       {
         for (LinkedListNode<ILightSource>? n = linked.First; n != null; n = n.Next)
-          hash = AddLight(n.Value, i, viewer, phong, surface, buffer, color, hash);
+          hash = AddLight(scratch, n.Value, i, viewer, phong, surface, buffer, color, hash);
       }
       else
         foreach (ILightSource source in sc.Sources)
-          hash = AddLight(source, i, viewer, phong, surface, buffer, color, hash);
+          hash = AddLight(scratch, source, i, viewer, phong, surface, buffer, color, hash);
     }
 
     if (depth++ >= MaxLevel || (!DoReflections && !DoRefractions))
       return hash;
 
-    double[] comp = ShadingScratch.Buffer(depth, bands);
+    double[] comp = scratch.Buffer(depth, bands);
     Vector3d origin = i.CoordWorld;
 
     if (DoReflections)
@@ -213,7 +224,7 @@ public class RayTracing : RayCasting
   }
 
   /// <summary>Adds one light's direct contribution (shadow ray included) to <paramref name="color"/>; returns the hash.</summary>
-  long AddLight(ILightSource source, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
+  long AddLight(ShadingScratch scratch, ILightSource source, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
   {
     double[]? intensity = source.GetIntensity(i, out Vector3d dir);
     if (intensity == null)
@@ -221,7 +232,8 @@ public class RayTracing : RayCasting
     double transmit = 1.0;
     if (DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0))
     {
-      transmit = TransparentShadows ? ShadowTransmittance(i.CoordWorld, dir) : Occluded(i.CoordWorld, dir) ? 0.0 : 1.0;
+      transmit = TransparentShadows ? ShadowTransmittance(i.CoordWorld, dir)
+        : (occludedOverridden ? Occluded(i.CoordWorld, dir) : Occluded(scratch, i.CoordWorld, dir)) ? 0.0 : 1.0;
       if (transmit <= 0.0)
         return hash;
     }

@@ -3,18 +3,27 @@ using System;
 namespace Rendering;
 
 /// <summary>
-/// Per-thread, per-recursion-depth scratch objects of the shading loop: the material copy that carries
-/// the surface colour, and the buffer a secondary ray's colour is returned in. A depth's objects are
+/// One worker thread's shading state, fetched with one thread-static look-up per shaded ray instead of one
+/// per use: its ray count, and per recursion depth the reusable intersection, the material copy that
+/// carries the surface colour and the buffer a secondary ray's colour is returned in. A depth's objects are
 /// only used while that depth's shade() runs, so deeper levels never overwrite them.
 /// </summary>
-internal static class ShadingScratch
+internal sealed class ShadingScratch
 {
-  [ThreadStatic] static PhongMaterial?[]? materials;
-  [ThreadStatic] static double[]?[]? buffers;
-  [ThreadStatic] static Intersection?[]? intersections;
+  [ThreadStatic] static ShadingScratch? current;
+
+  /// <summary>The calling thread's scratch.</summary>
+  public static ShadingScratch Current => current ??= new ShadingScratch();
+
+  /// <summary>Rays counted on this thread (<see cref="Execution.RayCounter"/>).</summary>
+  public long Rays;
+
+  PhongMaterial?[] materials = new PhongMaterial?[16];
+  double[]?[] buffers = new double[]?[16];
+  Intersection?[] intersections = new Intersection?[16];
 
   /// <summary>This thread's reusable intersection of <paramref name="depth"/> (the fast path fills it per hit).</summary>
-  public static Intersection Intersection(int depth)
+  public Intersection Intersection(int depth)
   {
     Intersection?[] pool = intersections = Grow(intersections, depth);
     return pool[depth] ??= new Intersection();
@@ -24,7 +33,7 @@ internal static class ShadingScratch
   /// The material to shade with: <paramref name="m"/> with colour <paramref name="surface"/>. GrCis clones
   /// the material per hit; a plain PhongMaterial is copied into this depth's scratch instead (same values).
   /// </summary>
-  public static IMaterial Material(IMaterial m, double[] surface, int depth)
+  public IMaterial Material(IMaterial m, double[] surface, int depth)
   {
     if (m.GetType() != typeof(PhongMaterial) || depth < 0)
     {
@@ -39,7 +48,7 @@ internal static class ShadingScratch
   }
 
   /// <summary>A cleared buffer of <paramref name="bands"/> values owned by <paramref name="depth"/>.</summary>
-  public static double[] Buffer(int depth, int bands)
+  public double[] Buffer(int depth, int bands)
   {
     double[]?[] pool = buffers = Grow(buffers, depth);
     double[]? b = pool[depth];
@@ -50,12 +59,12 @@ internal static class ShadingScratch
     return b;
   }
 
-  static T?[] Grow<T>(T?[]? pool, int depth) where T : class
+  static T?[] Grow<T>(T?[] pool, int depth) where T : class
   {
-    if (pool != null && depth < pool.Length)
+    if (depth < pool.Length)
       return pool;
-    var bigger = new T?[Math.Max(depth + 1, 16)];
-    pool?.CopyTo(bigger, 0);
+    var bigger = new T?[Math.Max(depth + 1, 2 * pool.Length)];
+    pool.CopyTo(bigger, 0);
     return bigger;
   }
 }

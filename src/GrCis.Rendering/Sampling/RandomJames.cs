@@ -57,6 +57,7 @@ public class RandomJames
     i97 = Lags - 1;
     j97 = 32;
     pending = false;
+    fresh = false;
     normalReady = false;
     Ok = true;
   }
@@ -92,8 +93,8 @@ public class RandomJames
   }
 
   /// <summary>
-  /// Cheap, lazy reseeding for per-pixel determinism: fills the lag table from a SplitMix64 stream
-  /// of <paramref name="seed"/> on the first draw. Different seeds give independent-looking streams.
+  /// Cheap, lazy reseeding for per-pixel determinism: the lag table is the SplitMix64 stream of
+  /// <paramref name="seed"/>, filled as draws need it. Different seeds give independent-looking streams.
   /// </summary>
   public void ResetFast(ulong seed)
   {
@@ -101,44 +102,98 @@ public class RandomJames
     pending = true;
   }
 
+  // The lag table of a ResetFast seed is filled lazily: the first FreshDraws draws read only u[96..64]
+  // and u[32..0], each computed on demand (SplitMix64 is random access); the rest is filled when a pixel
+  // draws more. A 16-sample pixel (32 draws) computes 64 entries instead of 97. Same numbers either way.
+  const int FreshDraws = 33;
+  bool fresh;
+  int freshCount;
+
   void InitFromPending()
   {
-    ulong state = pendingSeed;
-    for (int ii = 0; ii < Lags; ii++)
-      u[ii] = (SplitMix64(ref state) >> 40) * (1.0 / 16777216.0);
     c = CInit;
     i97 = Lags - 1;
     j97 = 32;
     pending = false;
+    fresh = true;
+    freshCount = 0;
     normalReady = false;
     Ok = true;
   }
 
-  static ulong SplitMix64(ref ulong state)
+  /// <summary>Entry <paramref name="k"/> of the table a ResetFast seed fills: the (k+1)-th SplitMix64 output, top 24 bits.</summary>
+  double SeedEntry(int k)
   {
-    ulong z = state += 0x9E3779B97F4A7C15UL;
+    ulong z = pendingSeed + (ulong)(k + 1) * 0x9E3779B97F4A7C15UL;
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9UL;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBUL;
-    return z ^ (z >> 31);
+    return ((z ^ (z >> 31)) >> 40) * (1.0 / 16777216.0);
+  }
+
+  double FreshNumber()
+  {
+    double[] uu = u;
+    int n = freshCount;
+    if (n < FreshDraws)
+    {
+      // i97 = 96 − n and j97 = 32 − n still hold seed values; keep the lower one (read again after the wrap).
+      freshCount = n + 1;
+      double b = uu[j97] = SeedEntry(j97);
+      double uni = SeedEntry(i97) - b;
+      uni -= Math.Floor(uni);
+      uu[i97] = uni;
+      i97--;
+      j97 = j97 == 0 ? Lags - 1 : j97 - 1;
+      double cc = c - CD;
+      cc -= Math.Floor(cc) * CM;
+      c = cc;
+      uni -= cc;
+      return uni - Math.Floor(uni);
+    }
+    // Entries not read yet: j97 + 1 … i97 (33 … 63).
+    for (int k = FreshDraws; k <= i97; k++)
+      uu[k] = SeedEntry(k);
+    fresh = false;
+    return Step();
   }
 
   /// <summary>Next number in [0, 1), a multiple of 2^-24.</summary>
   public double UniformNumber()
   {
+    if (pending | fresh | !Ok)
+      return FirstNumbers();
+    return Step();
+  }
+
+  // The seeding branches live here so the hot step stays small.
+  double FirstNumbers()
+  {
     if (!Ok && !pending)
       return 0.0;
     if (pending)
       InitFromPending();
-    double uni = u[i97] - u[j97];
-    if (uni < 0.0) uni += 1.0;
-    u[i97] = uni;
-    if (--i97 < 0) i97 = Lags - 1;
-    if (--j97 < 0) j97 = Lags - 1;
-    c -= CD;
-    if (c < 0.0) c += CM;
-    uni -= c;
-    if (uni < 0.0) uni += 1.0;
-    return uni;
+    return FreshNumber();
+  }
+
+  /// <summary>
+  /// One RANMAR step without a sign branch: every value is a multiple of 2^-24 in (−1, 1), so
+  /// x − ⌊x⌋ is exactly "x + 1 when negative" and c − ⌊c⌋·CM exactly "c + CM when negative".
+  /// </summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  double Step()
+  {
+    double[] uu = u;
+    int i = i97, j = j97;
+    double uni = uu[i] - uu[j];
+    uni -= Math.Floor(uni);
+    uu[i] = uni;
+    i97 = i == 0 ? Lags - 1 : i - 1;
+    j97 = j == 0 ? Lags - 1 : j - 1;
+    double cc = c - CD;
+    cc -= Math.Floor(cc) * CM;
+    c = cc;
+    uni -= cc;
+    return uni - Math.Floor(uni);
   }
 
   /// <summary>Uniform number in [min, max); min when the range is empty.</summary>

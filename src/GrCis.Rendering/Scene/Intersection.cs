@@ -188,6 +188,19 @@ public class Intersection : IComparable<Intersection>
     CoordObject = Vector3d.TransformPosition(CoordLocal, LocalToObject);
     ReflectanceModel = model;
     Material = material;
+    CopyCachedColor(color);
+    Textures = textures;
+
+    Solid!.CompleteIntersection(this);
+    Normal.Normalize();
+    if (Enter != Front)
+      Normal = -Normal;
+    SurfaceColor ??= new double[] { 0.0, 0.0, 0.0 };
+    completed = true;
+  }
+
+  void CopyCachedColor(double[]? color)
+  {
     if (SurfaceColor == null && color != null)
     {
       // GrCis copies the colour per hit (textures may change it): reuse this object's own copy.
@@ -197,9 +210,30 @@ public class Intersection : IComparable<Intersection>
       Array.Copy(color, own, color.Length);
       SurfaceColor = own;
     }
+  }
+
+  /// <summary>
+  /// <see cref="CompleteCached"/> for a hit only the library's own shading reads (see <see cref="Accel.LeanCompletion"/>):
+  /// the world point, normal, attributes and (when a checker reads them) texture coordinates, computed as the full
+  /// completion computes them; tangents, object coordinates and the three matrices are left as they are.
+  /// </summary>
+  internal void CompleteLean(in Matrix4d localToWorld, in Matrix4d worldToLocal, IReflectanceModel model, IMaterial material,
+                             double[]? color, LinkedList<ITexture>? textures, object? recursion, Accel.LeanCompletion lean)
+  {
+    CachedRecursion = recursion;
+    RecursionCached = true;
+    if (completed)
+      return;
+    CoordWorld = Vector3d.TransformPosition(CoordLocal, localToWorld);
+    ReflectanceModel = model;
+    Material = material;
+    CopyCachedColor(color);
     Textures = textures;
 
-    Solid!.CompleteIntersection(this);
+    if (lean == Accel.LeanCompletion.Plane)
+      ((Plane)Solid!).CompleteLean(this, worldToLocal);
+    else
+      Sphere.CompleteLean(this, worldToLocal, lean == Accel.LeanCompletion.SphereTextured);
     Normal.Normalize();
     if (Enter != Front)
       Normal = -Normal;

@@ -172,6 +172,18 @@ public class Plane : DefaultSceneNode, ISolid, IFastSolid
     SolidSupport.SetWorldFrame(inter, Vector3d.UnitZ, Vector3d.UnitX, Vector3d.UnitY);
   }
 
+  /// <summary>The part of <see cref="CompleteIntersection"/> the library's shading reads (same arithmetic): no tangents.</summary>
+  internal void CompleteLean(Intersection inter, in Matrix4d worldToLocal)
+  {
+    double x = inter.CoordLocal.X, y = inter.CoordLocal.Y;
+    if (Triangle)
+      inter.TextureCoord = new Vector2d(x * XMax, y * YMax);
+    else
+      inter.TextureCoord = new Vector2d(CanonicU ? x : (x - XMin) * ScaleU, CanonicV ? y : (y - YMin) * ScaleV);
+    inter.NormalLocal = Vector3d.UnitZ;
+    inter.Normal = Vector3d.TransformNormalInverse(Vector3d.UnitZ, worldToLocal);
+  }
+
   public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
   {
     if (Triangle)

@@ -92,6 +92,22 @@ public class Sphere : DefaultSceneNode, ISolid, IFastSolid
       SolidSupport.SetWorldFrame(inter, p);
   }
 
+  /// <summary>
+  /// The part of <see cref="CompleteIntersection"/> the library's shading reads (same arithmetic): the normal,
+  /// and the texture coordinates only when a texture reads them. No tangents.
+  /// </summary>
+  internal static void CompleteLean(Intersection inter, in Matrix4d worldToLocal, bool textureCoord)
+  {
+    Vector3d p = inter.CoordLocal;
+    if (textureCoord)
+    {
+      double r = Math.Sqrt(p.X * p.X + p.Y * p.Y);
+      inter.TextureCoord = new Vector2d(SolidSupport.Longitude(p.X, p.Y), Math.Atan2(r, p.Z) / Math.PI);
+    }
+    inter.NormalLocal = p;
+    inter.Normal = Vector3d.TransformNormalInverse(p, worldToLocal);
+  }
+
   public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
   {
     corner1 = new Vector3d(-1.0, -1.0, -1.0);

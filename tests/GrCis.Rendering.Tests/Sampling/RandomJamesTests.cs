@@ -84,6 +84,75 @@ public class RandomJamesTests
     Assert.InRange(sigma, 2.95, 3.05);
   }
 
+  /// <summary>The generator as it was before the lazy table and the branch-free step (the reference numbers).</summary>
+  sealed class ReferenceRanmar
+  {
+    readonly double[] u = new double[97];
+    double c = 362436.0 / 16777216.0;
+    int i97 = 96, j97 = 32;
+
+    public ReferenceRanmar(ulong seed)
+    {
+      ulong state = seed;
+      for (int k = 0; k < 97; k++)
+      {
+        ulong z = state += 0x9E3779B97F4A7C15UL;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9UL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBUL;
+        u[k] = ((z ^ (z >> 31)) >> 40) * (1.0 / 16777216.0);
+      }
+    }
+
+    public double Next()
+    {
+      double uni = u[i97] - u[j97];
+      if (uni < 0.0) uni += 1.0;
+      u[i97] = uni;
+      if (--i97 < 0) i97 = 96;
+      if (--j97 < 0) j97 = 96;
+      c -= 7654321.0 / 16777216.0;
+      if (c < 0.0) c += 16777213.0 / 16777216.0;
+      uni -= c;
+      if (uni < 0.0) uni += 1.0;
+      return uni;
+    }
+  }
+
+  [Theory]
+  [InlineData(0)]
+  [InlineData(1)]
+  [InlineData(32)]
+  [InlineData(33)]
+  [InlineData(34)]
+  [InlineData(97)]
+  [InlineData(5000)]
+  public void Fast_reset_gives_the_eagerly_seeded_sequence_whatever_the_draw_count(int draws)
+  {
+    // The lazy table switches to the full table after 33 draws: cross that point, stop at it, reseed inside it.
+    var r = new RandomJames();
+    for (ulong seed = 0; seed < 40; seed++)
+    {
+      ulong s = seed * 0x9E3779B97F4A7C15UL ^ 12345UL;
+      r.ResetFast(s);
+      var reference = new ReferenceRanmar(s);
+      for (int k = 0; k < draws; k++)
+        Assert.Equal(reference.Next(), r.UniformNumber());
+    }
+    r.ResetFast(7UL);
+    var again = new ReferenceRanmar(7UL);
+    for (int k = 0; k < 200; k++)
+      Assert.Equal(again.Next(), r.UniformNumber());
+  }
+
+  [Fact]
+  public void Classic_seeds_after_fast_reset_give_marsaglias_check_values()
+  {
+    var r = new RandomJames();
+    r.ResetFast(99UL);
+    r.UniformNumber();
+    Assert.True(r.Validate());
+  }
+
   [Fact]
   public void Fast_reset_is_reproducible_and_seed_dependent()
   {
