@@ -17,7 +17,7 @@ public sealed record BenchResult
   public long Rays { get; init; }
   public double RaysPerSecond { get; init; }
 
-  /// <summary>Seconds spent preparing the scene (flatten, BVHs, mesh BVH) before the timed render.</summary>
+  /// <summary>Seconds of the first warm-up render: preparing the scene (flatten, BVHs, mesh BVH) and its JIT.</summary>
   public double PrepareSeconds { get; init; }
 
   /// <summary>Faithful path (<c>--accel none</c>) at <see cref="SlowSize"/>; null when skipped.</summary>

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
 using OpenTK.Mathematics;
 
 namespace Rendering;
@@ -36,6 +37,8 @@ internal sealed class MeshBvh
   int[] firstOrLeft = Array.Empty<int>();
   int[] counts = Array.Empty<int>();
   int nodeCount;
+  // Inner node with children (left, left + 1) → its padded child boxes at (left − 1) / 2, for Nearest.
+  MeshChildBoxes[] childBoxes = Array.Empty<MeshChildBoxes>();
 
   public int TriangleCount => triId.Length;
 
@@ -81,6 +84,17 @@ internal sealed class MeshBvh
     else
       SetBox(0, Vector3d.Zero, Vector3d.Zero);
     Extent = n > 0 ? new Vector3d(boxes[3] - boxes[0], boxes[4] - boxes[1], boxes[5] - boxes[2]).Length : 0.0;
+
+    // Padding far above rounding (of box and triangle arithmetic, also far from the origin), far below any
+    // feature: the two-box test may then only keep more boxes than an exact one, never fewer.
+    double magnitude = 0.0;
+    for (int k = 0; k < 6 && n > 0; k++)
+      magnitude = Math.Max(magnitude, Math.Abs(boxes[k]));
+    double pad = 1e-9 * (Extent + magnitude);
+    childBoxes = new MeshChildBoxes[Math.Max(0, (nodeCount - 1) / 2)];
+    for (int node = 0; node < nodeCount; node++)
+      if (counts[node] == 0 && n > 0)
+        childBoxes[(firstOrLeft[node] - 1) / 2] = new MeshChildBoxes(boxes, firstOrLeft[node], pad);
 
     tri = new double[9 * n];
     triId = new int[n];
@@ -311,39 +325,48 @@ internal sealed class MeshBvh
     bool found = false;
     double bestT = accepted ? double.PositiveInfinity : double.NegativeInfinity;
     int bestTri = 0;
+    if (!LineBox(0, ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar))
+      return false;
+    Vector128<double> vox = Vector128.Create(ox), voy = Vector128.Create(oy), voz = Vector128.Create(oz);
+    Vector128<double> vix = Vector128.Create(ix), viy = Vector128.Create(iy), viz = Vector128.Create(iz);
 
-    Span<int> stack = stackalloc int[128];
+    // Each entry: a node and the line's parameter interval in its box, re-checked against the best when popped.
+    Span<NodeSpan> stack = stackalloc NodeSpan[128];
     int sp = 0;
-    stack[sp++] = 0;
+    stack[sp++] = new NodeSpan(0, rootNear, rootFar);
     while (sp > 0)
     {
-      int node = stack[--sp];
-      if (!LineBox(node, ox, oy, oz, dx, dy, dz, ix, iy, iz, out double tn, out double tf))
-        continue;
+      NodeSpan e = stack[--sp];
       // Accepted: T in (0, best]; rejected: T in [best, limit].
-      if (accepted ? (tf <= 0.0 || tn > bestT) : (tn > limit || tf < bestT))
+      if (accepted ? (e.Far <= 0.0 || e.Near > bestT) : (e.Near > limit || e.Far < bestT))
         continue;
+      int node = e.Node;
       int count = counts[node];
       if (count == 0)
       {
+        int left = firstOrLeft[node];
+        int mask = childBoxes[(left - 1) >> 1].Cross(vox, voy, voz, vix, viy, viz, out Vector128<double> near, out Vector128<double> far);
+        if (mask == 0)
+          continue;
         if (sp + 2 > stack.Length)
         {
-          Span<int> bigger = new int[stack.Length * 2];
+          // Degenerate (very deep) tree: a heap stack once.
+          Span<NodeSpan> bigger = new NodeSpan[stack.Length * 2];
           stack.CopyTo(bigger);
           stack = bigger;
         }
-        int left = firstOrLeft[node];
-        // Push the far child first so that the near one (by the ray's direction) is popped first.
-        if (NearIsRight(left, dx, dy, dz) == accepted)
+        var l = new NodeSpan(left, near.GetElement(0), far.GetElement(0));
+        var r = new NodeSpan(left + 1, near.GetElement(1), far.GetElement(1));
+        if (mask != 3)
         {
-          stack[sp++] = left;
-          stack[sp++] = left + 1;
+          stack[sp++] = mask == 1 ? l : r;
+          continue;
         }
-        else
-        {
-          stack[sp++] = left + 1;
-          stack[sp++] = left;
-        }
+        // The child more likely to hold the answer is popped first: nearest entry for the first accepted
+        // hit, farthest exit for the last rejected one.
+        bool rightFirst = accepted ? r.Near < l.Near : r.Far > l.Far;
+        stack[sp++] = rightFirst ? l : r;
+        stack[sp++] = rightFirst ? r : l;
         continue;
       }
       int end = firstOrLeft[node] + count;
@@ -369,15 +392,6 @@ internal sealed class MeshBvh
     return found;
   }
 
-  /// <summary>Whether the right child's box centre lies farther along the ray than the left's.</summary>
-  bool NearIsRight(int left, double dx, double dy, double dz)
-  {
-    int a = 6 * left, b = a + 6;
-    double ca = (boxes[a] + boxes[a + 3]) * dx + (boxes[a + 1] + boxes[a + 4]) * dy + (boxes[a + 2] + boxes[a + 5]) * dz;
-    double cb = (boxes[b] + boxes[b + 3]) * dx + (boxes[b + 1] + boxes[b + 4]) * dy + (boxes[b + 2] + boxes[b + 5]) * dz;
-    return cb < ca;
-  }
-
   /// <summary>Parameter interval of the line in a node's box (the same widened slabs as <see cref="IntersectAll"/>).</summary>
   bool LineBox(int node, double ox, double oy, double oz, double dx, double dy, double dz, double ix, double iy, double iz,
                out double tMin, out double tMax)
@@ -389,4 +403,6 @@ internal sealed class MeshBvh
            Slab(boxes[o + 1], boxes[o + 4], oy, dy, iy, ref tMin, ref tMax) &&
            Slab(boxes[o + 2], boxes[o + 5], oz, dz, iz, ref tMin, ref tMax);
   }
+
+  readonly record struct NodeSpan(int Node, double Near, double Far);
 }
