@@ -53,18 +53,21 @@ public static class ParallelCeiling
     return clock.Elapsed.TotalSeconds;
   }
 
-  // Four independent dependency chains of multiply-adds: keeps a core's FP units busy, touches no memory.
+  // Twelve independent chains of multiply-then-add: enough to fill a core's FP pipes (a latency-bound loop
+  // would leave room for an SMT sibling and hide that two "cores" share one), touching no memory.
   static double Spin(long n)
   {
-    double a = 1.0, b = 1.1, c = 1.2, d = 1.3;
-    for (long i = 0; i < n; i++)
+    Span<double> seed = stackalloc double[] { 1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 2.0, 2.1 };
+    double a = seed[0], b = seed[1], c = seed[2], d = seed[3], e = seed[4], f = seed[5];
+    double g = seed[6], h = seed[7], i = seed[8], j = seed[9], k = seed[10], l = seed[11];
+    for (long it = 0; it < n; it++)
     {
-      a = a * 0.999999 + 1e-7;
-      b = b * 0.999998 + 2e-7;
-      c = c * 0.999997 + 3e-7;
-      d = d * 0.999996 + 4e-7;
+      a = a * 0.999999 + 1e-7; b = b * 0.999998 + 2e-7; c = c * 0.999997 + 3e-7;
+      d = d * 0.999996 + 4e-7; e = e * 0.999995 + 5e-7; f = f * 0.999994 + 6e-7;
+      g = g * 0.999993 + 7e-7; h = h * 0.999992 + 8e-7; i = i * 0.999991 + 9e-7;
+      j = j * 0.999990 + 1e-6; k = k * 0.999989 + 2e-6; l = l * 0.999988 + 3e-6;
     }
-    return a + b + c + d;
+    return a + b + c + d + e + f + g + h + i + j + k + l;
   }
 
   static double sink;
