@@ -34,7 +34,12 @@ internal static class TestAnimations
     public long GetColor(Vector3d p1, double[] color)
     {
       if (Time >= 2.0)
+      {
+        // The first broken frame fails last: frames in parallel must still report it, not a later one.
+        if (Time < 2.5)
+          System.Threading.Thread.Sleep(200);
         throw new InvalidOperationException($"the background broke at t = {Time}");
+      }
       color[0] = color[1] = color[2] = 0.5;
       return 1;
     }

@@ -109,12 +109,13 @@ public sealed class FrameScheduler
 
     int next = -1, saved = 0;
     Exception? failure = null;
+    int failedIndex = int.MaxValue;
 
     void Work(IRayScene scene)
     {
+      int i = -1;
       try
       {
-        int i;
         while (!cancel.IsCancellationRequested && Volatile.Read(ref failure) == null &&
                (i = Interlocked.Increment(ref next)) < frames.Count)
         {
@@ -133,7 +134,13 @@ public sealed class FrameScheduler
       }
       catch (Exception e)
       {
-        Interlocked.CompareExchange(ref failure, e, null);
+        // Several frames in flight may fail; report the earliest, as one thread would.
+        lock (sync)
+          if (i < failedIndex)
+          {
+            failedIndex = i;
+            Volatile.Write(ref failure, e);
+          }
       }
     }
 
