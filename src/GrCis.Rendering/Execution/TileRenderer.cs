@@ -77,12 +77,14 @@ public static class TileRenderer
     int next = -1, done = 0;
     int threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tiles.Count));
     Exception? failure = null;
+    int failedTile = int.MaxValue;
     object progressLock = new();
     long renderRays = 0;
 
     void Work()
     {
       long rays0 = RayCounter.ThreadRays;
+      int k = -1;
       MT.InitThreadData();
       MT.seed = options.Seed;
       MT.frame = options.Frame;
@@ -91,7 +93,6 @@ public static class TileRenderer
         // Each worker owns a clone of the time-dependent parts ("clone on write"), so a component
         // may set the time of its worker's scene (motion blur) without touching other workers.
         MT.SetRendering(SceneCloner.CloneForWorker(scene), imageFunction, renderer);
-        int k;
         while (!cancel.IsCancellationRequested && Volatile.Read(ref failure) == null &&
                (k = Interlocked.Increment(ref next)) < tiles.Count)
         {
@@ -107,7 +108,13 @@ public static class TileRenderer
       }
       catch (Exception e)
       {
-        Interlocked.CompareExchange(ref failure, e, null);
+        // Tiles in flight may fail differently; report the first in tile order, whatever the threads.
+        lock (progressLock)
+          if (k < failedTile)
+          {
+            failedTile = k;
+            Volatile.Write(ref failure, e);
+          }
       }
       finally
       {

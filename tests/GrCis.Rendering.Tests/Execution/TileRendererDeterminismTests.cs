@@ -146,4 +146,40 @@ public class TileRendererDeterminismTests
           seen[y * 50 + x]++;
     Assert.All(seen, c => Assert.Equal(1, c));
   }
+
+  /// <summary>Fails in every pixel from row <see cref="FromRow"/> on, naming it; the first failing tile is slow to fail.</summary>
+  sealed class FailingRows : IImageFunction
+  {
+    public const int FromRow = 16;
+    public double Width { get; set; }
+    public double Height { get; set; }
+
+    public long GetSample(double x, double y, double[] color)
+    {
+      int column = (int)x, row = (int)y;
+      if (row >= FromRow)
+      {
+        if (row < FromRow + 8 && column < 8)
+          Thread.Sleep(150);
+        throw new InvalidOperationException($"broken at ({column}, {row})");
+      }
+      color[0] = color[1] = color[2] = 0.5;
+      return 1;
+    }
+  }
+
+  [Theory]
+  [InlineData(1)]
+  [InlineData(2)]
+  [InlineData(7)]
+  public void A_failing_render_reports_the_first_failing_tile_whatever_the_threads(int threads)
+  {
+    IRayScene scene = TestScenes.BallOnGround(areaLight: false);
+    var renderer = new SimpleImageSynthesizer { Width = Width, Height = Height };
+    var options = new RenderOptions { Threads = threads, TileSize = 8 };
+    RenderException e = Assert.Throws<RenderException>(() => TileRenderer.Render(scene, new FailingRows(), renderer, options));
+    // Tiles are taken in row-major order: the first failing one is the first tile of row 16.
+    Assert.Contains($"broken at (0, {FailingRows.FromRow})", e.Message);
+  }
 }
+
