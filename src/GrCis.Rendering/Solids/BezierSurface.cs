@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
@@ -11,9 +12,10 @@ namespace Rendering;
 /// Each patch is subdivided (de Casteljau) into a hierarchy of nearly flat pieces with boxes
 /// from their control points; the ray is then solved on the exact surface by Newton iteration
 /// started in every piece whose box it crosses. The surface is open: Enter = Front = the ray
-/// runs against the normal ∂S/∂u × ∂S/∂v.
+/// runs against the normal ∂S/∂u × ∂S/∂v. Both APIs (the list and the fast path's first record) share one
+/// search, <see cref="Collect"/>, so they give the same records.
 /// </summary>
-public class BezierSurface : DefaultSceneNode, ISolid
+public class BezierSurface : DefaultSceneNode, ISolid, IFastSolid
 {
   /// <summary>Exact surface normals (otherwise the flat normal of the piece that was hit).</summary>
   public bool PreciseNormals { get; set; }
@@ -33,6 +35,14 @@ public class BezierSurface : DefaultSceneNode, ISolid
     public double U0, U1, V0, V1;
     public int Patch;
     public int Left = -1, Right = -1;
+  }
+
+  /// <summary>A hit found by <see cref="Collect"/>: ray parameter, the piece whose Newton start found it, (u, v).</summary>
+  struct Found
+  {
+    public double T;
+    public int Piece;
+    public double U, V;
   }
 
   /// <summary>The hit's patch and parameters, kept until completion.</summary>
@@ -180,17 +190,48 @@ public class BezierSurface : DefaultSceneNode, ISolid
 
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
+    Span<Found> small = stackalloc Found[StackHits];
+    Span<Found> found = small;
+    int n = Collect(p0, p1, found);
+    if (n < 0)
+    {
+      // More hits than the stack buffer holds: every leaf piece yields at most one.
+      found = new Found[pieces.Count];
+      n = Collect(p0, p1, found);
+    }
+    if (n <= 0)
+      return null;
+
+    var result = new LinkedList<Intersection>();
+    for (int k = 0; k < n; k++)
+    {
+      Found f = found[k];
+      bool front = Front(f, p1);
+      result.AddLast(new Intersection(this) { T = f.T, Enter = front, Front = front, CoordLocal = p0 + f.T * p1, SolidData = NewHit(f.Piece, f.U, f.V) });
+    }
+    return result;
+  }
+
+  const int StackHits = 32;
+
+  /// <summary>
+  /// All hits of the line <c>p0 + t p1</c> sorted by t (stable), duplicates at patch seams dropped; the count,
+  /// 0 for a degenerate direction, or -1 when <paramref name="found"/> is too short.
+  /// </summary>
+  int Collect(in Vector3d p0, in Vector3d p1, Span<Found> found)
+  {
     double len2 = p1.LengthSquared;
     if (!(len2 > 0.0))
-      return null;
+      return 0;
 
     // The ray as the intersection of two planes n1·x = c1, n2·x = c2.
     Vector3d dir = p1 / Math.Sqrt(len2);
     MathSupport.Geometry.GetTangents(dir, out Vector3d n1, out Vector3d n2);
     double c1 = Vector3d.Dot(n1, p0), c2 = Vector3d.Dot(n2, p0);
     double scale = Math.Max((maxV - minV).Length, 1e-300);
+    double tTol = 1e-9 * scale / Math.Sqrt(len2);
 
-    var found = new List<(double t, Hit hit)>();
+    int n = 0;
     Span<int> stack = stackalloc int[64];
     foreach (int root in roots)
     {
@@ -198,7 +239,8 @@ public class BezierSurface : DefaultSceneNode, ISolid
       stack[sp++] = root;
       while (sp > 0)
       {
-        Piece piece = pieces[stack[--sp]];
+        int index = stack[--sp];
+        Piece piece = pieces[index];
         if (!LineCrossesBox(piece.Min, piece.Max, p0, p1, 1e-9 * scale))
           continue;
         if (piece.Left >= 0)
@@ -207,25 +249,98 @@ public class BezierSurface : DefaultSceneNode, ISolid
           stack[sp++] = piece.Right;
           continue;
         }
-        if (Solve(piece, n1, n2, c1, c2, scale, out double u, out double v, out Vector3d point))
-        {
-          double t = Vector3d.Dot(point - p0, p1) / len2;
-          AddUnique(found, t, new Hit { Patch = piece.Patch, U = u, V = v, FlatNormal = piece.FlatNormal }, 1e-9 * scale / Math.Sqrt(len2));
-        }
+        if (!Solve(piece, n1, n2, c1, c2, scale, out double u, out double v, out Vector3d point))
+          continue;
+        double t = Vector3d.Dot(point - p0, p1) / len2;
+        if (Duplicate(found[..n], t, piece.Patch, u, v, tTol))
+          continue;
+        if (n == found.Length)
+          return -1;
+        found[n++] = new Found { T = t, Piece = index, U = u, V = v };
       }
     }
-    if (found.Count == 0)
-      return null;
 
-    found.Sort((a, b) => a.t.CompareTo(b.t));
-    var result = new LinkedList<Intersection>();
-    foreach ((double t, Hit hit) in found)
+    // Insertion sort by t: stable, and these lists are short.
+    for (int i = 1; i < n; i++)
     {
-      Evaluate(hit.Patch, hit.U, hit.V, out _, out Vector3d su, out Vector3d sv);
-      bool front = Vector3d.Dot(Vector3d.Cross(su, sv), p1) < 0.0;
-      result.AddLast(new Intersection(this) { T = t, Enter = front, Front = front, CoordLocal = p0 + t * p1, SolidData = hit });
+      Found f = found[i];
+      int j = i - 1;
+      while (j >= 0 && found[j].T > f.T)
+      {
+        found[j + 1] = found[j];
+        j--;
+      }
+      found[j + 1] = f;
     }
-    return result;
+    return n;
+  }
+
+  /// <summary>The same point found again: from another start on the same patch, or from the neighbour across a seam.</summary>
+  bool Duplicate(ReadOnlySpan<Found> found, double t, int patch, double u, double v, double tTol)
+  {
+    foreach (Found f in found)
+      if (pieces[f.Piece].Patch == patch && Math.Abs(f.T - t) <= tTol && Math.Abs(f.U - u) <= 1e-7 && Math.Abs(f.V - v) <= 1e-7)
+        return true;
+    foreach (Found f in found)
+      if (pieces[f.Piece].Patch != patch && Math.Abs(f.T - t) <= tTol)
+        return true;
+    return false;
+  }
+
+  /// <summary>Whether the ray runs against the surface normal ∂S/∂u × ∂S/∂v at the hit.</summary>
+  bool Front(in Found f, in Vector3d p1)
+  {
+    Evaluate(pieces[f.Piece].Patch, f.U, f.V, out _, out Vector3d su, out Vector3d sv);
+    return Vector3d.Dot(Vector3d.Cross(su, sv), p1) < 0.0;
+  }
+
+  Hit NewHit(int piece, double u, double v) =>
+    new() { Patch = pieces[piece].Patch, U = u, V = v, FlatNormal = pieces[piece].FlatNormal };
+
+  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(BezierSurface));
+
+  /// <summary>An open surface: a list may start "inside" (a back face first), so it is tested for every ray.</summary>
+  public virtual bool IsClosed => false;
+
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  {
+    hit = default;
+    insideBefore = false;
+    Span<Found> small = stackalloc Found[StackHits];
+    Span<Found> found = small;
+    int n = Collect(p0, p1, found);
+    if (n < 0)
+    {
+      found = new Found[pieces.Count];
+      n = Collect(p0, p1, found);
+    }
+    for (int k = 0; k < n; k++)
+    {
+      bool front = Front(found[k], p1);
+      if (k == 0)
+        insideBefore = !front;
+      if (SolidSupport.Accepted(found[k].T, len2))
+      {
+        Found f = found[k];
+        hit.T = f.T;
+        hit.CoordLocal = p0 + f.T * p1;
+        hit.Data = f.Piece;
+        hit.Aux = new Vector3d(f.U, f.V, 0.0);
+        hit.Enter = hit.Front = front;
+        return true;
+      }
+      insideBefore = front;
+    }
+    return false;
+  }
+
+  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  {
+    target.T = hit.T;
+    target.Enter = hit.Enter;
+    target.Front = hit.Front;
+    target.CoordLocal = hit.CoordLocal;
+    target.SolidData = NewHit(hit.Data, hit.Aux.X, hit.Aux.Y);
   }
 
   /// <summary>Newton iteration for (u, v) on the plane pair, started in the middle of the piece.</summary>
@@ -259,18 +374,6 @@ public class BezierSurface : DefaultSceneNode, ISolid
         return false;
     }
     return false;
-  }
-
-  static void AddUnique(List<(double t, Hit hit)> found, double t, Hit hit, double tTol)
-  {
-    foreach ((double t2, Hit h2) in found)
-      if (h2.Patch == hit.Patch && Math.Abs(t2 - t) <= tTol && Math.Abs(h2.U - hit.U) <= 1e-7 && Math.Abs(h2.V - hit.V) <= 1e-7)
-        return;
-    // Seams between neighbouring patches: the same point found in both.
-    foreach ((double t2, Hit h2) in found)
-      if (h2.Patch != hit.Patch && Math.Abs(t2 - t) <= tTol)
-        return;
-    found.Add((t, hit));
   }
 
   static bool LineCrossesBox(Vector3d min, Vector3d max, Vector3d o, Vector3d d, double pad)

@@ -184,4 +184,60 @@ public class BezierSurfaceTests
     AssertOnRay(i, p0, p1, 1e-9);
     AssertVector(Vector3d.UnitY, i.Normal, 1e-12);
   }
+
+  [Fact]
+  public void Bezier_fast_first_record_equals_the_list_scan_on_random_rays()
+  {
+    var b = new BezierSurface(1, 2, SceneNet);
+    Assert.True(b.SupportsFastPath);
+    var rnd = new Random(77);
+    int accepted = 0, startInside = 0;
+    for (int r = 0; r < 5_000; r++)
+    {
+      // From around the surface (some on it: rays leaving a hit point), in every direction, any length.
+      Vector3d p0 = new(8 * rnd.NextDouble() - 1, 6 * rnd.NextDouble() - 3, 5 * rnd.NextDouble() - 1);
+      Vector3d p1 = new Vector3d(rnd.NextDouble() - 0.5, rnd.NextDouble() - 0.5, rnd.NextDouble() - 0.5) * (0.2 + 3 * rnd.NextDouble());
+      if (r % 4 == 3 && b.Intersect(p0, p1) is { First: not null } onto)
+        p0 += onto.First.Value.T * p1;
+      double len2 = p1.LengthSquared * (r % 2 == 0 ? 1.0 : 0.25);   // the world ray's length may differ
+
+      // The list scan IFastSolid.IntersectFirst promises.
+      LinkedList<Intersection>? list = b.Intersect(p0, p1);
+      Intersection? want = null;
+      bool wantInside = false;
+      if (list != null && list.First != null)
+      {
+        wantInside = !list.First.Value.Enter;
+        foreach (Intersection i in list)
+        {
+          if (i.T > 0.0 && i.T * i.T * len2 > Intersection.RAY_EPSILON2)
+          {
+            want = i;
+            break;
+          }
+          wantInside = i.Enter;
+        }
+      }
+
+      bool got = b.IntersectFirst(p0, p1, len2, out global::Rendering.Accel.FastHit h, out bool inside);
+      Assert.Equal(want != null, got);
+      Assert.Equal(wantInside, inside);
+      startInside += inside ? 1 : 0;
+      if (want == null)
+        continue;
+      accepted++;
+      Intersection mine = ((global::Rendering.Accel.IFastSolid)b).CreateIntersection(h);
+      Assert.Equal(want.T, mine.T);
+      Assert.Equal(want.Enter, mine.Enter);
+      Assert.Equal(want.Front, mine.Front);
+      Assert.Equal(want.CoordLocal, mine.CoordLocal);
+      want.Complete();
+      mine.Complete();
+      Assert.Equal(want.Normal, mine.Normal);
+      Assert.Equal(want.TextureCoord, mine.TextureCoord);
+    }
+    output.WriteLine($"{accepted} accepted records, {startInside} rays starting inside");
+    Assert.True(accepted > 500 && startInside > 100, $"{accepted} accepted, {startInside} inside: the rays miss the surface");
+  }
 }
+
