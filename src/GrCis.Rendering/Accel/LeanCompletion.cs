@@ -19,4 +19,7 @@ internal enum LeanCompletion : byte
 
   /// <summary>A plain <see cref="Plane"/> (checker floor or none): texture coordinates, no tangents.</summary>
   Plane,
+
+  /// <summary>A plain <see cref="Cube"/>: the face's texture coordinates (two copies), no tangents.</summary>
+  Cube,
 }

@@ -203,7 +203,7 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>
-  /// The lean completion a member allows: an exact library Sphere or Plane, shaded by the library's Phong
+  /// The lean completion a member allows: an exact library Sphere, Plane or Cube, shaded by the library's Phong
   /// model and material, with no RECURSION function and no texture but checkers (which read only TextureCoord).
   /// </summary>
   static LeanCompletion LeanKind(IFastSolid f, IReflectanceModel model, IMaterial material, LinkedList<ITexture>? textures, object? recursion)
@@ -223,6 +223,8 @@ public sealed partial class PreparedScene
       return textured ? LeanCompletion.SphereTextured : LeanCompletion.Sphere;
     if (type == typeof(Plane))
       return LeanCompletion.Plane;
+    if (type == typeof(Cube))
+      return LeanCompletion.Cube;
     return LeanCompletion.None;
   }
 }

@@ -232,6 +232,8 @@ public class Intersection : IComparable<Intersection>
 
     if (lean == Accel.LeanCompletion.Plane)
       ((Plane)Solid!).CompleteLean(this, worldToLocal);
+    else if (lean == Accel.LeanCompletion.Cube)
+      Cube.CompleteLean(this, worldToLocal);
     else
       Sphere.CompleteLean(this, worldToLocal, lean == Accel.LeanCompletion.SphereTextured);
     Normal.Normalize();

@@ -134,6 +134,15 @@ public class Cube : DefaultSceneNode, ISolid, IFastSolid
     }
   }
 
+  /// <summary>The part of <see cref="CompleteIntersection"/> the library's shading reads (same arithmetic): no tangents.</summary>
+  internal static void CompleteLean(Intersection inter, in Matrix4d worldToLocal)
+  {
+    Vector3d p = inter.CoordLocal;
+    Vector3d n = inter.NormalLocal;
+    inter.TextureCoord = n.X != 0.0 ? new Vector2d(p.Y, p.Z) : n.Y != 0.0 ? new Vector2d(p.X, p.Z) : new Vector2d(p.X, p.Y);
+    inter.Normal = Vector3d.TransformNormalInverse(n, worldToLocal);
+  }
+
   public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
   {
     corner1 = Vector3d.Zero;
