@@ -115,31 +115,25 @@ public class Cube : DefaultSceneNode, ISolid, IFastSolid
 
   public override void CompleteIntersection(Intersection inter)
   {
-    Vector3d p = inter.CoordLocal;
     Vector3d n = inter.NormalLocal;
+    inter.TextureCoord = TextureCoordAt(inter.CoordLocal, n);
     if (n.X != 0.0)
-    {
-      inter.TextureCoord = new Vector2d(p.Y, p.Z);
       SolidSupport.SetWorldFrame(inter, n, Vector3d.UnitY, Vector3d.UnitZ);
-    }
     else if (n.Y != 0.0)
-    {
-      inter.TextureCoord = new Vector2d(p.X, p.Z);
       SolidSupport.SetWorldFrame(inter, n, Vector3d.UnitX, Vector3d.UnitZ);
-    }
     else
-    {
-      inter.TextureCoord = new Vector2d(p.X, p.Y);
       SolidSupport.SetWorldFrame(inter, n, Vector3d.UnitX, Vector3d.UnitY);
-    }
   }
+
+  /// <summary>Texture coordinates on the face with normal <paramref name="n"/>: the two coordinates along it.</summary>
+  static Vector2d TextureCoordAt(in Vector3d p, in Vector3d n) =>
+    n.X != 0.0 ? new Vector2d(p.Y, p.Z) : n.Y != 0.0 ? new Vector2d(p.X, p.Z) : new Vector2d(p.X, p.Y);
 
   /// <summary>The part of <see cref="CompleteIntersection"/> the library's shading reads (same arithmetic): no tangents.</summary>
   internal static void CompleteLean(Intersection inter, in Matrix4d worldToLocal)
   {
-    Vector3d p = inter.CoordLocal;
     Vector3d n = inter.NormalLocal;
-    inter.TextureCoord = n.X != 0.0 ? new Vector2d(p.Y, p.Z) : n.Y != 0.0 ? new Vector2d(p.X, p.Z) : new Vector2d(p.X, p.Y);
+    inter.TextureCoord = TextureCoordAt(inter.CoordLocal, n);
     inter.Normal = Vector3d.TransformNormalInverse(n, worldToLocal);
   }
 

@@ -164,22 +164,20 @@ public class Plane : DefaultSceneNode, ISolid, IFastSolid
 
   public override void CompleteIntersection(Intersection inter)
   {
-    double x = inter.CoordLocal.X, y = inter.CoordLocal.Y;
-    if (Triangle)
-      inter.TextureCoord = new Vector2d(x * XMax, y * YMax);
-    else
-      inter.TextureCoord = new Vector2d(CanonicU ? x : (x - XMin) * ScaleU, CanonicV ? y : (y - YMin) * ScaleV);
+    inter.TextureCoord = TextureCoordAt(inter.CoordLocal);
     SolidSupport.SetWorldFrame(inter, Vector3d.UnitZ, Vector3d.UnitX, Vector3d.UnitY);
   }
+
+  /// <summary>Texture coordinates of local point <paramref name="p"/>: scaled to the rectangle, or the triangle's.</summary>
+  Vector2d TextureCoordAt(in Vector3d p) =>
+    Triangle
+      ? new Vector2d(p.X * XMax, p.Y * YMax)
+      : new Vector2d(CanonicU ? p.X : (p.X - XMin) * ScaleU, CanonicV ? p.Y : (p.Y - YMin) * ScaleV);
 
   /// <summary>The part of <see cref="CompleteIntersection"/> the library's shading reads (same arithmetic): no tangents.</summary>
   internal void CompleteLean(Intersection inter, in Matrix4d worldToLocal)
   {
-    double x = inter.CoordLocal.X, y = inter.CoordLocal.Y;
-    if (Triangle)
-      inter.TextureCoord = new Vector2d(x * XMax, y * YMax);
-    else
-      inter.TextureCoord = new Vector2d(CanonicU ? x : (x - XMin) * ScaleU, CanonicV ? y : (y - YMin) * ScaleV);
+    inter.TextureCoord = TextureCoordAt(inter.CoordLocal);
     inter.NormalLocal = Vector3d.UnitZ;
     inter.Normal = Vector3d.TransformNormalInverse(Vector3d.UnitZ, worldToLocal);
   }

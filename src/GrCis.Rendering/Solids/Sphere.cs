@@ -83,7 +83,7 @@ public class Sphere : DefaultSceneNode, ISolid, IFastSolid
   {
     Vector3d p = inter.CoordLocal;
     double r = Math.Sqrt(p.X * p.X + p.Y * p.Y);
-    inter.TextureCoord = new Vector2d(SolidSupport.Longitude(p.X, p.Y), Math.Atan2(r, p.Z) / Math.PI);
+    inter.TextureCoord = TextureCoordAt(p, r);
 
     // Tangents along growing u (east) and growing v (towards −z).
     if (r > 0.0)
@@ -91,6 +91,10 @@ public class Sphere : DefaultSceneNode, ISolid, IFastSolid
     else
       SolidSupport.SetWorldFrame(inter, p);
   }
+
+  /// <summary>Longitude and colatitude/π of local point <paramref name="p"/> (<paramref name="r"/>: its distance from the z axis).</summary>
+  static Vector2d TextureCoordAt(in Vector3d p, double r) =>
+    new(SolidSupport.Longitude(p.X, p.Y), Math.Atan2(r, p.Z) / Math.PI);
 
   /// <summary>
   /// The part of <see cref="CompleteIntersection"/> the library's shading reads (same arithmetic): the normal,
@@ -100,10 +104,7 @@ public class Sphere : DefaultSceneNode, ISolid, IFastSolid
   {
     Vector3d p = inter.CoordLocal;
     if (textureCoord)
-    {
-      double r = Math.Sqrt(p.X * p.X + p.Y * p.Y);
-      inter.TextureCoord = new Vector2d(SolidSupport.Longitude(p.X, p.Y), Math.Atan2(r, p.Z) / Math.PI);
-    }
+      inter.TextureCoord = TextureCoordAt(p, Math.Sqrt(p.X * p.X + p.Y * p.Y));
     inter.NormalLocal = p;
     inter.Normal = Vector3d.TransformNormalInverse(p, worldToLocal);
   }
