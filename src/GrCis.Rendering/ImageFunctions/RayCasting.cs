@@ -36,15 +36,22 @@ public class RayCasting : IImageFunction
 
   [NonSerialized] readonly bool firstHitOverridden;
 
-  static readonly System.Collections.Concurrent.ConcurrentDictionary<Type, bool> overridesFirstHit = new();
-
   public RayCasting(IRayScene? sc = null)
   {
     scene = sc;
-    firstHitOverridden = overridesFirstHit.GetOrAdd(GetType(), static t =>
-      t.GetMethod(nameof(FirstHit), System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.NonPublic,
-        new[] { typeof(Vector3d), typeof(Vector3d) })?.DeclaringType != typeof(RayCasting));
+    firstHitOverridden = Overrides(nameof(FirstHit), typeof(RayCasting));
   }
+
+  static readonly System.Collections.Concurrent.ConcurrentDictionary<(Type, string, Type), bool> overrides = new();
+
+  /// <summary>
+  /// Whether this object's class overrides the protected <c>(Vector3d, Vector3d)</c> method <paramref name="method"/>
+  /// that <paramref name="declaring"/> declares (a script's subclass): cached per class.
+  /// </summary>
+  private protected bool Overrides(string method, Type declaring) =>
+    overrides.GetOrAdd((GetType(), method, declaring), static k =>
+      k.Item1.GetMethod(k.Item2, System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.NonPublic,
+        new[] { typeof(Vector3d), typeof(Vector3d) })?.DeclaringType != k.Item3);
 
   /// <summary>
   /// First hit of a ray traced at recursion <paramref name="depth"/>: <see cref="FirstHit(Vector3d, Vector3d)"/>,

@@ -45,14 +45,10 @@ public class RayTracing : RayCasting
   public bool FresnelRefraction;
 
   public RayTracing(IRayScene? sc = null) : base(sc) =>
-    occludedOverridden = overridesOccluded.GetOrAdd(GetType(), static t =>
-      t.GetMethod(nameof(Occluded), System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.NonPublic,
-        new[] { typeof(Vector3d), typeof(Vector3d) })?.DeclaringType != typeof(RayTracing));
+    occludedOverridden = Overrides(nameof(Occluded), typeof(RayTracing));
 
   // A subclass's Occluded must see every shadow ray; otherwise the scratch at hand counts it.
   [NonSerialized] readonly bool occludedOverridden;
-
-  static readonly System.Collections.Concurrent.ConcurrentDictionary<Type, bool> overridesOccluded = new();
 
   public override long GetSample(double x, double y, double[] color)
   {
