@@ -63,12 +63,7 @@ public class CylinderFront : Cylinder
   {
     if (!Span(p0, p1, out double t, out int capIn, out _, out _) || capIn != 0)
       return 0;
-    dst[0] = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
-    if (!shell)
-      return 1;
-    double t2 = t + Intersection.SHELL_THICKNESS;
-    dst[1] = new FastHit { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
-    return 2;
+    return SolidSupport.FrontAndShell(t, p0, p1, shell, dst);
   }
 
   public override void InitIntersection(in FastHit hit, Intersection target)

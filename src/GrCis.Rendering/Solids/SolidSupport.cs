@@ -115,6 +115,20 @@ internal static class SolidSupport
   }
 
   /// <summary>
+  /// The whole list of a one-sided "front" solid hit at <paramref name="t"/> (see <see cref="FrontOrShell"/>):
+  /// the front entry, and with a <paramref name="shell"/> the exit behind it. Returns the count.
+  /// </summary>
+  public static int FrontAndShell(double t, in Vector3d p0, in Vector3d p1, bool shell, Span<FastHit> dst)
+  {
+    dst[0] = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
+    if (!shell)
+      return 1;
+    double t2 = t + Intersection.SHELL_THICKNESS;
+    dst[1] = new FastHit { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
+    return 2;
+  }
+
+  /// <summary>
   /// First accepted record of the list [enter at <paramref name="t0"/>, exit at <paramref name="t1"/>]:
   /// <paramref name="second"/> tells which; <paramref name="insideBefore"/> is the CSG state before it.
   /// </summary>

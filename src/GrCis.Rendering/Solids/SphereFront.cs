@@ -57,12 +57,7 @@ public class SphereFront : Sphere
   {
     if (!Roots(p0, p1, out double t0, out _))
       return 0;
-    dst[0] = new FastHit { T = t0, CoordLocal = p0 + t0 * p1, Aux = p1, Enter = true, Front = true };
-    if (!shell)
-      return 1;
-    double t = t0 + Intersection.SHELL_THICKNESS;
-    dst[1] = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1 };
-    return 2;
+    return SolidSupport.FrontAndShell(t0, p0, p1, shell, dst);
   }
 
   public override void InitIntersection(in FastHit hit, Intersection target)
