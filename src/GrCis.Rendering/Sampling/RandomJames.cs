@@ -144,11 +144,7 @@ public class RandomJames
       uu[i97] = uni;
       i97--;
       j97 = j97 == 0 ? Lags - 1 : j97 - 1;
-      double cc = c - CD;
-      cc -= Math.Floor(cc) * CM;
-      c = cc;
-      uni -= cc;
-      return uni - Math.Floor(uni);
+      return Carry(uni);
     }
     // Entries not read yet: j97 + 1 … i97 (33 … 63).
     for (int k = FreshDraws; k <= i97; k++)
@@ -189,6 +185,13 @@ public class RandomJames
     uu[i] = uni;
     i97 = i == 0 ? Lags - 1 : i - 1;
     j97 = j == 0 ? Lags - 1 : j - 1;
+    return Carry(uni);
+  }
+
+  /// <summary>The step's second half: advance the arithmetic sequence c and subtract it (mod 1, branch-free).</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  double Carry(double uni)
+  {
     double cc = c - CD;
     cc -= Math.Floor(cc) * CM;
     c = cc;
