@@ -190,16 +190,9 @@ public class BezierSurface : DefaultSceneNode, ISolid, IFastSolid
 
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
-    Span<Found> small = stackalloc Found[StackHits];
-    Span<Found> found = small;
-    int n = Collect(p0, p1, found);
-    if (n < 0)
-    {
-      // More hits than the stack buffer holds: every leaf piece yields at most one.
-      found = new Found[pieces.Count];
-      n = Collect(p0, p1, found);
-    }
-    if (n <= 0)
+    Span<Found> found = CollectAll(p0, p1, stackalloc Found[StackHits]);
+    int n = found.Length;
+    if (n == 0)
       return null;
 
     var result = new LinkedList<Intersection>();
@@ -213,6 +206,21 @@ public class BezierSurface : DefaultSceneNode, ISolid, IFastSolid
   }
 
   const int StackHits = 32;
+
+  /// <summary>
+  /// <see cref="Collect"/> into <paramref name="buffer"/>, or into an array big enough for any ray (every leaf
+  /// piece yields at most one hit) when the buffer is too short; the hits found.
+  /// </summary>
+  Span<Found> CollectAll(in Vector3d p0, in Vector3d p1, Span<Found> buffer)
+  {
+    int n = Collect(p0, p1, buffer);
+    if (n < 0)
+    {
+      buffer = new Found[pieces.Count];
+      n = Collect(p0, p1, buffer);
+    }
+    return buffer[..n];
+  }
 
   /// <summary>
   /// All hits of the line <c>p0 + t p1</c> sorted by t (stable), duplicates at patch seams dropped; the count,
@@ -306,15 +314,8 @@ public class BezierSurface : DefaultSceneNode, ISolid, IFastSolid
   {
     hit = default;
     insideBefore = false;
-    Span<Found> small = stackalloc Found[StackHits];
-    Span<Found> found = small;
-    int n = Collect(p0, p1, found);
-    if (n < 0)
-    {
-      found = new Found[pieces.Count];
-      n = Collect(p0, p1, found);
-    }
-    for (int k = 0; k < n; k++)
+    Span<Found> found = CollectAll(p0, p1, stackalloc Found[StackHits]);
+    for (int k = 0; k < found.Length; k++)
     {
       bool front = Front(found[k], p1);
       if (k == 0)
