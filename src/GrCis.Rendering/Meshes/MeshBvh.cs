@@ -248,7 +248,7 @@ internal sealed class MeshBvh
     while (sp > 0)
     {
       int node = stack[--sp];
-      if (!LineHitsBox(node, ox, oy, oz, dx, dy, dz, ix, iy, iz))
+      if (!LineBox(node, ox, oy, oz, dx, dy, dz, ix, iy, iz, out _, out _))
         continue;
       int count = counts[node];
       if (count == 0)
@@ -268,16 +268,6 @@ internal sealed class MeshBvh
       for (int k = firstOrLeft[node]; k < end; k++)
         TestTriangle(k, ox, oy, oz, dx, dy, dz, hits);
     }
-  }
-
-  bool LineHitsBox(int node, double ox, double oy, double oz, double dx, double dy, double dz, double ix, double iy, double iz)
-  {
-    int o = 6 * node;
-    double tMin = double.NegativeInfinity, tMax = double.PositiveInfinity;
-    if (!Slab(boxes[o], boxes[o + 3], ox, dx, ix, ref tMin, ref tMax)) return false;
-    if (!Slab(boxes[o + 1], boxes[o + 4], oy, dy, iy, ref tMin, ref tMax)) return false;
-    if (!Slab(boxes[o + 2], boxes[o + 5], oz, dz, iz, ref tMin, ref tMax)) return false;
-    return true;
   }
 
   static bool Slab(double min, double max, double o, double d, double inv, ref double tMin, ref double tMax)
