@@ -80,11 +80,10 @@ public static class BenchSuite
   const double WarmUpSeconds = 1.0;
   const int WarmUpMaxPasses = 100;
 
-  /// <summary>Renders one case (fast path, then the faithful path unless <paramref name="skipSlow"/>).</summary>
-  public static BenchResult Run(BenchCase c, int threads, bool skipSlow, CancellationToken cancel) =>
-    Run(c, c.Build(), threads, skipSlow, cancel);
-
-  /// <summary>Renders one case of an already built scene.</summary>
+  /// <summary>
+  /// Renders one case, its scene built by the caller (fast path, then the faithful path unless
+  /// <paramref name="skipSlow"/>); <c>--scaling</c> renders the same scene again.
+  /// </summary>
   public static BenchResult Run(BenchCase c, IRayScene scene, int threads, bool skipSlow, CancellationToken cancel)
   {
 
