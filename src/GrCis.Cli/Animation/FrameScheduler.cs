@@ -108,15 +108,14 @@ public sealed class FrameScheduler
       scenes[i] = renderer.CreateWorkerScene();
 
     int next = -1, saved = 0;
-    Exception? failure = null;
-    int failedIndex = int.MaxValue;
+    var failure = new EarliestFailure();
 
     void Work(IRayScene scene)
     {
       int i = -1;
       try
       {
-        while (!cancel.IsCancellationRequested && Volatile.Read(ref failure) == null &&
+        while (!cancel.IsCancellationRequested && failure.Exception == null &&
                (i = Interlocked.Increment(ref next)) < frames.Count)
         {
           int k = frames[i];
@@ -135,12 +134,7 @@ public sealed class FrameScheduler
       catch (Exception e)
       {
         // Several frames in flight may fail; report the earliest, as one thread would.
-        lock (sync)
-          if (i < failedIndex)
-          {
-            failedIndex = i;
-            Volatile.Write(ref failure, e);
-          }
+        failure.Report(i, e);
       }
     }
 
@@ -154,8 +148,8 @@ public sealed class FrameScheduler
     foreach (Thread t in threads)
       t.Join();
 
-    if (failure != null)
-      System.Runtime.ExceptionServices.ExceptionDispatchInfo.Capture(failure).Throw();
+    if (failure.Exception is Exception e)
+      System.Runtime.ExceptionServices.ExceptionDispatchInfo.Capture(e).Throw();
     return saved;
   }
 }

@@ -76,8 +76,7 @@ public static class TileRenderer
     List<Tile> tiles = MakeTiles(width, height, options.TileSize);
     int next = -1, done = 0;
     int threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tiles.Count));
-    Exception? failure = null;
-    int failedTile = int.MaxValue;
+    var failure = new EarliestFailure();
     object progressLock = new();
     long renderRays = 0;
 
@@ -93,7 +92,7 @@ public static class TileRenderer
         // Each worker owns a clone of the time-dependent parts ("clone on write"), so a component
         // may set the time of its worker's scene (motion blur) without touching other workers.
         MT.SetRendering(SceneCloner.CloneForWorker(scene), imageFunction, renderer);
-        while (!cancel.IsCancellationRequested && Volatile.Read(ref failure) == null &&
+        while (!cancel.IsCancellationRequested && failure.Exception == null &&
                (k = Interlocked.Increment(ref next)) < tiles.Count)
         {
           Tile t = tiles[k];
@@ -109,12 +108,7 @@ public static class TileRenderer
       catch (Exception e)
       {
         // Tiles in flight may fail differently; report the first in tile order, whatever the threads.
-        lock (progressLock)
-          if (k < failedTile)
-          {
-            failedTile = k;
-            Volatile.Write(ref failure, e);
-          }
+        failure.Report(k, e);
       }
       finally
       {
@@ -141,8 +135,8 @@ public static class TileRenderer
     Interlocked.Add(ref Intersection.countRays, renderRays);
     LastRenderRays = renderRays;
 
-    if (failure != null)
-      throw new RenderException($"Rendering failed: {failure.Message}", failure);
+    if (failure.Exception is Exception e)
+      throw new RenderException($"Rendering failed: {e.Message}", e);
     return image;
   }
 }
