@@ -377,41 +377,20 @@ public sealed partial class PreparedScene
         int hit = children[ni].Hit(vox, voy, voz, vix, viy, viz, q.BestT, out Vector128<double> entry);
         if (hit != 0)
         {
-          int left = ni + 1, right = n.Index;
-          if (((negMask >> n.Axis) & 1) != 0)
+          // Lane/bit 0 is the left child (ni + 1), lane/bit 1 the right one (n.Index).
+          int nearLane = (negMask >> n.Axis) & 1, farLane = nearLane ^ 1;
+          int near = nearLane == 0 ? ni + 1 : n.Index, far = nearLane == 0 ? n.Index : ni + 1;
+          if ((hit & (1 << nearLane)) == 0)
           {
-            if ((hit & 1) != 0)
-            {
-              if ((hit & 2) != 0)
-              {
-                stackT[sp] = entry.GetElement(0);
-                stack[sp++] = left;
-              }
-              else
-              {
-                ni = left;
-                continue;
-              }
-            }
-            ni = right;
+            ni = far;
+            continue;
           }
-          else
+          if ((hit & (1 << farLane)) != 0)
           {
-            if ((hit & 2) != 0)
-            {
-              if ((hit & 1) != 0)
-              {
-                stackT[sp] = entry.GetElement(1);
-                stack[sp++] = right;
-              }
-              else
-              {
-                ni = right;
-                continue;
-              }
-            }
-            ni = left;
+            stackT[sp] = entry.GetElement(farLane);
+            stack[sp++] = far;
           }
+          ni = near;
           continue;
         }
       }
