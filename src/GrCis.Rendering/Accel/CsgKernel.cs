@@ -121,9 +121,8 @@ internal sealed class CsgKernel
       Step = step,
       Next = -1,
       Table = table,
-      // The same flags as CSGInnerNode's constructor.
-      ShortCircuit = !(csg.Result(false, false) || csg.Result(false, true)),
-      Trivial = csg.Result(true, false) && !csg.Result(false, false),
+      ShortCircuit = csg.shortCircuit,
+      Trivial = csg.trivial,
     });
 
     int sum = 0, childWork = 0, previous = -1, count = 0;

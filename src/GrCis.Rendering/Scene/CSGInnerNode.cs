@@ -16,11 +16,11 @@ public class CSGInnerNode : DefaultSceneNode
   /// <summary>Optional bounding volume tested before the children.</summary>
   public IBoundingVolume? BoundingVolume;
 
-  // An empty left operand empties the result (intersection, difference): stop early.
-  readonly bool shortCircuit;
+  /// <summary>An empty left operand empties the result (intersection, difference): stop early.</summary>
+  internal readonly bool shortCircuit;
 
-  // An empty right operand changes nothing (union, xor, difference): skip it.
-  readonly bool trivial;
+  /// <summary>An empty right operand changes nothing (union, xor, difference): skip it.</summary>
+  internal readonly bool trivial;
 
   public CSGInnerNode(SetOperation op)
   {
