@@ -172,10 +172,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
 
   public virtual void InitIntersection(in FastHit hit, Intersection target)
   {
-    target.T = hit.T;
-    target.Enter = hit.Enter;
-    target.Front = hit.Front;
-    target.CoordLocal = hit.CoordLocal;
+    target.SetRecord(hit);
     target.SolidData = new HitData(hit.Data, hit.Aux.X, hit.Aux.Y);
   }
 

@@ -212,6 +212,15 @@ public class Intersection : IComparable<Intersection>
     }
   }
 
+  /// <summary>The part of a fast-path record every solid lists the same way (T, Enter, Front, local coordinates).</summary>
+  internal void SetRecord(in Accel.FastHit hit)
+  {
+    T = hit.T;
+    Enter = hit.Enter;
+    Front = hit.Front;
+    CoordLocal = hit.CoordLocal;
+  }
+
   /// <summary>
   /// <see cref="CompleteCached"/> for a hit only the library's own shading reads (see <see cref="Accel.LeanCompletion"/>):
   /// the world point, normal, attributes and (when a checker reads them) texture coordinates, computed as the full

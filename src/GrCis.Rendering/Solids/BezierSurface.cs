@@ -337,10 +337,7 @@ public class BezierSurface : DefaultSceneNode, ISolid, IFastSolid
 
   public virtual void InitIntersection(in FastHit hit, Intersection target)
   {
-    target.T = hit.T;
-    target.Enter = hit.Enter;
-    target.Front = hit.Front;
-    target.CoordLocal = hit.CoordLocal;
+    target.SetRecord(hit);
     target.SolidData = NewHit(hit.Data, hit.Aux.X, hit.Aux.Y);
   }
 

@@ -98,10 +98,7 @@ public class Cube : DefaultSceneNode, ISolid, IFastSolid
 
   public virtual void InitIntersection(in FastHit hit, Intersection target)
   {
-    target.T = hit.T;
-    target.Enter = hit.Enter;
-    target.Front = hit.Front;
-    target.CoordLocal = hit.CoordLocal;
+    target.SetRecord(hit);
     target.NormalLocal = FaceNormal(hit.Data);
   }
 

@@ -68,10 +68,7 @@ public class CylinderFront : Cylinder
 
   public override void InitIntersection(in FastHit hit, Intersection target)
   {
-    target.T = hit.T;
-    target.Enter = hit.Enter;
-    target.Front = hit.Front;
-    target.CoordLocal = hit.CoordLocal;
+    target.SetRecord(hit);
     target.NormalLocal = new Vector3d(hit.CoordLocal.X, hit.CoordLocal.Y, 0.0);
     target.SolidData = hit.Aux;
   }

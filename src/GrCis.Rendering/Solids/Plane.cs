@@ -146,10 +146,7 @@ public class Plane : DefaultSceneNode, ISolid, IFastSolid
 
   public virtual void InitIntersection(in FastHit hit, Intersection target)
   {
-    target.T = hit.T;
-    target.Enter = hit.Enter;
-    target.Front = hit.Front;
-    target.CoordLocal = hit.CoordLocal;
+    target.SetRecord(hit);
     target.NormalLocal = Vector3d.UnitZ;
   }
 

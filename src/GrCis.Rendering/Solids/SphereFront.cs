@@ -62,10 +62,7 @@ public class SphereFront : Sphere
 
   public override void InitIntersection(in FastHit hit, Intersection target)
   {
-    target.T = hit.T;
-    target.Enter = hit.Enter;
-    target.Front = hit.Front;
-    target.CoordLocal = hit.CoordLocal;
+    target.SetRecord(hit);
     target.NormalLocal = hit.CoordLocal;
     target.SolidData = hit.Aux;
   }

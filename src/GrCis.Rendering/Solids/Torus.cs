@@ -111,10 +111,7 @@ public class Torus : DefaultSceneNode, ISolid, IFastSolid
 
   public virtual void InitIntersection(in FastHit hit, Intersection target)
   {
-    target.T = hit.T;
-    target.Enter = hit.Enter;
-    target.Front = hit.Front;
-    target.CoordLocal = hit.CoordLocal;
+    target.SetRecord(hit);
   }
 
   /// <summary>True when <paramref name="p0"/> lies on the surface (within rounding of a computed hit point).</summary>
