@@ -4,6 +4,7 @@ using System.Diagnostics;
 using System.IO;
 using System.Linq;
 using System.Threading;
+using GrCis.TestSupport;
 
 namespace GrCis.Cli.Tests;
 
@@ -83,16 +84,14 @@ public class AnimateProcessTests : IClassFixture<OrbitBaseline>
     AnimateRun.AssertSameFiles(baseline.Frames, AnimateRun.Snapshot(dir.File("frames")));
   }
 
-  [Fact]
+  [SkippableFact]
   public void Gnu_parallel_runs_the_shards_and_the_frames_equal_one_process()
   {
-    string? parallel = FindOnPath("parallel");
-    Assert.True(parallel != null,
-      "GNU parallel is not installed: install the Debian package 'parallel' (.ci/run does: apt-get install -y parallel)");
+    string parallel = RequiredTool.Find("parallel", "parallel");
 
     using var dir = new TempDirectory();
     // The recipe of docs/scale-out.md: one job per shard index, {} is the index.
-    var psi = new ProcessStartInfo(parallel!)
+    var psi = new ProcessStartInfo(parallel)
     {
       WorkingDirectory = dir.Path,
       RedirectStandardOutput = true,
@@ -130,14 +129,11 @@ public class AnimateProcessTests : IClassFixture<OrbitBaseline>
     Assert.False(File.Exists(dir.File("t.mp4")));
   }
 
-  [Fact]
+  [SkippableFact]
   public void Video_is_encoded_with_ffmpeg_at_the_animation_frame_rate()
   {
-    if (FindOnPath("ffmpeg") == null)
-    {
-      // .ci/run installs ffmpeg; a developer machine without it still runs the missing-ffmpeg test above.
-      Assert.Fail("ffmpeg is not installed: apt-get install -y ffmpeg (the .ci/run script installs it)");
-    }
+    // A machine without ffmpeg still runs the missing-ffmpeg test above.
+    RequiredTool.Find("ffmpeg", "ffmpeg");
     using var dir = new TempDirectory();
     var (code, stdout, error) = GrcisProcess.Run(dir.Path,
       "animate", "Two spheres", "--to", "1", "--fps", "10", "--size", "33x25", "-o", "f/t##.png", "--video", "t.mp4", "-q");
@@ -148,7 +144,7 @@ public class AnimateProcessTests : IClassFixture<OrbitBaseline>
     Assert.Empty(Directory.GetFiles(dir.Path, ".t.tmp-*"));
 
     // ffprobe (from the same package) confirms the frame count and rate.
-    string? ffprobe = FindOnPath("ffprobe");
+    string? ffprobe = RequiredTool.OnPath("ffprobe", Environment.GetEnvironmentVariable("PATH"));
     if (ffprobe != null)
     {
       var psi = new ProcessStartInfo(ffprobe) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
@@ -163,8 +159,4 @@ public class AnimateProcessTests : IClassFixture<OrbitBaseline>
 
   static int CompleteFrames(string dir) =>
     Directory.Exists(dir) ? Directory.GetFiles(dir, "*.png").Length : 0;
-
-  static string? FindOnPath(string name) =>
-    (Environment.GetEnvironmentVariable("PATH") ?? "").Split(Path.PathSeparator, StringSplitOptions.RemoveEmptyEntries)
-      .Select(d => Path.Combine(d, name)).FirstOrDefault(File.Exists);
 }
