@@ -156,4 +156,22 @@ public class RenderSessionTests
     public double Height { get; set; }
     public long GetSample(double x, double y, double[] color) => throw new InvalidOperationException("scene bug");
   }
+
+  [Fact]
+  public async Task Counted_render_keeps_the_scripts_opt_in_settings_and_equals_the_cli_image()
+  {
+    // Statistics wrap plain ray tracing in the instrumented copy; TransparentShadows and FresnelRefraction
+    // must survive that copy, or the demo shows another picture than `grcis render`.
+    IRayScene scene = TestScenes.SphereOnPlane(glass: true);
+    var function = new RayTracing(scene) { TransparentShadows = true, FresnelRefraction = true };
+    using var session = new RenderSession(RenderJob.Create(scene, Small, function));
+
+    RenderResult result = await session.Start();
+
+    Assert.True(result.Statistics.Rays > 0);
+    FloatImage cli = TileRenderer.Render(scene, function, RenderJob.CreateRenderer(Small), Small.ToRenderOptions());
+    FloatImage plain = Reference(Small, glass: true);
+    Assert.NotEqual(plain.Data, cli.Data);   // the two settings change this scene
+    Assert.Equal(cli.Data, result.Image.Data);
+  }
 }

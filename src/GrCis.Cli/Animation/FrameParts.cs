@@ -45,19 +45,8 @@ public sealed class FrameParts
       return scriptFunction;
 
     var source = (RayCasting)scriptFunction;
-    RayCasting copy = source is RayTracing rt
-      ? new RayTracing(scene)
-      {
-        MaxLevel = rt.MaxLevel,
-        MinImportance = rt.MinImportance,
-        DoShadows = rt.DoShadows,
-        DoReflections = rt.DoReflections,
-        DoRefractions = rt.DoRefractions,
-        DoRecursion = rt.DoRecursion,
-        TransparentShadows = rt.TransparentShadows,
-        FresnelRefraction = rt.FresnelRefraction,
-      }
-      : new RayCasting(scene);
+    RayCasting copy = source is RayTracing ? new RayTracing(scene) : new RayCasting(scene);
+    copy.CopySettingsFrom(source);
     copy.Accel = settings.Accel;
     return copy;
   }

@@ -30,12 +30,7 @@ internal sealed class InstrumentedRayTracing : RayTracing
   {
     ArgumentNullException.ThrowIfNull(template);
     this.observer = observer ?? throw new ArgumentNullException(nameof(observer));
-    MaxLevel = template.MaxLevel;
-    MinImportance = template.MinImportance;
-    DoShadows = template.DoShadows;
-    DoReflections = template.DoReflections;
-    DoRefractions = template.DoRefractions;
-    DoRecursion = template.DoRecursion;
+    CopySettingsFrom(template);
   }
 
   /// <summary>True when <paramref name="f"/> is a plain <see cref="RayTracing"/> whose behaviour this class reproduces.</summary>

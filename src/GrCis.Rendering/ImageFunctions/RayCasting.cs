@@ -42,6 +42,18 @@ public class RayCasting : IImageFunction
     firstHitOverridden = Overrides(nameof(FirstHit), typeof(RayCasting));
   }
 
+  /// <summary>
+  /// Copies every setting (public field) of <paramref name="source"/> into this object, not its scene
+  /// or caches: how a per-frame or instrumented copy of a script's image function keeps the script's choices.
+  /// Subclasses with settings of their own extend it.
+  /// </summary>
+  public virtual void CopySettingsFrom(RayCasting source)
+  {
+    ArgumentNullException.ThrowIfNull(source);
+    Accel = source.Accel;
+    ReuseIntersections = source.ReuseIntersections;
+  }
+
   static readonly System.Collections.Concurrent.ConcurrentDictionary<(Type, string, Type), bool> overrides = new();
 
   /// <summary>

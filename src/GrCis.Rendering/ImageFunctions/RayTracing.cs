@@ -47,6 +47,22 @@ public class RayTracing : RayCasting
   public RayTracing(IRayScene? sc = null) : base(sc) =>
     occludedOverridden = Overrides(nameof(Occluded), typeof(RayTracing));
 
+  /// <inheritdoc/>
+  public override void CopySettingsFrom(RayCasting source)
+  {
+    base.CopySettingsFrom(source);
+    if (source is not RayTracing rt)
+      return;
+    MaxLevel = rt.MaxLevel;
+    MinImportance = rt.MinImportance;
+    DoShadows = rt.DoShadows;
+    DoReflections = rt.DoReflections;
+    DoRefractions = rt.DoRefractions;
+    DoRecursion = rt.DoRecursion;
+    TransparentShadows = rt.TransparentShadows;
+    FresnelRefraction = rt.FresnelRefraction;
+  }
+
   // A subclass's Occluded must see every shadow ray; otherwise the scratch at hand counts it.
   [NonSerialized] readonly bool occludedOverridden;
 
