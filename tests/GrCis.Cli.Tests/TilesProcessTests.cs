@@ -1,5 +1,4 @@
 using System;
-using System.Diagnostics;
 using System.IO;
 using System.Linq;
 using GrCis.TestSupport;
@@ -20,23 +19,7 @@ public class TilesProcessTests
     Assert.True(code == 0, error);
 
     // One job per part index, {} is the index (local jobs; --sshlogin spreads the same command over hosts).
-    var psi = new ProcessStartInfo(parallel)
-    {
-      WorkingDirectory = dir.Path,
-      RedirectStandardOutput = true,
-      RedirectStandardError = true,
-      RedirectStandardInput = true,
-      UseShellExecute = false,
-    };
-    foreach (string a in new[] { "--will-cite", "--halt", "now,fail=1", "-j", "3", GrcisProcess.Dotnet, "exec", GrcisProcess.Dll })
-      psi.ArgumentList.Add(a);
-    foreach (string a in render)
-      psi.ArgumentList.Add(a);
-    foreach (string a in new[] { "--tiles", "{}/3", "-o", "part{}.grcis-part", ":::", "0", "1", "2" })
-      psi.ArgumentList.Add(a);
-    using Process p = Process.Start(psi)!;
-    p.StandardInput.Close();
-    var (pcode, stdout, perror) = GrcisProcess.Finish(p);
+    var (pcode, stdout, perror) = GrcisProcess.RunParallel(parallel, dir.Path, 3, [.. render, "--tiles", "{}/3", "-o", "part{}.grcis-part"]);
     Assert.True(pcode == 0, $"parallel exited {pcode}: {perror}");
     Assert.Equal(3, stdout.Split('\n').Count(l => l.StartsWith("wrote ", StringComparison.Ordinal)));
 

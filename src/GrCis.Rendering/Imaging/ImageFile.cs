@@ -23,35 +23,24 @@ public static class ImageFile
   {
     if (!(gamma > 0.0) || double.IsInfinity(gamma))
       throw new ArgumentOutOfRangeException(nameof(gamma), gamma, "Gamma must be a positive finite number.");
-    byte[] bytes = Read(path);
-    return Wrap(path, () =>
+    return FileDecoding.Load(path, bytes =>
     {
       if (IsPfm(bytes))
         return ToRgb(PfmReader.Decode(bytes));
       if (IsHdr(bytes))
       {
-        ImageResultFloat hdr = ImageResultFloat.FromMemory(bytes, ColorComponents.RedGreenBlue);
+        ImageResultFloat hdr = Stb(() => ImageResultFloat.FromMemory(bytes, ColorComponents.RedGreenBlue));
         return new FloatImage(hdr.Width, hdr.Height, 3, hdr.Data);
       }
-      return ToLinear(DecodeRgb8(bytes), gamma);
+      return ToLinear(Stb(() => DecodeRgb8(bytes)), gamma);
     });
   }
 
   /// <summary>Loads an 8-bit file (PNG, JPEG, BMP, TGA, …) as RGB bytes, unchanged.</summary>
   /// <exception cref="InvalidDataException">Corrupt or unsupported file, or a float format (PFM, HDR).</exception>
-  public static Rgb8Image LoadRgb8(string path)
-  {
-    byte[] bytes = Read(path);
-    return Wrap(path, () => IsPfm(bytes) || IsHdr(bytes)
-      ? throw new InvalidDataException("a floating-point image; load it with ImageFile.Load")
-      : DecodeRgb8(bytes));
-  }
-
-  static byte[] Read(string path)
-  {
-    ArgumentException.ThrowIfNullOrEmpty(path);
-    return File.ReadAllBytes(path);
-  }
+  public static Rgb8Image LoadRgb8(string path) => FileDecoding.Load(path, bytes => IsPfm(bytes) || IsHdr(bytes)
+    ? throw new InvalidDataException("a floating-point image; load it with ImageFile.Load")
+    : Stb(() => DecodeRgb8(bytes)));
 
   /// <summary>Decodes an 8-bit file held in memory; StbImageSharp's own exception on bad data.</summary>
   internal static Rgb8Image DecodeRgb8(byte[] bytes)
@@ -60,19 +49,17 @@ public static class ImageFile
     return new Rgb8Image(r.Width, r.Height, r.Data);
   }
 
-  static T Wrap<T>(string path, Func<T> decode)
+  static T Stb<T>(Func<T> decode)
   {
     try
     {
       return decode();
     }
-    catch (Exception ex) when (ex is not OutOfMemoryException)
+    catch (Exception ex) when (ex is not (InvalidDataException or OutOfMemoryException))
     {
       // StbImageSharp reports bad data with plain Exception (its failure reason) or an index error.
-      string message = ex is InvalidDataException ? ex.Message
-        : ex.GetType() == typeof(Exception) ? $"corrupt or unsupported image ({ex.Message})"
-        : "corrupt or unsupported image";
-      throw new InvalidDataException($"{path}: {message}", ex);
+      throw new InvalidDataException(
+        ex.GetType() == typeof(Exception) ? $"corrupt or unsupported image ({ex.Message})" : "corrupt or unsupported image", ex);
     }
   }
 

@@ -49,19 +49,8 @@ public static class PfmReader
   }
 
   /// <exception cref="InvalidDataException">Not a PFM file, or truncated; the message starts with the path.</exception>
-  public static FloatImage Load(string path)
-  {
-    ArgumentException.ThrowIfNullOrEmpty(path);
-    byte[] bytes = File.ReadAllBytes(path);
-    try
-    {
-      return Decode(bytes);
-    }
-    catch (InvalidDataException ex)
-    {
-      throw new InvalidDataException($"{path}: {ex.Message}", ex);
-    }
-  }
+  public static FloatImage Load(string path) => FileDecoding.Load(path, b => Decode(b));
+
 
   static string Token(ReadOnlySpan<byte> file, ref int pos, string what)
   {

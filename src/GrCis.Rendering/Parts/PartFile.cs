@@ -46,19 +46,8 @@ public static class PartFile
 
   /// <summary>Reads a part: its header and its samples, checked against the layout.</summary>
   /// <exception cref="InvalidDataException">Not a part file, or truncated; the message starts with the path.</exception>
-  public static (PartHeader Header, float[] Samples) Load(string path)
-  {
-    ArgumentException.ThrowIfNullOrEmpty(path);
-    byte[] bytes = File.ReadAllBytes(path);
-    try
-    {
-      return Decode(bytes);
-    }
-    catch (InvalidDataException e)
-    {
-      throw new InvalidDataException($"{path}: {e.Message}", e);
-    }
-  }
+  public static (PartHeader Header, float[] Samples) Load(string path) => FileDecoding.Load(path, Decode);
+
 
   /// <summary>Copies a part's samples into the full-size <paramref name="image"/>.</summary>
   public static void Place(PartHeader header, float[] samples, FloatImage image)
