@@ -193,6 +193,21 @@ public class TilesMergeTests
   }
 
   [Fact]
+  public void Merge_needs_an_image_output_and_is_a_usage_error_without_one()
+  {
+    using var dir = new TempDirectory();
+    ThreeParts(dir);
+    string[] parts = ["p0.grcis-part", "p1.grcis-part", "p2.grcis-part"];
+    CliRun none = CliRun.Of(dir.Path, ["merge", .. parts]);
+    Assert.Equal(ExitCodes.Usage, none.ExitCode);
+    Assert.Contains("'--output' is required", Assert.Single(none.ErrorLines));
+    CliRun part = CliRun.Of(dir.Path, ["merge", .. parts, "-o", "all.grcis-part"]);
+    Assert.Equal(ExitCodes.Usage, part.ExitCode);
+    Assert.Contains("not a part file", Assert.Single(part.ErrorLines));
+    Assert.Equal(3, dir.AllFiles().Length);
+  }
+
+  [Fact]
   public void Part_without_output_name_gets_index_and_count_in_its_default_name()
   {
     using var dir = new TempDirectory();
