@@ -92,6 +92,7 @@ public static class Program
     {
       new RenderCommand().Build(env),
       new AnimateCommand().Build(env),
+      new MergeCommand().Build(env),
       ListCommand.Build(env),
       new InfoCommand().Build(env),
       BenchCommand.Build(env),

@@ -91,23 +91,7 @@ public class AnimateProcessTests : IClassFixture<OrbitBaseline>
 
     using var dir = new TempDirectory();
     // The recipe of docs/scale-out.md: one job per shard index, {} is the index.
-    var psi = new ProcessStartInfo(parallel)
-    {
-      WorkingDirectory = dir.Path,
-      RedirectStandardOutput = true,
-      RedirectStandardError = true,
-      RedirectStandardInput = true,
-      UseShellExecute = false,
-    };
-    foreach (string a in new[] { "--will-cite", "--halt", "now,fail=1", "-j", "3", GrcisProcess.Dotnet, "exec", GrcisProcess.Dll })
-      psi.ArgumentList.Add(a);
-    foreach (string a in OrbitBaseline.Args)
-      psi.ArgumentList.Add(a);
-    foreach (string a in new[] { "-o", "frames/o###.png", "-q", "--shard", "{}/3", ":::", "0", "1", "2" })
-      psi.ArgumentList.Add(a);
-    using Process p = Process.Start(psi)!;
-    p.StandardInput.Close();
-    var (code, stdout, error) = GrcisProcess.Finish(p);
+    var (code, stdout, error) = GrcisProcess.RunParallel(parallel, dir.Path, 3, [.. OrbitBaseline.Args, "-o", "frames/o###.png", "-q", "--shard", "{}/3"]);
     Assert.True(code == 0, $"parallel exited {code}: {error}");
     Assert.Equal(3, stdout.Split('\n').Count(l => l.StartsWith("wrote ", StringComparison.Ordinal)));
     AnimateRun.AssertSameFiles(baseline.Frames, AnimateRun.Snapshot(dir.File("frames")));

@@ -64,4 +64,30 @@ internal static class GrcisProcess
     using Process p = Start(workingDirectory, env, args);
     return Finish(p);
   }
+
+  /// <summary>
+  /// Runs <c>parallel --will-cite --halt now,fail=1 -j N dotnet exec grcis.dll ARGS ::: 0 … N−1</c>
+  /// (the recipes of docs/scale-out.md, with <c>{}</c> in <paramref name="args"/> standing for the index).
+  /// </summary>
+  public static (int Code, string Out, string Error) RunParallel(string parallel, string workingDirectory, int jobs, params string[] args)
+  {
+    var psi = new ProcessStartInfo(parallel)
+    {
+      WorkingDirectory = workingDirectory,
+      RedirectStandardOutput = true,
+      RedirectStandardError = true,
+      RedirectStandardInput = true,
+      UseShellExecute = false,
+    };
+    foreach (string a in new[] { "--will-cite", "--halt", "now,fail=1", "-j", jobs.ToString(), Dotnet, "exec", Dll })
+      psi.ArgumentList.Add(a);
+    foreach (string a in args)
+      psi.ArgumentList.Add(a);
+    psi.ArgumentList.Add(":::");
+    for (int i = 0; i < jobs; i++)
+      psi.ArgumentList.Add(i.ToString());
+    using Process p = Process.Start(psi)!;
+    p.StandardInput.Close();
+    return Finish(p);
+  }
 }

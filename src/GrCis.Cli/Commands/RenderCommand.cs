@@ -1,4 +1,7 @@
 using System;
+using System.Collections.Generic;
+using System.Linq;
+using GrCis.Cli.Animation;
 using System.CommandLine;
 using System.Globalization;
 using GrCis.Cli.Jobs;
@@ -7,6 +10,7 @@ using GrCis.Cli.ProgressViews;
 using GrCis.Cli.SceneSources;
 using GrCis.Scripting;
 using Rendering;
+using Rendering.Parts;
 
 namespace GrCis.Cli.Commands;
 
@@ -32,6 +36,12 @@ public sealed class RenderCommand
     Description = "png or pfm (linear float); default: from the output file's extension",
   };
 
+  readonly Option<string?> tiles = new("--tiles")
+  {
+    Description = "Render only part INDEX of COUNT (interleaved tiles) into a .grcis-part file for 'grcis merge'",
+    HelpName = "i/n",
+  };
+
   readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
   readonly ScriptOptions scriptOptions = new();
 
@@ -39,7 +49,7 @@ public sealed class RenderCommand
   {
     var cmd = new Command("render", "Render a still image of a scene")
     {
-      scene, output, format, quiet,
+      scene, output, format, tiles, quiet,
     };
     render.AddTo(cmd);
     scriptOptions.AddTo(cmd);
@@ -51,10 +61,11 @@ public sealed class RenderCommand
   {
     // Validate everything before any work so usage errors never leave files behind.
     RenderSettings settings = render.Read(parse);
+    ShardSpec? part = parse.GetValue(tiles) is string t ? ShardSpec.Parse(t, "--tiles") : null;
 
     ISceneSource source = scriptOptions.Resolve(parse, parse.GetValue(scene), env);
     using var scriptHost = source as IDisposable;
-    OutputTarget target = OutputTarget.Resolve(parse.GetValue(output), parse.GetValue(format), source.OutputStem, env.WorkingDirectory);
+    OutputTarget target = ResolveTarget(parse, source, part, env);
     target.CheckWritable();
 
     // Command line, then the script's context values, then the defaults.
@@ -74,7 +85,8 @@ public sealed class RenderCommand
     try
     {
       result = view.Run($"render {source.DisplayName}",
-        report => RenderJob.Run(sc, settings, setup.ImageFunction, setup.Synthesizer, report, env.Cancel));
+        report => RenderJob.Run(sc, settings, setup.ImageFunction, setup.Synthesizer, report, env.Cancel,
+          part is ShardSpec p ? PartLayout.Tiles(settings.Size.Width, settings.Size.Height, p.Index, p.Count) : null));
     }
     catch (Exception e) when (source is ScriptSceneSource script && script.WithScriptLine(e.InnerException ?? e) is ScriptRuntimeException located)
     {
@@ -88,11 +100,34 @@ public sealed class RenderCommand
       return ExitCodes.Cancelled;
     }
 
-    target.Save(result.Image, settings.Gamma);
-    env.Out.WriteLine(Summary(target, settings, result));
+    if (part is ShardSpec shard)
+      target.SavePart(StillPart.Header(source, setup, shard, Modules(parse, env), result.SamplesPerPixel), result.Image);
+    else
+      target.Save(result.Image, settings.Gamma);
+    env.Out.WriteLine(Summary(target, settings, result) + (part is ShardSpec sp ? $", part {sp} (merge with 'grcis merge')" : ""));
     return ExitCodes.Success;
   }
 
+  /// <summary><c>-o</c> and <c>--format</c>; with <c>--tiles</c> the output is a part file (default <c>{stem}-{i}of{n}.grcis-part</c>).</summary>
+  OutputTarget ResolveTarget(ParseResult parse, ISceneSource source, ShardSpec? part, CliEnvironment env)
+  {
+    string? o = parse.GetValue(output);
+    if (part is ShardSpec p)
+    {
+      if (parse.GetValue(format) != null)
+        throw new UsageException("--tiles writes a .grcis-part file; --format applies to 'grcis merge'");
+      o ??= $"{source.OutputStem}-{p.Index}of{p.Count}{PartFile.Extension}";
+    }
+    OutputTarget target = OutputTarget.Resolve(o, parse.GetValue(format), source.OutputStem, env.WorkingDirectory);
+    if (part != null && target.Format != OutputFormat.Part)
+      throw new UsageException($"--tiles writes a part file: name it *{PartFile.Extension} (got '{o}'); 'grcis merge' makes the .png or .pfm");
+    if (part == null && target.Format == OutputFormat.Part)
+      throw new UsageException($"a {PartFile.Extension} file is written only with --tiles i/n");
+    return target;
+  }
+
+  IEnumerable<string> Modules(ParseResult parse, CliEnvironment env) =>
+    (parse.GetValue(scriptOptions.Modules) ?? []).Select(m => System.IO.Path.GetFullPath(m, env.WorkingDirectory));
 
   static string Summary(OutputTarget target, RenderSettings s, RenderResult r)
   {

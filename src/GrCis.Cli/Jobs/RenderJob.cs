@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Diagnostics;
 using System.Threading;
 using Rendering;
@@ -28,14 +29,15 @@ public static class RenderJob
     Run(scene, settings, null, null, progress, cancel);
 
   /// <summary>Renders with a given image function and renderer (a scene script's), or the defaults where null.</summary>
+  /// <param name="tiles">Only these tiles (one part of a scaled-out still); null = the whole image.</param>
   public static RenderResult Run(IRayScene scene, RenderSettings settings, IImageFunction? imageFunction, ImageSynthesizer? synthesizer,
-                                 Action<RenderProgress>? progress, CancellationToken cancel)
+                                 Action<RenderProgress>? progress, CancellationToken cancel, IReadOnlyList<Tile>? tiles = null)
   {
     ImageSynthesizer renderer = synthesizer ?? CreateSynthesizer(settings);
     IImageFunction function = imageFunction ?? CreateImageFunction(scene, settings);
     if (function is RayCasting rc)
       rc.Accel = settings.Accel;   // a script's own RayTracing honours --accel too
-    var options = new RenderOptions { Threads = settings.Threads, Seed = settings.Seed };
+    var options = new RenderOptions { Threads = settings.Threads, Seed = settings.Seed, Tiles = tiles };
 
     var clock = Stopwatch.StartNew();
     var image = TileRenderer.Render(scene, function, renderer, options, progress, cancel);

@@ -8,4 +8,7 @@ public enum OutputFormat
 
   /// <summary>Linear 32-bit float Portable Float Map (no gamma).</summary>
   Pfm,
+
+  /// <summary>One part of a scaled-out still (<c>render --tiles i/n</c>), for <c>grcis merge</c>.</summary>
+  Part,
 }

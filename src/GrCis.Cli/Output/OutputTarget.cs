@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using Rendering.Imaging;
+using Rendering.Parts;
 
 namespace GrCis.Cli.Output;
 
@@ -43,6 +44,7 @@ public sealed class OutputTarget
     {
       ".png" => new OutputTarget(full, OutputFormat.Png),
       ".pfm" => new OutputTarget(full, OutputFormat.Pfm),
+      PartFile.Extension => new OutputTarget(full, OutputFormat.Part),
       "" => throw new UsageException($"output file '{output}' has no extension; use .png or .pfm (or --format)"),
       _ => throw new UsageException($"cannot write '{ext}' files ('{output}'); use .png or .pfm (or --format)"),
     };
@@ -85,14 +87,23 @@ public sealed class OutputTarget
 
   /// <summary>Writes the image: PNG with display gamma and GrCis's truncating quantization, or linear PFM.</summary>
   /// <exception cref="CliFailure">The save failed; any existing file is unchanged and no temporary file remains.</exception>
-  public void Save(FloatImage image, double gamma)
+  public void Save(FloatImage image, double gamma) => Saving(() =>
+  {
+    if (Format == OutputFormat.Pfm)
+      PfmWriter.Save(FullPath, image);
+    else
+      PngFile.Save(FullPath, Rgb8Image.FromFloatImage(image, gamma, Quantization.Truncate));
+  });
+
+  /// <summary>Writes the tiles of one part (<c>render --tiles</c>) with its header.</summary>
+  /// <exception cref="CliFailure">The save failed; any existing file is unchanged and no temporary file remains.</exception>
+  public void SavePart(PartHeader header, FloatImage image) => Saving(() => PartFile.Save(FullPath, header, image));
+
+  void Saving(Action save)
   {
     try
     {
-      if (Format == OutputFormat.Pfm)
-        PfmWriter.Save(FullPath, image);
-      else
-        PngFile.Save(FullPath, Rgb8Image.FromFloatImage(image, gamma, Quantization.Truncate));
+      save();
     }
     catch (ImageSaveException e)
     {

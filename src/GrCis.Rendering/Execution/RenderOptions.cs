@@ -15,5 +15,8 @@ public sealed record RenderOptions
   /// <summary>Frame number, mixed into the per-pixel seeds so frames differ.</summary>
   public int Frame { get; init; }
 
+  /// <summary>Only these tiles (a part of a scaled-out still, see <see cref="Parts.PartLayout"/>); null = every tile.</summary>
+  public System.Collections.Generic.IReadOnlyList<Tile>? Tiles { get; init; }
+
   public int EffectiveThreads => Threads > 0 ? Threads : System.Environment.ProcessorCount;
 }

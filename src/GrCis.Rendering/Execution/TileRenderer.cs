@@ -73,7 +73,7 @@ public static class TileRenderer
     if (imageFunction is RayCasting rc)
       rc.Prepare(scene);
 
-    List<Tile> tiles = MakeTiles(width, height, options.TileSize);
+    IReadOnlyList<Tile> tiles = options.Tiles ?? MakeTiles(width, height, options.TileSize);
     int next = -1, done = 0;
     int threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tiles.Count));
     var failure = new EarliestFailure();

@@ -19,18 +19,7 @@ public static class PngFile
   public static void Save(string path, FloatImage image, double gamma = 1.0, PngEncoder? encoder = null) =>
     Save(path, Rgb8Image.FromFloatImage(image, gamma), encoder);
 
-  /// <exception cref="InvalidDataException">The file is not a PNG this decoder supports.</exception>
-  public static Rgb8Image Load(string path)
-  {
-    ArgumentException.ThrowIfNullOrEmpty(path);
-    byte[] bytes = File.ReadAllBytes(path);
-    try
-    {
-      return PngDecoder.Decode(bytes);
-    }
-    catch (InvalidDataException ex)
-    {
-      throw new InvalidDataException($"{path}: {ex.Message}", ex);
-    }
-  }
+  /// <summary>Reads a PNG (or another 8-bit format, see <see cref="ImageFile.LoadRgb8"/>) as RGB bytes.</summary>
+  /// <exception cref="InvalidDataException">Corrupt or unsupported file; the message starts with the path.</exception>
+  public static Rgb8Image Load(string path) => ImageFile.LoadRgb8(path);
 }
