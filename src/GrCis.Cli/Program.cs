@@ -15,21 +15,12 @@ public static class Program
 {
   public static int Main(string[] args)
   {
-    using var cts = new CancellationTokenSource();
-    Console.CancelKeyPress += (_, e) =>
-    {
-      // First Ctrl+C stops the render cleanly (nothing is written); a second one kills the process.
-      if (!cts.IsCancellationRequested)
-      {
-        e.Cancel = true;
-        cts.Cancel();
-      }
-    };
+    using var interrupt = new InterruptGuard(Console.Error);
     var env = new CliEnvironment(Console.Out, Console.Error)
     {
       Interactive = !Console.IsErrorRedirected && !Console.IsOutputRedirected &&
                     Environment.GetEnvironmentVariable("TERM") is not "dumb",
-      Cancel = cts.Token,
+      Cancel = interrupt.Token,
     };
     return Run(args, env);
   }

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Concurrent;
 using System.IO;
 
 namespace Rendering.Imaging;
@@ -9,6 +10,15 @@ namespace Rendering.Imaging;
 /// </summary>
 internal static class AtomicFile
 {
+  // Temporary files being written: removed if the process exits mid-save (Ctrl+C's forced exit).
+  static readonly ConcurrentDictionary<string, byte> pending = new();
+
+  static AtomicFile() => AppDomain.CurrentDomain.ProcessExit += (_, _) =>
+  {
+    foreach (string temp in pending.Keys)
+      TryDelete(temp);
+  };
+
   public static void Write(string path, Action<Stream> write)
   {
     ArgumentException.ThrowIfNullOrEmpty(path);
@@ -16,6 +26,7 @@ internal static class AtomicFile
 
     // Same directory as the target so File.Move is a rename on one file system.
     string temp = path + ".tmp-" + Guid.NewGuid().ToString("N")[..12];
+    pending.TryAdd(temp, 0);
     try
     {
       using (FileStream fs = new(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None))
@@ -31,6 +42,10 @@ internal static class AtomicFile
       if (ex is IOException or UnauthorizedAccessException or NotSupportedException)
         throw new ImageSaveException(path, ex);
       throw;
+    }
+    finally
+    {
+      pending.TryRemove(temp, out _);
     }
   }
 

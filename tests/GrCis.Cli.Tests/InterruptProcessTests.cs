@@ -1,0 +1,89 @@
+using System;
+using System.Diagnostics;
+using System.IO;
+using System.Linq;
+using System.Threading;
+
+namespace GrCis.Cli.Tests;
+
+/// <summary>
+/// Ctrl+C (SIGINT) ends <c>grcis</c> promptly with exit code 130 whatever a scene script does:
+/// a script stuck in a loop while it builds the scene, or a class of the script stuck while rendering,
+/// never looks at the cancellation token; the process exits anyway, writes one error line and
+/// leaves no image and no temporary file.
+/// </summary>
+public class InterruptProcessTests
+{
+  const string Camera = """
+    scene.Camera = new StaticCamera(new Vector3d(0, 0, -5), new Vector3d(0, 0, 1), 60.0);
+    scene.Sources = new LinkedList<ILightSource>();
+    scene.BackgroundColor = new double[] { 0.1, 0.2, 0.3 };
+    """;
+
+  /// <summary>Writes the marker file, then never returns.</summary>
+  const string StuckWhileBuilding = Camera + """
+
+    System.IO.File.WriteAllText("started", "");
+    while (true) { }
+    """;
+
+  /// <summary>A texture declared in the script that never returns once rendering reaches it.</summary>
+  const string StuckWhileRendering = """
+    class Stuck : ITexture
+    {
+      public long Apply(Intersection inter)
+      {
+        System.IO.File.WriteAllText("started", "");
+        while (true) { }
+      }
+    }
+    """ + Camera + """
+
+    var root = new CSGInnerNode(SetOperation.Union);
+    var s = new Sphere();
+    s.SetAttribute(PropertyName.TEXTURE, new Stuck());
+    root.InsertChild(s, Matrix4d.Identity);
+    scene.Intersectable = root;
+    """;
+
+  [UnixFact]
+  public void Sigint_ends_a_script_stuck_while_building_the_scene() => AssertInterrupted(StuckWhileBuilding, "render");
+
+  [UnixFact]
+  public void Sigint_ends_a_script_stuck_while_rendering() => AssertInterrupted(StuckWhileRendering, "render");
+
+  [UnixFact]
+  public void Sigint_ends_an_animation_whose_script_is_stuck() => AssertInterrupted(StuckWhileRendering, "animate");
+
+  static void AssertInterrupted(string script, string command)
+  {
+    using var dir = new TempDirectory();
+    File.WriteAllText(dir.File("stuck.cs"), script);
+    string output = command == "render" ? "out.png" : "frames/f##.png";
+    using Process p = GrcisProcess.Start(dir.Path, null, command, "stuck.cs", "-o", output, "--size", "16x12", "-q");
+
+    var clock = Stopwatch.StartNew();
+    while (!File.Exists(dir.File("started")) && !p.HasExited && clock.Elapsed < TimeSpan.FromMinutes(2))
+      Thread.Sleep(20);
+    if (p.HasExited)
+      Assert.Fail("grcis ended before the script got stuck: " + p.StandardError.ReadToEnd());
+    Thread.Sleep(200);   // inside the loop
+
+    clock.Restart();
+    using (Process kill = Process.Start("kill", ["-INT", p.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]))
+      kill.WaitForExit();
+    bool ended = p.WaitForExit(15_000);
+    TimeSpan took = clock.Elapsed;
+    if (!ended)
+      p.Kill(entireProcessTree: true);
+    Assert.True(ended, "grcis still running 15 s after SIGINT");
+    Assert.True(took < InterruptGuard.Grace + TimeSpan.FromSeconds(3), $"SIGINT took {took.TotalSeconds:0.0} s");
+
+    Assert.Equal(ExitCodes.Cancelled, p.ExitCode);
+    string[] errors = p.StandardError.ReadToEnd().Split('\n', StringSplitOptions.RemoveEmptyEntries);
+    string line = Assert.Single(errors);
+    Assert.StartsWith("grcis: error: interrupted", line);
+    Assert.DoesNotContain(Directory.GetFiles(dir.Path, "*", SearchOption.AllDirectories),
+      f => f.EndsWith(".png", StringComparison.Ordinal) || f.Contains(".tmp-", StringComparison.Ordinal));
+  }
+}
