@@ -17,6 +17,11 @@ public static class ScriptErrors
   /// <summary>Writes the error to stderr and returns the exit code.</summary>
   public static int Report(Exception e, CliEnvironment env)
   {
+    if (e is ScriptCompilationException { Diagnostics: [{ Id: ScriptDiagnostic.EmptyScriptId }] } empty)
+    {
+      env.Error.WriteLine($"grcis: error: scene script '{empty.Path}' is empty (only whitespace or comments): it must build the scene (scene.Intersectable, scene.Camera, scene.Sources)");
+      return ExitCodes.Failure;
+    }
     if (e is ScriptCompilationException ce)
     {
       int errors = 0;

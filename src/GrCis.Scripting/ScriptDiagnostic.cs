@@ -3,6 +3,9 @@ namespace GrCis.Scripting;
 /// <summary>One compiler message about a script or module source file (1-based line and column).</summary>
 public sealed class ScriptDiagnostic
 {
+  /// <summary>Id of the error given for a script with no code at all.</summary>
+  public const string EmptyScriptId = "GRCIS002";
+
   public ScriptDiagnostic(string path, int line, int column, string severity, string id, string message)
   {
     Path = path;

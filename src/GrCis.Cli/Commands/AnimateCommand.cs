@@ -117,6 +117,7 @@ public sealed class AnimateCommand
     // Command line, then the script's context values (size, spp, range, …), then the defaults.
     SceneSetup setup = SceneSetup.Create(source, settings, render.Given(parse), null);
     settings = setup.Settings;
+    MemoryBudget.Check(settings.Size);
     foreach (string note in setup.Notes)
       env.Error.WriteLine("grcis: note: " + note);
     ISceneTiming? timing = setup.Script is { } run ? AnimationPlan.TimingOf(run) : source as ISceneTiming;

@@ -71,6 +71,7 @@ public sealed class RenderCommand
     // Command line, then the script's context values, then the defaults.
     SceneSetup setup = SceneSetup.Create(source, settings, render.Given(parse), scriptOptions.Time(parse));
     settings = setup.Settings;
+    MemoryBudget.Check(settings.Size);
     foreach (string note in setup.Notes)
       env.Error.WriteLine("grcis: note: " + note);
 

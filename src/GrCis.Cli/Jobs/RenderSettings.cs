@@ -8,6 +8,9 @@ public sealed record RenderSettings
 {
   public ImageSize Size { get; init; } = ImageSize.Default;
 
+  /// <summary>Upper limit of samples per pixel: a 256×256 grid (Blender's default final render takes 4096).</summary>
+  public const int MaxSamplesPerPixel = 65536;
+
   /// <summary>Samples per pixel: 1 = pixel centre; more = an n×n jittered grid (rounded up to a square).</summary>
   public int SamplesPerPixel { get; init; } = 1;
 
@@ -34,6 +37,8 @@ public sealed record RenderSettings
   {
     if (SamplesPerPixel < 1)
       throw new UsageException($"invalid --spp {SamplesPerPixel}: must be at least 1");
+    if (SamplesPerPixel > MaxSamplesPerPixel)
+      throw new UsageException($"invalid --spp {SamplesPerPixel}: at most {MaxSamplesPerPixel} (a 256x256 grid per pixel)");
     if (!(Jitter >= 0.0 && Jitter <= 1.0))
       throw new UsageException($"invalid --jitter {Jitter}: must be between 0 and 1");
     if (Threads < 0)

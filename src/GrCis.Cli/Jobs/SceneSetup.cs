@@ -77,8 +77,8 @@ public sealed class SceneSetup
     }
     if (!given.SamplesPerPixel && run.SuperSampling is int spp)
     {
-      if (spp < 1)
-        throw new CliFailure($"{name}: the script asks for supersampling {spp}; it must be at least 1");
+      if (spp < 1 || spp > RenderSettings.MaxSamplesPerPixel)
+        throw new CliFailure($"{name}: the script asks for supersampling {spp}; it must be 1 to {RenderSettings.MaxSamplesPerPixel}");
       s = s with { SamplesPerPixel = spp };
     }
 

@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
-using System.IO.Compression;
 using OpenTK.Mathematics;
 
 namespace Rendering;
@@ -29,10 +28,17 @@ public class WavefrontObj
   {
     ArgumentException.ThrowIfNullOrEmpty(fileName);
     ArgumentNullException.ThrowIfNull(scene);
-    using Stream file = File.OpenRead(fileName);
-    using Stream data = fileName.EndsWith(".gz", StringComparison.OrdinalIgnoreCase)
-      ? new GZipStream(file, CompressionMode.Decompress)
-      : file;
+    Stream file = File.OpenRead(fileName);
+    Stream data;
+    try
+    {
+      data = fileName.EndsWith(".gz", StringComparison.OrdinalIgnoreCase) ? new CheckedGzipStream(file) : file;
+    }
+    catch (InvalidDataException e)
+    {
+      file.Dispose();
+      throw new MeshFormatException(fileName, 1, e.Message, e);
+    }
     using var reader = new StreamReader(data);
     scene.Reset();
     return Read(reader, scene, Matrix4d.Identity, fileName);
@@ -55,6 +61,19 @@ public class WavefrontObj
     return Read(reader, scene, m, sourceName);
   }
 
+  /// <summary>The next line; damaged compressed data is reported at the line where it was found.</summary>
+  static string? NextLine(TextReader reader, string name, int linesRead)
+  {
+    try
+    {
+      return reader.ReadLine();
+    }
+    catch (InvalidDataException e)
+    {
+      throw new MeshFormatException(name, linesRead + 1, "corrupt compressed data: " + e.Message, e);
+    }
+  }
+
   int Read(TextReader reader, SceneBrep scene, Matrix4d m, string name)
   {
     var positions = new List<int>(1024);        // OBJ position index → scene vertex
@@ -68,7 +87,7 @@ public class WavefrontObj
     int lineNo = 0;
 
     string? line;
-    while ((line = reader.ReadLine()) != null)
+    while ((line = NextLine(reader, name, lineNo)) != null)
     {
       lineNo++;
       int hash = line.IndexOf('#');

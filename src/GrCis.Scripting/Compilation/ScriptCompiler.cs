@@ -39,6 +39,10 @@ internal static class ScriptCompiler
   public static CompiledScript CompileScript(string path, string source, string key, IReadOnlyList<ScriptModule> modules, bool optimize)
   {
     SyntaxTree tree = CSharpSyntaxTree.ParseText(SourceText.From(source, Encoding.UTF8), scriptParseOptions, path);
+    // Nothing but whitespace and comments: say so instead of an empty list of errors.
+    if (!tree.GetRoot().ChildNodes().Any())
+      throw new ScriptCompilationException(path, new[] { new ScriptDiagnostic(path, 1, 1, "error", ScriptDiagnostic.EmptyScriptId,
+        "the scene script is empty (only whitespace or comments); it must build the scene: set scene.Intersectable, scene.Camera, scene.Sources") });
     var options = new CSharpCompilationOptions(
       OutputKind.DynamicallyLinkedLibrary,
       usings: DefaultImports,
