@@ -14,25 +14,39 @@ public static class ScriptErrors
   public static bool Handles(Exception e) =>
     e is ScriptCompilationException || Runtime(e) != null;
 
+  /// <summary>Compiler errors printed at most (all warnings are).</summary>
+  public const int MaxErrorsShown = 25;
+
   /// <summary>Writes the error to stderr and returns the exit code.</summary>
   public static int Report(Exception e, CliEnvironment env)
   {
-    if (e is ScriptCompilationException { Diagnostics: [{ Id: ScriptDiagnostic.EmptyScriptId }] } empty)
+    if (e is ScriptCompilationException { Diagnostics: [{ Id: ScriptDiagnostic.EmptyScriptId or ScriptDiagnostic.BinaryScriptId } only] } whole)
     {
-      env.Error.WriteLine($"grcis: error: scene script '{empty.Path}' is empty (only whitespace or comments): it must build the scene (scene.Intersectable, scene.Camera, scene.Sources)");
+      // Nothing the compiler could point at: one line about the file.
+      string why = only.Id == ScriptDiagnostic.EmptyScriptId
+        ? "is empty (only whitespace or comments): it must build the scene (scene.Intersectable, scene.Camera, scene.Sources)"
+        : "is not a C# scene script: " + only.Message[(only.Message.IndexOf(':', StringComparison.Ordinal) + 2)..];
+      env.Error.WriteLine($"grcis: error: scene script '{whole.Path}' {why}");
       return ExitCodes.Failure;
     }
     if (e is ScriptCompilationException ce)
     {
-      int errors = 0;
+      int errors = 0, shown = 0;
       foreach (ScriptDiagnostic d in ce.Diagnostics)
       {
-        env.Error.WriteLine(d.ToString());
+        // The first errors matter; hundreds (a file that is not C#) would bury them.
+        if (!d.IsError || shown < MaxErrorsShown)
+        {
+          env.Error.WriteLine(d.ToString());
+          if (d.IsError)
+            shown++;
+        }
         if (d.IsError)
           errors++;
       }
       string what = ce.Path.EndsWith(".cs", StringComparison.OrdinalIgnoreCase) ? "scene script" : "module";
-      env.Error.WriteLine($"grcis: error: {what} '{ce.Path}' did not compile ({errors} error{(errors == 1 ? "" : "s")})");
+      string hidden = errors > shown ? $", the first {shown} shown" : "";
+      env.Error.WriteLine($"grcis: error: {what} '{ce.Path}' did not compile ({errors} error{(errors == 1 ? "" : "s")}{hidden})");
       return ExitCodes.Failure;
     }
 

@@ -6,6 +6,9 @@ public sealed class ScriptDiagnostic
   /// <summary>Id of the error given for a script with no code at all.</summary>
   public const string EmptyScriptId = "GRCIS002";
 
+  /// <summary>Id of the error given for a file that is not text (a NUL byte).</summary>
+  public const string BinaryScriptId = "GRCIS003";
+
   public ScriptDiagnostic(string path, int line, int column, string severity, string id, string message)
   {
     Path = path;

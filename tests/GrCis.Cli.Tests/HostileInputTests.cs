@@ -157,4 +157,61 @@ public class HostileInputTests
     CliRun run = RenderMesh(dir, "ok.obj.gz");
     Assert.True(run.ExitCode == 0, run.Error);
   }
+
+  [UnixTheory]
+  [InlineData("/dev/full")]
+  [InlineData("/dev/null")]
+  public void Device_as_output_is_refused_and_left_in_place(string device)
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "render", "--size", "8x6", "-o", device, "--format", "png", "-q");
+    Assert.Equal(ExitCodes.Failure, run.ExitCode);
+    Assert.Equal($"grcis: error: cannot write '{device}': it is a device, not a file (images are saved through a temporary file and a rename, which would replace it)", Assert.Single(run.ErrorLines));
+    Assert.Equal(0, new FileInfo(device).Length);   // still the device (a saved PNG would have bytes)
+  }
+
+  [UnixFact]
+  public void Link_to_a_device_as_output_is_refused()
+  {
+    using var dir = new TempDirectory();
+    File.CreateSymbolicLink(dir.File("out.png"), "/dev/null");
+    CliRun run = CliRun.Of(dir.Path, "render", "--size", "8x6", "-o", "out.png", "-q");
+    Assert.Equal(ExitCodes.Failure, run.ExitCode);
+    Assert.Contains("it is a device, not a file", Assert.Single(run.ErrorLines));
+    Assert.Equal("/dev/null", new FileInfo(dir.File("out.png")).LinkTarget);
+  }
+
+  [Fact]
+  public void Binary_file_as_script_is_one_line_not_hundreds_of_errors()
+  {
+    using var dir = new TempDirectory();
+    byte[] data = new byte[4096];
+    new Random(5).NextBytes(data);
+    data[100] = 0;
+    File.WriteAllBytes(dir.File("photo.cs"), data);
+    AssertRejected(CliRun.Of(dir.Path, "render", "photo.cs", "-o", "x.png", "-q"), dir, ExitCodes.Failure,
+      "'" + dir.File("photo.cs") + "' is not a C# scene script: it holds binary data");
+  }
+
+  [Fact]
+  public void Many_compile_errors_show_the_first_ones_and_count_all()
+  {
+    using var dir = new TempDirectory();
+    File.WriteAllText(dir.File("typos.cs"), string.Concat(Enumerable.Repeat("int x = ;\n", 40)));
+    CliRun run = CliRun.Of(dir.Path, "render", "typos.cs", "-o", "x.png", "-q");
+    Assert.Equal(ExitCodes.Failure, run.ExitCode);
+    Assert.Equal(ScriptErrors.MaxErrorsShown, run.ErrorLines.Count(l => l.Contains(": error CS", StringComparison.Ordinal)));
+    Assert.Matches(@"^grcis: error: scene script '.*typos\.cs' did not compile \((\d+) errors, the first 25 shown\)$", run.ErrorLines[^1]);
+    Assert.DoesNotContain(dir.AllFiles(), f => f.EndsWith(".png", StringComparison.Ordinal));
+  }
+
+  [Fact]
+  public void Directory_as_script_is_a_usage_error_that_says_so()
+  {
+    using var dir = new TempDirectory();
+    Directory.CreateDirectory(dir.File("scenes.cs"));
+    CliRun run = CliRun.Of(dir.Path, "render", "scenes.cs", "-o", "x.png", "-q");
+    Assert.Equal(ExitCodes.Usage, run.ExitCode);
+    Assert.Equal("grcis: error: scene script 'scenes.cs' is a directory; give a .cs file (a folder of classes is a --module)", Assert.Single(run.ErrorLines));
+  }
 }

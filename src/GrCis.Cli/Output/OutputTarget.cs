@@ -65,6 +65,8 @@ public sealed class OutputTarget
   {
     if (Directory.Exists(FullPath))
       throw new CliFailure($"cannot write '{FullPath}': it is a directory");
+    if (IsDevice(FullPath))
+      throw new CliFailure($"cannot write '{FullPath}': it is a device, not a file (images are saved through a temporary file and a rename, which would replace it)");
     string? dir = Path.GetDirectoryName(FullPath);
     if (string.IsNullOrEmpty(dir) || !Directory.Exists(dir))
       throw new CliFailure($"cannot write '{FullPath}': directory '{dir}' does not exist");
@@ -83,6 +85,27 @@ public sealed class OutputTarget
     {
       TryDelete(probe);
     }
+  }
+
+  /// <summary>
+  /// A path in /dev or /proc, or a link to one (/dev/null, /dev/stdout): .NET cannot tell a device from a
+  /// file, and as root the atomic rename would put a regular file in the device's place.
+  /// </summary>
+  static bool IsDevice(string path)
+  {
+    if (OperatingSystem.IsWindows())
+      return false;
+    string target = path;
+    try
+    {
+      if (new FileInfo(path).ResolveLinkTarget(returnFinalTarget: true) is FileSystemInfo final)
+        target = final.FullName;
+    }
+    catch (IOException)
+    {
+      // A broken or looping link: judge the path itself.
+    }
+    return target.StartsWith("/dev/", StringComparison.Ordinal) || target.StartsWith("/proc/", StringComparison.Ordinal);
   }
 
   /// <summary>Writes the image: PNG with display gamma and GrCis's truncating quantization, or linear PFM.</summary>

@@ -59,6 +59,8 @@ public sealed class SceneResolver
   ISceneSource ResolveScript(string spec, string? param, IReadOnlyList<string> modules)
   {
     string path = Path.GetFullPath(spec, workingDirectory);
+    if (Directory.Exists(path))
+      throw new UsageException($"scene script '{spec}' is a directory; give a .cs file (a folder of classes is a --module)");
     if (!File.Exists(path))
       throw new UsageException($"scene script '{spec}' not found (looked for '{path}')");
     var dirs = new List<string>(modules.Count);

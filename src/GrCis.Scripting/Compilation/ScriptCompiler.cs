@@ -38,6 +38,10 @@ internal static class ScriptCompiler
 
   public static CompiledScript CompileScript(string path, string source, string key, IReadOnlyList<ScriptModule> modules, bool optimize)
   {
+    int nul = source.IndexOf('\0', StringComparison.Ordinal);
+    if (nul >= 0)
+      throw new ScriptCompilationException(path, new[] { new ScriptDiagnostic(path, 1, 1, "error", ScriptDiagnostic.BinaryScriptId,
+        $"the file is not a C# scene script: it holds binary data (a NUL character at offset {nul})") });
     SyntaxTree tree = CSharpSyntaxTree.ParseText(SourceText.From(source, Encoding.UTF8), scriptParseOptions, path);
     // Nothing but whitespace and comments: say so instead of an empty list of errors.
     if (!tree.GetRoot().ChildNodes().Any())
