@@ -148,6 +148,17 @@ sealed class MainForm : Form
     base.OnLoad(e);
   }
 
+  protected override async void OnShown(EventArgs e)
+  {
+    base.OnShown(e);
+    if (controller.RenderTo is not string target)
+      return;
+    // -render-to: exactly what Render then Save image do, then close.
+    await RenderAsync();
+    controller.SaveImage(target);
+    Close();
+  }
+
   void FillScenes()
   {
     updating = true;

@@ -6,7 +6,7 @@ using GrCis.Interactive;
 namespace GrCis.Demo.WinForms;
 
 /// <summary>
-/// <c>grcis-demo [-dir DIR]… [-scene FILE]… [-nodefault]</c>: GrCis's ray-tracing demo window.
+/// <c>grcis-demo [-dir DIR]… [-scene FILE]… [-nodefault] [-render-to FILE]</c>: GrCis's ray-tracing demo window.
 /// Everything but the drawing lives in <see cref="DemoController"/> (GrCis.Interactive).
 /// </summary>
 static class Program

@@ -38,8 +38,11 @@ public sealed class DemoController : IDisposable
       problems.Add(e);
     var catalog = new SceneCatalog(evaluator);
     SceneEntry? first = catalog.AddFromCommandLine(commandLine, problems);
-    return new DemoController(catalog) { Selected = first };
+    return new DemoController(catalog) { Selected = first, RenderTo = commandLine.RenderTo };
   }
+
+  /// <summary>From <c>-render-to FILE</c>: the window renders the selected scene at start, saves it here and closes.</summary>
+  public string? RenderTo { get; init; }
 
   public RenderSettings Settings { get; set; } = new();
 

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Linq;
 using Rendering;
 
@@ -6,6 +7,17 @@ namespace GrCis.Interactive.Tests;
 
 public class SceneCatalogTests
 {
+  [Fact]
+  public void Render_to_switch_is_parsed_and_reaches_the_controller()
+  {
+    var cl = DemoCommandLine.Parse(new[] { "-render-to", "out.png", "-nodefault" });
+    Assert.Equal("out.png", cl.RenderTo);
+    Assert.Empty(cl.Errors);
+    Assert.Contains("-render-to needs a path", Assert.Single(DemoCommandLine.Parse(new[] { "-render-to" }).Errors));
+    using var controller = DemoController.FromCommandLine(new[] { "-nodefault", "--render-to", "x.png" }, null, new List<string>());
+    Assert.Equal("x.png", controller.RenderTo);
+  }
+
   [Fact]
   public void Command_line_reads_dir_scene_and_nodefault_like_grcis()
   {
