@@ -6,6 +6,7 @@ namespace GrCis.Bench;
 /// <summary>
 /// <c>dotnet run -c Release -- quick [...]</c>: Stopwatch scene timings (fast vs faithful path);
 /// <c>pngsize FILE…</c>: PNG sizes of both encoders;
+/// <c>soak [--renders N] [--csv FILE]</c>: memory over many edit-and-render cycles in one process;
 /// anything else goes to BenchmarkDotNet (e.g. <c>--filter *Kernel*</c>).
 /// </summary>
 public static class Program
@@ -16,6 +17,8 @@ public static class Program
       return Probe.Run();
     if (args.Length > 0 && args[0] == "pngsize")
       return PngSizes.Run(args[1..]);
+    if (args.Length > 0 && args[0] == "soak")
+      return Soak.Run(args[1..]);
     if (args.Length > 0 && args[0] == "quick")
       return QuickRun.Run(args[1..]);
     BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);

@@ -47,7 +47,13 @@ public static class Program
         EnableDefaultExceptionHandler = false,
         ProcessTerminationTimeout = null,
       };
+      // A script stuck in a loop while it builds the scene obeys Ctrl+C too (see Interruption).
+      using Interruption.Scope interruption = Interruption.Use(env.Cancel);
       return parse.Invoke(config);
+    }
+    catch (OperationCanceledException) when (env.Cancel.IsCancellationRequested)
+    {
+      return Fail(env, ExitCodes.Cancelled, "cancelled while the scene script ran; nothing written");
     }
     catch (Exception e) when (ScriptErrors.Handles(e))
     {

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Threading;
 using System.Threading.Tasks;
 using Rendering;
+using Rendering.Execution;
 
 namespace GrCis.Interactive;
 
@@ -15,6 +16,8 @@ public sealed class DemoController : IDisposable
 {
   readonly object sync = new();
   RenderSession? session;
+  CancellationTokenSource? build;
+  Task? buildTask;
   ScriptWatcher? watcher;
   SceneEntry? selected;
   bool watch;
@@ -53,6 +56,9 @@ public sealed class DemoController : IDisposable
 
   /// <summary>Preview cadence handed to each session.</summary>
   public TimeSpan PreviewInterval { get; set; } = TimeSpan.FromMilliseconds(500);
+
+  /// <summary>How long a new render waits for a stopped script to unwind before running without it.</summary>
+  public TimeSpan AbandonStuckScriptAfter { get; set; } = TimeSpan.FromSeconds(2);
 
   /// <summary>Debounce of the script watcher.</summary>
   public TimeSpan WatchDebounce { get; set; } = TimeSpan.FromMilliseconds(300);
@@ -107,28 +113,61 @@ public sealed class DemoController : IDisposable
   public event EventHandler<ScriptChangedEventArgs>? ScriptChanged;
 
   /// <summary>
-  /// Builds the selected scene with its parameter text and renders it, stopping any render in
-  /// progress. Returns the result, or null when the scene could not be built (see <see cref="Error"/>).
+  /// Builds the selected scene with its parameter text and renders it, stopping any build or render in
+  /// progress. The script runs on a worker thread, so a slow or stuck script never blocks the caller's
+  /// (UI) thread, and <see cref="Stop"/> ends it (see <see cref="Interruption"/>). Returns the result, or
+  /// null when the scene could not be built (see <see cref="Error"/>) or the build was stopped.
   /// </summary>
   public async Task<RenderResult?> RenderAsync()
   {
     SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
-    RenderSession s;
+    RenderSettings settings = Settings;
+    CancellationTokenSource building;
+    Task? previous;
     lock (sync)
     {
       session?.Stop();
-      BuiltScene built;
-      RenderJob job;
-      try
+      build?.Cancel();
+      building = build = new CancellationTokenSource();
+      previous = buildTask;
+    }
+
+    // Let a stopped script unwind before the next one runs (it shares the script's context); one that
+    // ignores the stop (a sleep, not a loop) is left behind after a while rather than blocking the demo.
+    if (previous != null)
+      await Task.WhenAny(previous, Task.Delay(AbandonStuckScriptAfter)).ConfigureAwait(false);
+
+    BuiltScene built;
+    RenderJob job;
+    try
+    {
+      Task<(BuiltScene, RenderJob)> task = Task.Factory.StartNew(() =>
       {
-        built = Catalog.Build(entry, entry.ParameterText, Settings);
-        job = RenderJob.Create(built, Settings);
-      }
-      catch (Exception ex) when (ex is SceneEvaluationException or ArgumentException)
-      {
+        using Interruption.Scope interruption = Interruption.Use(building.Token);
+        BuiltScene b = Catalog.Build(entry, entry.ParameterText, settings);
+        return (b, RenderJob.Create(b, settings));
+      }, building.Token, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+      lock (sync)
+        buildTask = task;
+      (built, job) = await task.ConfigureAwait(false);
+    }
+    catch (OperationCanceledException) when (building.IsCancellationRequested)
+    {
+      return null;
+    }
+    catch (Exception ex) when (ex is SceneEvaluationException or ArgumentException)
+    {
+      if (!building.IsCancellationRequested)
         Raise(Error, ex.Message);
+      return null;
+    }
+
+    RenderSession s;
+    lock (sync)
+    {
+      // Stopped, or another render started, while the script ran.
+      if (building.IsCancellationRequested)
         return null;
-      }
       Raise(SceneEvaluated, built);
       LastJob = job;
       s = session = new RenderSession(job) { PreviewInterval = PreviewInterval, EventContext = EventContext };
@@ -148,10 +187,14 @@ public sealed class DemoController : IDisposable
     return await s.Task.ConfigureAwait(false);
   }
 
+  /// <summary>Stops the script being evaluated and the render in progress (finished tiles are kept).</summary>
   public void Stop()
   {
     lock (sync)
+    {
+      build?.Cancel();
       session?.Stop();
+    }
   }
 
   /// <summary>The pixel read-out for the last render.</summary>
@@ -227,6 +270,7 @@ public sealed class DemoController : IDisposable
     {
       watcher?.Dispose();
       watcher = null;
+      build?.Cancel();
     }
     RenderSession? s;
     lock (sync)

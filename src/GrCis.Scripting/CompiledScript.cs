@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Threading.Tasks;
 using GrCis.Scripting.Compilation;
 using Rendering;
+using Rendering.Execution;
 
 namespace GrCis.Scripting;
 
@@ -13,11 +14,13 @@ namespace GrCis.Scripting;
 public sealed class CompiledScript
 {
   readonly Func<object?[], Task<object?>> factory;
+  readonly InstrumentedSource source;
   ScriptLoadContext? loadContext;
 
   internal CompiledScript(string path, string contentHash, Func<object?[], Task<object?>> factory,
-                          ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings)
+                          ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings, InstrumentedSource source)
   {
+    this.source = source;
     Path = path;
     ContentHash = contentHash;
     this.factory = factory;
@@ -46,9 +49,14 @@ public sealed class CompiledScript
     {
       factory(submissionStates).GetAwaiter().GetResult();
     }
+    catch (OperationCanceledException) when (Interruption.Current.IsCancellationRequested)
+    {
+      // The host stopped the script (see Interruption): not an error of the script.
+      throw;
+    }
     catch (Exception ex)
     {
-      throw RuntimeErrors.Wrap(ex, Path);
+      throw RuntimeErrors.Wrap(ex, Path, source);
     }
   }
 
@@ -66,7 +74,7 @@ public sealed class CompiledScript
     ArgumentNullException.ThrowIfNull(ex);
     if (ex is ScriptRuntimeException sre && sre.Path == Path)
       return sre;
-    return RuntimeErrors.FindScriptFrame(ex, Path, out int line, out int column)
+    return RuntimeErrors.FindScriptFrame(ex, Path, source, out int line, out int column)
       ? new ScriptRuntimeException(Path, line, column, ex)
       : null;
   }

@@ -9,8 +9,9 @@ namespace GrCis.Cli.Tests;
 /// <summary>
 /// Ctrl+C (SIGINT) ends <c>grcis</c> promptly with exit code 130 whatever a scene script does:
 /// a script stuck in a loop while it builds the scene, or a class of the script stuck while rendering,
-/// never looks at the cancellation token; the process exits anyway, writes one error line and
-/// leaves no image and no temporary file.
+/// never looks at the cancellation token. The loop obeys Ctrl+C anyway (the compiler put an
+/// interruption point in it), so the run ends cooperatively, before the forced exit, with one
+/// error line, no image and no temporary file. A script blocked without a loop meets the forced exit.
 /// </summary>
 public class InterruptProcessTests
 {
@@ -55,7 +56,16 @@ public class InterruptProcessTests
   [UnixFact]
   public void Sigint_ends_an_animation_whose_script_is_stuck() => AssertInterrupted(StuckWhileRendering, "animate");
 
-  static void AssertInterrupted(string script, string command)
+  /// <summary>A sleep has no loop to interrupt: the forced exit after the grace period ends it.</summary>
+  [UnixFact]
+  public void Sigint_ends_a_script_blocked_without_a_loop_by_the_forced_exit() =>
+    AssertInterrupted(Camera + """
+
+      System.IO.File.WriteAllText("started", "");
+      System.Threading.Thread.Sleep(System.Threading.Timeout.Infinite);
+      """, "render", forced: true);
+
+  static void AssertInterrupted(string script, string command, bool forced = false)
   {
     using var dir = new TempDirectory();
     File.WriteAllText(dir.File("stuck.cs"), script);
@@ -82,7 +92,16 @@ public class InterruptProcessTests
     Assert.Equal(ExitCodes.Cancelled, p.ExitCode);
     string[] errors = p.StandardError.ReadToEnd().Split('\n', StringSplitOptions.RemoveEmptyEntries);
     string line = Assert.Single(errors);
-    Assert.StartsWith("grcis: error: interrupted", line);
+    if (forced)
+    {
+      Assert.True(took >= InterruptGuard.Grace - TimeSpan.FromMilliseconds(100), $"ended after {took.TotalSeconds:0.0} s, before the grace period");
+      Assert.StartsWith("grcis: error: interrupted", line);
+    }
+    else
+    {
+      Assert.True(took < InterruptGuard.Grace, $"the loop did not obey Ctrl+C: {took.TotalSeconds:0.0} s, the forced exit ended it");
+      Assert.StartsWith("grcis: error: cancelled", line);
+    }
     Assert.DoesNotContain(Directory.GetFiles(dir.Path, "*", SearchOption.AllDirectories),
       f => f.EndsWith(".png", StringComparison.Ordinal) || f.Contains(".tmp-", StringComparison.Ordinal));
   }

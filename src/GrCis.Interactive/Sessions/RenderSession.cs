@@ -193,14 +193,22 @@ public sealed class RenderSession : IDisposable
       {
         if (token.IsCancellationRequested)
           return color;
+        // A script's code stuck in a loop stops with the session (see Interruption).
+        using Interruption.Scope interruption = Interruption.Use(token);
         int y0 = row * block, y1 = Math.Min(y0 + block, h);
-        for (int x0 = 0; x0 < w; x0 += block)
+        try
         {
-          renderer.RenderPixelLinear(x0, y0, color);
-          int x1 = Math.Min(x0 + block, w);
-          for (int y = y0; y < y1; y++)
-            for (int x = x0; x < x1; x++)
-              target.SetPixel(x, y, color);
+          for (int x0 = 0; x0 < w; x0 += block)
+          {
+            renderer.RenderPixelLinear(x0, y0, color);
+            int x1 = Math.Min(x0 + block, w);
+            for (int y = y0; y < y1; y++)
+              for (int x = x0; x < x1; x++)
+                target.SetPixel(x, y, color);
+          }
+        }
+        catch (OperationCanceledException) when (token.IsCancellationRequested)
+        {
         }
         return color;
       },

@@ -84,6 +84,8 @@ public static class TileRenderer
     {
       long rays0 = RayCounter.ThreadRays;
       int k = -1;
+      // A script's texture or shader stuck in a loop stops with the render.
+      using Interruption.Scope interruption = Interruption.Use(cancel);
       MT.InitThreadData();
       MT.seed = options.Seed;
       MT.frame = options.Frame;
@@ -104,6 +106,10 @@ public static class TileRenderer
             progress?.Invoke(new RenderProgress(d, tiles.Count, t));
           }
         }
+      }
+      catch (OperationCanceledException) when (cancel.IsCancellationRequested)
+      {
+        // User code obeyed the cancellation (Interruption.Poll): the tile stays unfinished.
       }
       catch (Exception e)
       {

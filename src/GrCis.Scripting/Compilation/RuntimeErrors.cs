@@ -7,16 +7,16 @@ namespace GrCis.Scripting.Compilation;
 /// <summary>Maps an exception thrown by script code to the script's own line via the emitted PDB.</summary>
 internal static class RuntimeErrors
 {
-  public static ScriptRuntimeException Wrap(Exception ex, string scriptPath)
+  public static ScriptRuntimeException Wrap(Exception ex, string scriptPath, InstrumentedSource source)
   {
     if (ex is ScriptRuntimeException sre && sre.Path == scriptPath)
       return sre;
-    FindScriptFrame(ex, scriptPath, out int line, out int column);
+    FindScriptFrame(ex, scriptPath, source, out int line, out int column);
     return new ScriptRuntimeException(scriptPath, line, column, ex);
   }
 
   /// <summary>The innermost frame of <paramref name="ex"/> (or its inner exceptions) located in the script.</summary>
-  public static bool FindScriptFrame(Exception ex, string scriptPath, out int line, out int column)
+  public static bool FindScriptFrame(Exception ex, string scriptPath, InstrumentedSource source, out int line, out int column)
   {
     StringComparison cmp = OperatingSystem.IsWindows() ? StringComparison.OrdinalIgnoreCase : StringComparison.Ordinal;
     for (Exception? e = ex; e != null; e = e.InnerException)
@@ -29,7 +29,7 @@ internal static class RuntimeErrors
             string.Equals(Path.GetFullPath(file), scriptPath, cmp))
         {
           line = f.GetFileLineNumber();
-          column = f.GetFileColumnNumber();
+          column = source.OriginalColumn(line, f.GetFileColumnNumber());
           return true;
         }
       }

@@ -47,6 +47,8 @@ internal static class ScriptCompiler
     if (!tree.GetRoot().ChildNodes().Any())
       throw new ScriptCompilationException(path, new[] { new ScriptDiagnostic(path, 1, 1, "error", ScriptDiagnostic.EmptyScriptId,
         "the scene script is empty (only whitespace or comments); it must build the scene: set scene.Intersectable, scene.Camera, scene.Sources") });
+    InstrumentedSource instrumented = InterruptionPoints.Instrument(tree);
+    tree = CSharpSyntaxTree.ParseText(instrumented.Instrumented, scriptParseOptions, path);
     var options = new CSharpCompilationOptions(
       OutputKind.DynamicallyLinkedLibrary,
       usings: DefaultImports,
@@ -61,7 +63,8 @@ internal static class ScriptCompiler
       assemblyName, tree, References(modules), options,
       previousScriptCompilation: null, returnType: typeof(object), globalsType: typeof(ScriptGlobals));
 
-    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, path);
+    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) =
+      Emit(compilation, path, new Dictionary<SyntaxTree, InstrumentedSource> { [tree] = instrumented });
 
     IMethodSymbol entry = compilation.GetEntryPoint(CancellationToken.None)
       ?? throw new InvalidOperationException($"{path}: the script compilation has no entry point.");
@@ -73,15 +76,22 @@ internal static class ScriptCompiler
     MethodInfo method = assembly.GetType(typeName, throwOnError: true)!.GetMethod(entry.MetadataName, BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Static)
       ?? throw new InvalidOperationException($"{path}: the script entry point {entry.MetadataName} was not found.");
     var factory = method.CreateDelegate<Func<object?[], Task<object?>>>();
-    return new CompiledScript(path, key, factory, context, warnings);
+    return new CompiledScript(path, key, factory, context, warnings, instrumented);
   }
 
   public static ScriptModule CompileModule(string directory, IReadOnlyList<string> files, IReadOnlyList<string> sources,
                                            string hash, IReadOnlyList<ScriptModule> earlier)
   {
     var trees = new List<SyntaxTree>(files.Count);
+    var instrumented = new Dictionary<SyntaxTree, InstrumentedSource>();
     for (int i = 0; i < files.Count; i++)
-      trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(sources[i], Encoding.UTF8), moduleParseOptions, files[i]));
+    {
+      SyntaxTree parsed = CSharpSyntaxTree.ParseText(SourceText.From(sources[i], Encoding.UTF8), moduleParseOptions, files[i]);
+      InstrumentedSource source = InterruptionPoints.Instrument(parsed);
+      SyntaxTree tree = CSharpSyntaxTree.ParseText(source.Instrumented, moduleParseOptions, files[i]);
+      trees.Add(tree);
+      instrumented[tree] = source;
+    }
 
     var options = new CSharpCompilationOptions(
       OutputKind.DynamicallyLinkedLibrary,
@@ -95,19 +105,20 @@ internal static class ScriptCompiler
     string assemblyName = $"GrCisModule{Interlocked.Increment(ref serial)}_{dirName}_{hash[..12]}";
     CSharpCompilation compilation = CSharpCompilation.Create(assemblyName, trees, References(earlier), options);
 
-    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory);
+    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented);
     byte[] image = pe.ToArray();
     var context = new ScriptLoadContext(assemblyName, ModuleMap(earlier));
     Assembly assembly = context.LoadFromStream(new MemoryStream(image), pdb);
     return new ScriptModule(directory, files, hash, assembly, MetadataReference.CreateFromImage(image), context, warnings);
   }
 
-  static (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) Emit(CSharpCompilation compilation, string path)
+  static (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) Emit(
+    CSharpCompilation compilation, string path, IReadOnlyDictionary<SyntaxTree, InstrumentedSource> sources)
   {
     var pe = new MemoryStream();
     var pdb = new MemoryStream();
     EmitResult result = compilation.Emit(pe, pdb, options: emitOptions);
-    List<ScriptDiagnostic> diagnostics = DiagnosticFormatter.Convert(result.Diagnostics, path);
+    List<ScriptDiagnostic> diagnostics = DiagnosticFormatter.Convert(result.Diagnostics, path, sources);
     if (!result.Success)
       throw new ScriptCompilationException(path, diagnostics);
     pe.Position = 0;

@@ -1,0 +1,59 @@
+using System;
+using Microsoft.CodeAnalysis.Text;
+
+namespace GrCis.Scripting.Compilation;
+
+/// <summary>
+/// A user's source file with interruption points inserted (see <see cref="InterruptionPoints"/>), and the
+/// way back: compiler diagnostics and stack-trace columns refer to the instrumented text, the user must
+/// see positions in the file as written. Insertions hold no line break, so lines never move.
+/// </summary>
+internal sealed class InstrumentedSource
+{
+  readonly (int Position, int Length)[] insertions;
+
+  public InstrumentedSource(SourceText original, SourceText instrumented, (int Position, int Length)[] insertions)
+  {
+    Original = original;
+    Instrumented = instrumented;
+    this.insertions = insertions;
+  }
+
+  public SourceText Original { get; }
+
+  public SourceText Instrumented { get; }
+
+  /// <summary>The offset in the original text of an offset in the instrumented one (inside an insertion: where it was inserted).</summary>
+  public int ToOriginal(int offset)
+  {
+    int shift = 0;
+    foreach ((int position, int length) in insertions)
+    {
+      int start = position + shift;
+      if (offset < start)
+        break;
+      if (offset < start + length)
+        return position;
+      shift += length;
+    }
+    return Math.Clamp(offset - shift, 0, Original.Length);
+  }
+
+  /// <summary>0-based line and character in the original text of a 0-based position in the instrumented one.</summary>
+  public LinePosition ToOriginal(LinePosition position)
+  {
+    if (position.Line >= Instrumented.Lines.Count)
+      return position;
+    TextLine line = Instrumented.Lines[position.Line];
+    int offset = Math.Min(line.Start + position.Character, line.EndIncludingLineBreak);
+    return Original.Lines.GetLinePosition(ToOriginal(offset));
+  }
+
+  /// <summary>1-based column in the original text of a 1-based line and column of the instrumented one (0 = unknown stays 0).</summary>
+  public int OriginalColumn(int line, int column)
+  {
+    if (line <= 0 || column <= 0)
+      return column;
+    return ToOriginal(new LinePosition(line - 1, column - 1)).Character + 1;
+  }
+}
