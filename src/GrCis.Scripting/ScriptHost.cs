@@ -80,7 +80,9 @@ public sealed class ScriptHost : IDisposable
 
   /// <summary>
   /// Compiles every <c>*.cs</c> file under <paramref name="directory"/> (recursively) into an in-memory
-  /// assembly that scripts (and modules added later) reference. Adding an unchanged folder again is a no-op.
+  /// assembly that scripts (and modules added later) reference, except scene scripts kept in the folder
+  /// (files with top-level statements, see <see cref="ScriptModule.SkippedScripts"/>) and build output
+  /// (<c>bin/</c>, <c>obj/</c>). Adding an unchanged folder again is a no-op.
   /// </summary>
   /// <exception cref="DirectoryNotFoundException">The folder does not exist.</exception>
   /// <exception cref="ScriptCompilationException">A module file did not compile.</exception>
@@ -91,14 +93,28 @@ public sealed class ScriptHost : IDisposable
     if (!Directory.Exists(dir))
       throw new DirectoryNotFoundException($"Module folder not found: '{dir}'");
 
-    string[] files = Directory.GetFiles(dir, "*.cs", SearchOption.AllDirectories);
-    Array.Sort(files, StringComparer.Ordinal);
-    if (files.Length == 0)
-      throw new ScriptCompilationException(dir, new[] { new ScriptDiagnostic(dir, 1, 1, "error", "GRCIS001", "the module folder holds no *.cs file") });
-    string[] sources = files.Select(File.ReadAllText).ToArray();
+    // Scene scripts kept beside the classes, and build output, are not module code.
+    var files = new List<string>();
+    var sources = new List<string>();
+    var scripts = new List<string>();
+    foreach (string file in ModuleFiles.Candidates(dir))
+    {
+      string text = File.ReadAllText(file);
+      if (ModuleFiles.IsSceneScript(text))
+        scripts.Add(file);
+      else
+      {
+        files.Add(file);
+        sources.Add(text);
+      }
+    }
+    if (files.Count == 0)
+      throw new ScriptCompilationException(dir, new[] { new ScriptDiagnostic(dir, 1, 1, "error", "GRCIS001",
+        scripts.Count == 0 ? "the module folder holds no *.cs file"
+                           : $"the module folder holds only scene scripts ({scripts.Count}), no classes; give a script as the scene, not as --module") });
 
     var sb = new StringBuilder();
-    for (int i = 0; i < files.Length; i++)
+    for (int i = 0; i < files.Count; i++)
       sb.Append(files[i]).Append('\0').Append(sources[i]).Append('\0');
 
     lock (sync)
@@ -108,6 +124,7 @@ public sealed class ScriptHost : IDisposable
       if (existing != null)
         return existing;
       ScriptModule module = ScriptCompiler.CompileModule(dir, files, sources, hash, modules.ToArray());
+      module.SkippedScripts = scripts;
       Interlocked.Increment(ref moduleCompilations);
       modules.Add(module);
       return module;

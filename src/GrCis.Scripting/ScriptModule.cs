@@ -35,6 +35,9 @@ public sealed class ScriptModule
   /// <summary>The loaded module assembly.</summary>
   public Assembly Assembly { get; }
 
+  /// <summary>Scene scripts found in the folder and left out of the module (full paths).</summary>
+  public IReadOnlyList<string> SkippedScripts { get; internal set; } = [];
+
   /// <summary>Compiler warnings (the module compiled).</summary>
   public IReadOnlyList<ScriptDiagnostic> Warnings { get; }
 

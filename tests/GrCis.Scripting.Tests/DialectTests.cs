@@ -179,7 +179,7 @@ public class DialectTests
   public void Default_imports_are_GrCis_namespaces()
   {
     Assert.Equal(
-      new[] { "System", "System.Diagnostics", "System.Collections.Generic", "OpenTK.Mathematics", "MathSupport", "Rendering", "Utilities" },
+      new[] { "System", "System.Diagnostics", "System.Collections.Generic", "OpenTK.Mathematics", "MathSupport", "Rendering", "Utilities", "Scene3D" },
       ScriptHost.DefaultImports);
   }
 

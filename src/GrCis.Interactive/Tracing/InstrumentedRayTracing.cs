@@ -42,7 +42,7 @@ internal sealed class InstrumentedRayTracing : RayTracing
     return base.GetSample(x, y, color);
   }
 
-  protected override long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
+  public override long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
   {
     RayKind kind = Classify(depth, p1);
     Vector3d origin = p0, direction = p1;

@@ -51,7 +51,7 @@ public class AnimatedCamera : StaticCamera, ITimeDependent
     Vector3d radial = Vector3d.TransformVector(center0 - lookAt, Matrix4d.CreateRotationY(-angle));
     center = lookAt + radial;
     direction = (-radial).Normalized();
-    Prepare();
+    prepare();
   }
 
   /// <summary>An independent camera at the same time and image size (all state is values).</summary>

@@ -23,6 +23,11 @@ public class StaticCamera : ICamera
   // Image plane at distance 1: upper-left corner and per-pixel steps.
   protected Vector3d origin, dx, dy;
 
+  /// <summary>For subclasses that set <see cref="center"/>, <see cref="direction"/>, … themselves and then call <see cref="prepare"/>.</summary>
+  public StaticCamera()
+  {
+  }
+
   public StaticCamera(Vector3d cen, Vector3d dir, double ang)
   {
     center = cen;
@@ -53,7 +58,7 @@ public class StaticCamera : ICamera
       if (value <= 0.0)
         throw new ArgumentOutOfRangeException(nameof(value), value, "Aspect ratio must be positive.");
       height = width / value;
-      Prepare();
+      prepare();
     }
   }
 
@@ -65,7 +70,7 @@ public class StaticCamera : ICamera
       if (value <= 0.0)
         throw new ArgumentOutOfRangeException(nameof(value), value, "Width must be positive.");
       width = value;
-      Prepare();
+      prepare();
     }
   }
 
@@ -77,12 +82,12 @@ public class StaticCamera : ICamera
       if (value <= 0.0)
         throw new ArgumentOutOfRangeException(nameof(value), value, "Height must be positive.");
       height = value;
-      Prepare();
+      prepare();
     }
   }
 
-  /// <summary>Recomputes the image-plane frame after a change of size or orientation.</summary>
-  protected virtual void Prepare()
+  /// <summary>Recomputes the image-plane frame after a change of size or orientation (GrCis's name; subclasses may override).</summary>
+  protected virtual void prepare()
   {
     Vector3d left = Vector3d.Cross(direction, up).Normalized();
     Vector3d top = Vector3d.Cross(left, direction).Normalized();

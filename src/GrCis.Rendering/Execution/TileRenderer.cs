@@ -80,8 +80,13 @@ public static class TileRenderer
     object progressLock = new();
     long renderRays = 0;
 
+    int nextWorker = -1;
+    MT.threads = threads;
+
     void Work()
     {
+      int previousThreadID = MT.threadID;
+      MT.threadID = Interlocked.Increment(ref nextWorker);
       long rays0 = RayCounter.ThreadRays;
       int k = -1;
       // A script's texture or shader stuck in a loop stops with the render.
@@ -119,6 +124,7 @@ public static class TileRenderer
       finally
       {
         MT.SetRendering(null, null, null);
+        MT.threadID = previousThreadID;
         Interlocked.Add(ref renderRays, RayCounter.ThreadRays - rays0);
       }
     }
@@ -139,6 +145,7 @@ public static class TileRenderer
 
     // Publish this render's rays to GrCis's global counter once (workers counted per thread).
     Interlocked.Add(ref Intersection.countRays, renderRays);
+    Interlocked.Add(ref Statistics.allRaysCount, (int)Math.Min(renderRays, int.MaxValue));
     LastRenderRays = renderRays;
 
     if (failure.Exception is Exception e)

@@ -205,6 +205,8 @@ public class RayCasting : IImageFunction
 
   public virtual long GetSample(double x, double y, double[] color)
   {
+    MT.doubleX = x;
+    MT.doubleY = y;
     IRayScene sc = Scene;
     Array.Clear(color);
     if (sc.Camera == null || !sc.Camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))

@@ -61,6 +61,7 @@ public class RayTracing : RayCasting
     DoRecursion = rt.DoRecursion;
     TransparentShadows = rt.TransparentShadows;
     FresnelRefraction = rt.FresnelRefraction;
+    rayRegisterer = rt.rayRegisterer;
   }
 
   // A subclass's Occluded must see every shadow ray; otherwise the scratch at hand counts it.
@@ -68,6 +69,8 @@ public class RayTracing : RayCasting
 
   public override long GetSample(double x, double y, double[] color)
   {
+    MT.doubleX = x;
+    MT.doubleY = y;
     Array.Clear(color);
     ICamera? camera = Scene.Camera;
     if (camera == null || !camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))
@@ -89,8 +92,12 @@ public class RayTracing : RayCasting
     return si != null && !si.Far(1.0, ref dir);
   }
 
+  /// <summary>Receives every ray traced, when set (GrCis's 048 ray visualiser API); null costs nothing.</summary>
+  [NonSerialized]
+  public AbstractRayRegisterer? rayRegisterer;
+
   /// <summary>Colour seen along the ray <c>p0 + t p1</c>, written to <paramref name="color"/>; returns the path hash.</summary>
-  protected virtual long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
+  public virtual long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
   {
     IRayScene sc = Scene;
     Vector3d direction = p1;
@@ -98,6 +105,7 @@ public class RayTracing : RayCasting
     Intersection? i = FirstHitAt(scratch, depth, p0, direction);
     if (i == null)
     {
+      rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerNormal, depth, p0, direction * 100000.0);
       if (sc.Background != null)
         return sc.Background.GetColor(p1, color);
       FillBackground(sc, color);
@@ -105,6 +113,7 @@ public class RayTracing : RayCasting
     }
 
     long hash = CompleteAndTexture(i);
+    rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.unknown, depth, p0, i);
     int bands = color.Length;
     Array.Clear(color);
 
@@ -239,6 +248,8 @@ public class RayTracing : RayCasting
   long AddLight(ShadingScratch scratch, ILightSource source, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
   {
     double[]? intensity = source.GetIntensity(i, out Vector3d dir);
+    if (rayRegisterer != null && MT.singleRayTracing && source.position is Vector3d lightPosition)
+      rayRegisterer.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerShadow, i.CoordWorld, lightPosition);
     if (intensity == null)
       return hash;
     double transmit = 1.0;

@@ -73,4 +73,78 @@ public static class Geometry
     u = Vector3d.Cross(n, a).Normalized();
     v = Vector3d.Cross(n, u);
   }
+
+  /// <summary>
+  /// GrCis's tangents of a direction: <paramref name="tu"/> towards +z ("north"), <paramref name="tv"/>
+  /// around the z axis ("east"); not normalised. Continuous over a sphere except at its poles.
+  /// </summary>
+  public static void GetTangents(ref Vector3d p, out Vector3d tu, out Vector3d tv)
+  {
+    if (IsZero(p.X) && IsZero(p.Y))
+    {
+      tu = p.Z >= 0.0 ? Vector3d.UnitX : -Vector3d.UnitX;
+      tv = Vector3d.UnitY;
+      return;
+    }
+    tu = new Vector3d(-p.Z * p.X, -p.Z * p.Y, p.X * p.X + p.Y * p.Y);
+    tv = new Vector3d(p.Y, -p.X, 0.0);
+  }
+
+  /// <summary>
+  /// Two axes perpendicular to <paramref name="p"/> and to each other, with
+  /// <c>p × p1 = p2</c>: <paramref name="p1"/> swaps the two largest components of p (one negated).
+  /// Not normalised.
+  /// </summary>
+  public static void GetAxes(ref Vector3d p, out Vector3d p1, out Vector3d p2)
+  {
+    double ax = Math.Abs(p.X), ay = Math.Abs(p.Y), az = Math.Abs(p.Z);
+    if (ax >= az && ay >= az)
+      p1 = new Vector3d(-p.Y, p.X, 0.0);
+    else if (ax >= ay && az >= ay)
+      p1 = new Vector3d(-p.Z, 0.0, p.X);
+    else
+      p1 = new Vector3d(0.0, -p.Z, p.Y);
+    p2 = Vector3d.Cross(p, p1);
+  }
+
+  /// <summary>A colour array { X, Y, Z }.</summary>
+  public static double[] ColorCreate(in Vector3d col) => new[] { col.X, col.Y, col.Z };
+
+  /// <summary>Double-precision copies (null stays null).</summary>
+  public static Vector4d[]? Vector4dArrayFrom(in Vector4[]? v4) => v4 == null ? null : Array.ConvertAll(v4, v => (Vector4d)v);
+
+  /// <summary>Double-precision copies (null stays null).</summary>
+  public static Vector3d[]? Vector3dArrayFrom(in Vector3[]? v3) => v3 == null ? null : Array.ConvertAll(v3, v => (Vector3d)v);
+
+  /// <summary>
+  /// Ray <c>p0 + t p1</c> against triangle (a, b, c), Möller–Trumbore: returns t, or
+  /// <see cref="double.NegativeInfinity"/> when the ray's line misses the triangle (t may be negative:
+  /// the hit lies behind the origin). <paramref name="uv"/>: barycentric weights of b and c.
+  /// </summary>
+  public static double RayTriangleIntersection(ref Vector3d p0, ref Vector3d p1, ref Vector3d a, ref Vector3d b, ref Vector3d c, out Vector2d uv)
+  {
+    uv = Vector2d.Zero;
+    Vector3d e1 = b - a, e2 = c - a;
+    Vector3d pvec = Vector3d.Cross(p1, e2);
+    double det = Vector3d.Dot(e1, pvec);
+    if (IsZero(det))
+      return double.NegativeInfinity;
+    double inv = 1.0 / det;
+    Vector3d tvec = p0 - a;
+    uv.X = Vector3d.Dot(tvec, pvec) * inv;
+    if (uv.X < 0.0 || uv.X > 1.0)
+      return double.NegativeInfinity;
+    Vector3d qvec = Vector3d.Cross(tvec, e1);
+    uv.Y = Vector3d.Dot(p1, qvec) * inv;
+    if (uv.Y < 0.0 || uv.X + uv.Y > 1.0)
+      return double.NegativeInfinity;
+    return Vector3d.Dot(e2, qvec) * inv;
+  }
+
+  /// <summary><see cref="RayTriangleIntersection(ref Vector3d, ref Vector3d, ref Vector3d, ref Vector3d, ref Vector3d, out Vector2d)"/> for single-precision vertices.</summary>
+  public static double RayTriangleIntersection(ref Vector3d p0, ref Vector3d p1, ref Vector3 a, ref Vector3 b, ref Vector3 c, out Vector2d uv)
+  {
+    Vector3d da = a, db = b, dc = c;
+    return RayTriangleIntersection(ref p0, ref p1, ref da, ref db, ref dc, out uv);
+  }
 }

@@ -51,6 +51,16 @@ public struct Vector3d : IEquatable<Vector3d>
   public Vector2d Xy { readonly get => new(X, Y); set { X = value.X; Y = value.Y; } }
   public Vector2d Xz { readonly get => new(X, Z); set { X = value.X; Z = value.Y; } }
   public Vector2d Yz { readonly get => new(Y, Z); set { Y = value.X; Z = value.Y; } }
+  public Vector2d Yx { readonly get => new(Y, X); set { Y = value.X; X = value.Y; } }
+  public Vector2d Zx { readonly get => new(Z, X); set { Z = value.X; X = value.Y; } }
+  public Vector2d Zy { readonly get => new(Z, Y); set { Z = value.X; Y = value.Y; } }
+
+  // OpenTK's three-component swizzles.
+  public Vector3d Xzy { readonly get => new(X, Z, Y); set { X = value.X; Z = value.Y; Y = value.Z; } }
+  public Vector3d Yxz { readonly get => new(Y, X, Z); set { Y = value.X; X = value.Y; Z = value.Z; } }
+  public Vector3d Yzx { readonly get => new(Y, Z, X); set { Y = value.X; Z = value.Y; X = value.Z; } }
+  public Vector3d Zxy { readonly get => new(Z, X, Y); set { Z = value.X; X = value.Y; Y = value.Z; } }
+  public Vector3d Zyx { readonly get => new(Z, Y, X); set { Z = value.X; Y = value.Y; X = value.Z; } }
 
   /// <summary>Normalises this vector in place (OpenTK semantics).</summary>
   public void Normalize()

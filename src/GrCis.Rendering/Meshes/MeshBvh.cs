@@ -1,3 +1,4 @@
+using Scene3D;
 using System;
 using System.Collections.Generic;
 using System.Runtime.CompilerServices;

@@ -1,8 +1,9 @@
 using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Rendering;
 
-namespace Rendering;
+namespace Scene3D;
 
 /// <summary>
 /// A triangle mesh (boundary representation) with optional per-vertex normals, colours and

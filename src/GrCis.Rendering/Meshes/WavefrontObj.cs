@@ -3,8 +3,9 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using OpenTK.Mathematics;
+using Rendering;
 
-namespace Rendering;
+namespace Scene3D;
 
 /// <summary>
 /// Reader (and a simple writer) of the text Wavefront OBJ format into a <see cref="SceneBrep"/>.

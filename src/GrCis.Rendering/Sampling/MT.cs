@@ -28,6 +28,31 @@ public static class MT
   /// <summary>Current pixel.</summary>
   [ThreadStatic] public static int x, y;
 
+  /// <summary>Image position of the current sample (set by <see cref="RayCasting.GetSample"/> and <see cref="RayTracing.GetSample"/>).</summary>
+  [ThreadStatic] public static double doubleX, doubleY;
+
+  /// <summary>Index of this rendering thread, 0 to <see cref="threads"/> − 1 (0 outside rendering).</summary>
+  [ThreadStatic] public static int threadID;
+
+  /// <summary>Rendering threads of the render in progress (or the last one).</summary>
+  public static int threads = 1;
+
+  /// <summary>GrCis's demo globals, kept so scripts and modules that read or set them still compile.</summary>
+  public static int imageWidth;
+
+  public static int imageHeight;
+
+  /// <summary>True while one ray is traced for the demo's ray visualiser (GrCis's pixel probe).</summary>
+  public static bool singleRayTracing;
+
+  public static bool sceneRendered;
+
+  public static bool renderingInProgress;
+
+  public static bool pointCloudSavingInProgress;
+
+  public static bool pointCloudCheckBox;
+
   /// <summary>Current frame number (animation) and the time of the current sample.</summary>
   [ThreadStatic] public static int frame;
 
@@ -50,6 +75,9 @@ public static class MT
     imageFunction = imf;
     renderer = rend;
   }
+
+  /// <summary>Clears the thread's rendering context.</summary>
+  public static void ResetRendering() => SetRendering(null, null, null);
 
   /// <summary>Starts pixel (px, py): reseeds <see cref="rnd"/> from (seed, frame, pixel), independent of thread and order.</summary>
   public static void StartPixel(int px, int py, int samples)

@@ -11,6 +11,20 @@ namespace Rendering;
 /// </summary>
 public class CSGInnerNode : DefaultSceneNode
 {
+  /// <summary>GrCis's counters of bounding-box and triangle tests; code that tests triangles itself may add to them.</summary>
+  public static long countBoundingBoxes;
+
+  public static long countTriangles;
+
+  /// <summary>Zeroes GrCis's statistics counters (rays, intersections, bounding boxes, triangles).</summary>
+  public static void ResetStatistics()
+  {
+    Intersection.countRays = 0L;
+    Intersection.countIntersections = 0L;
+    countBoundingBoxes = 0L;
+    countTriangles = 0L;
+  }
+
   public SetOperation Operation { get; }
 
   /// <summary>Optional bounding volume tested before the children.</summary>

@@ -107,6 +107,55 @@ public class DefaultSceneNode : ISceneNode
 
   public virtual void CompleteIntersection(Intersection inter) { }
 
+  /// <summary>
+  /// GrCis's helper for a time-dependent node's <c>Clone()</c>: gives <paramref name="n"/> this node's
+  /// children, each time-dependent child cloned. A static child is shared (its geometry and attributes
+  /// are not copied) through a shallow copy whose parent is <paramref name="n"/>, so clones rendered
+  /// by different threads never re-parent one shared node.
+  /// </summary>
+  public void ShareCloneChildren(DefaultSceneNode n)
+  {
+    ArgumentNullException.ThrowIfNull(n);
+    foreach (ISceneNode child in Children)
+    {
+      ISceneNode copy = child is ITimeDependent td ? (ISceneNode)td.Clone() : SceneNodeRelinker.Relink(child);
+      n.InsertChild(copy, child.ToParent);
+    }
+  }
+
+  /// <summary>
+  /// GrCis's helper for a time-dependent node's <c>Clone()</c>: gives <paramref name="n"/> its own
+  /// attribute map: a list value becomes a new list (time-dependent items cloned), a cloneable value
+  /// (<see cref="ICloneable"/>: arrays, materials, time-dependent attributes) is cloned, the rest shared.
+  /// </summary>
+  public void ShareCloneAttributes(DefaultSceneNode n)
+  {
+    ArgumentNullException.ThrowIfNull(n);
+    if (attributes == null || attributes.Count == 0)
+    {
+      n.attributes = null;
+      return;
+    }
+    var copy = new Dictionary<string, object?>(attributes.Count);
+    foreach (KeyValuePair<string, object?> kv in attributes)
+      copy[kv.Key] = kv.Value switch
+      {
+        IEnumerable<ITexture> textures => CloneItems(textures),
+        IEnumerable<object> items => CloneItems(items),
+        ICloneable cloneable => cloneable.Clone(),
+        _ => kv.Value,
+      };
+    n.attributes = copy;
+  }
+
+  static LinkedList<T> CloneItems<T>(IEnumerable<T> items) where T : class
+  {
+    var list = new LinkedList<T>();
+    foreach (T item in items)
+      list.AddLast(item is ITimeDependent td ? (T)td.Clone() : item);
+    return list;
+  }
+
   /// <summary>Scripts may add several textures with this helper.</summary>
   public void AddTexture(ITexture texture)
   {

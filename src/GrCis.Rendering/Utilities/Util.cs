@@ -8,7 +8,7 @@ namespace Utilities;
 /// Helpers scene scripts rely on: the <c>param</c> string parser, typed look-ups in parameter
 /// and context dictionaries (invariant culture), and small colour-array operations.
 /// </summary>
-public static class Util
+public static partial class Util
 {
   /// <summary>Default separator of <see cref="ParseKeyValueList"/>.</summary>
   public const char COMMA = ',';

@@ -21,10 +21,12 @@ namespace GrCis.Scripting.Compilation;
 /// </summary>
 internal static class ScriptCompiler
 {
-  /// <summary>Namespaces a script sees without a <c>using</c> (GrCis's list; OpenTK's vector types live in OpenTK.Mathematics).</summary>
+  /// <summary>Namespaces a script sees without a <c>using</c>: GrCis's list (OpenTK's vector types live in OpenTK.Mathematics), plus Scene3D, where GrCis keeps SceneBrep and WavefrontObj, so scripts written before they moved there still compile.</summary>
   public static readonly ImmutableArray<string> DefaultImports = ImmutableArray.Create(
     "System", "System.Diagnostics", "System.Collections.Generic", "OpenTK.Mathematics",
-    "MathSupport", "Rendering", "Utilities");
+    "MathSupport", "Rendering", "Utilities", "Scene3D");
+
+  const string ModuleImports = "global using OpenTK.Mathematics;\n";
 
   static readonly CSharpParseOptions scriptParseOptions =
     new(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Script);
@@ -99,6 +101,11 @@ internal static class ScriptCompiler
       allowUnsafe: true,
       nullableContextOptions: NullableContextOptions.Disable,
       concurrentBuild: false);
+
+    // GrCis was written against OpenTK 3, whose math types live in namespace OpenTK: students write
+    // `using OpenTK;`. Here they live in OpenTK.Mathematics (OpenTK 4), imported for every module file
+    // as scripts import it; a file's own types still win over imported ones.
+    trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(ModuleImports, Encoding.UTF8), moduleParseOptions, "GrCisModuleImports.g.cs"));
 
     string dirName = new string(Path.GetFileName(directory.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar))
       .Select(c => char.IsLetterOrDigit(c) ? c : '_').ToArray());

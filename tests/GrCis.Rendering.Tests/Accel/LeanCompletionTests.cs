@@ -109,7 +109,7 @@ public class LeanCompletionTests
   {
     public TextureCoordTracing(IRayScene sc) : base(sc) { }
 
-    protected override long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
+    public override long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
     {
       long h = base.shade(depth, importance, ref p0, ref p1, color);
       Intersection? i = FirstHitAt(depth + 100, p0, p1);

@@ -1,3 +1,4 @@
+using Scene3D;
 using System.Collections.Generic;
 using GrCis.Testing;
 using OpenTK.Mathematics;

@@ -25,8 +25,16 @@ public class CopySettingsTests
     _ when type == typeof(int) => (int)current! + 7,
     _ when type == typeof(double) => (double)current! * 3 + 0.25,
     _ when type.IsEnum => Enum.GetValues(type).Cast<object>().First(v => !v.Equals(current)),
+    _ when type == typeof(AbstractRayRegisterer) => new NullRegisterer(),
     _ => throw new InvalidOperationException($"CopySettingsTests does not know how to vary a {type.Name} setting; extend Different()"),
   };
+
+  sealed class NullRegisterer : AbstractRayRegisterer
+  {
+    public override void RegisterRay(RayType rayType, params object[] parameters)
+    {
+    }
+  }
 
   [Fact]
   public void Every_public_setting_of_RayTracing_is_copied()

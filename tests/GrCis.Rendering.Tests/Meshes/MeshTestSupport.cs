@@ -1,3 +1,4 @@
+using Scene3D;
 using System.IO;
 using OpenTK.Mathematics;
 using Rendering;

@@ -1,3 +1,4 @@
+using Scene3D;
 using OpenTK.Mathematics;
 using Rendering;
 using static GrCis.Rendering.Tests.Meshes.MeshTestSupport;

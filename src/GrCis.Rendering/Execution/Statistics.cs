@@ -1,0 +1,29 @@
+using System.Threading;
+
+namespace Rendering;
+
+/// <summary>
+/// GrCis's ray statistics. <see cref="allRaysCount"/> grows by every ray a render cast (added once at the
+/// end of each render, as <see cref="Intersection.countRays"/>); <see cref="primaryRaysCount"/> only by
+/// what code calls <see cref="IncrementRaysCounters"/> with (a student's own <c>shade</c>, for example).
+/// </summary>
+public static class Statistics
+{
+  public static int primaryRaysCount;
+
+  public static int allRaysCount;
+
+  /// <summary>Counts <paramref name="amount"/> rays, also as primary ones when <paramref name="primary"/>; thread-safe.</summary>
+  public static void IncrementRaysCounters(int amount, bool primary)
+  {
+    Interlocked.Add(ref allRaysCount, amount);
+    if (primary)
+      Interlocked.Add(ref primaryRaysCount, amount);
+  }
+
+  public static void Reset()
+  {
+    primaryRaysCount = 0;
+    allRaysCount = 0;
+  }
+}
