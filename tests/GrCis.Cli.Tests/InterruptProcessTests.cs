@@ -1,4 +1,5 @@
 using System;
+using GrCis.TestSupport;
 using System.Diagnostics;
 using System.IO;
 using System.Linq;
@@ -15,37 +16,9 @@ namespace GrCis.Cli.Tests;
 /// </summary>
 public class InterruptProcessTests
 {
-  const string Camera = """
-    scene.Camera = new StaticCamera(new Vector3d(0, 0, -5), new Vector3d(0, 0, 1), 60.0);
-    scene.Sources = new LinkedList<ILightSource>();
-    scene.BackgroundColor = new double[] { 0.1, 0.2, 0.3 };
-    """;
+  static readonly string StuckWhileBuilding = StuckScripts.WhileBuilding("started");
 
-  /// <summary>Writes the marker file, then never returns.</summary>
-  const string StuckWhileBuilding = Camera + """
-
-    System.IO.File.WriteAllText("started", "");
-    while (true) { }
-    """;
-
-  /// <summary>A texture declared in the script that never returns once rendering reaches it.</summary>
-  const string StuckWhileRendering = """
-    class Stuck : ITexture
-    {
-      public long Apply(Intersection inter)
-      {
-        System.IO.File.WriteAllText("started", "");
-        while (true) { }
-      }
-    }
-    """ + Camera + """
-
-    var root = new CSGInnerNode(SetOperation.Union);
-    var s = new Sphere();
-    s.SetAttribute(PropertyName.TEXTURE, new Stuck());
-    root.InsertChild(s, Matrix4d.Identity);
-    scene.Intersectable = root;
-    """;
+  static readonly string StuckWhileRendering = StuckScripts.WhileRendering("started");
 
   [UnixFact]
   public void Sigint_ends_a_script_stuck_while_building_the_scene() => AssertInterrupted(StuckWhileBuilding, "render");
@@ -59,7 +32,7 @@ public class InterruptProcessTests
   /// <summary>A sleep has no loop to interrupt: the forced exit after the grace period ends it.</summary>
   [UnixFact]
   public void Sigint_ends_a_script_blocked_without_a_loop_by_the_forced_exit() =>
-    AssertInterrupted(Camera + """
+    AssertInterrupted(StuckScripts.Camera + """
 
       System.IO.File.WriteAllText("started", "");
       System.Threading.Thread.Sleep(System.Threading.Timeout.Infinite);

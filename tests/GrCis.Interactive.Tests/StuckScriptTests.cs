@@ -1,4 +1,5 @@
 using System;
+using GrCis.TestSupport;
 using System.Diagnostics;
 using System.IO;
 using System.Threading;
@@ -12,14 +13,6 @@ namespace GrCis.Interactive.Tests;
 /// </summary>
 public class StuckScriptTests
 {
-  const string Camera = """
-    scene.Camera = new StaticCamera(new Vector3d(0, 0, -5), new Vector3d(0, 0, 1), 60.0);
-    scene.Sources = new LinkedList<ILightSource>();
-    scene.BackgroundColor = new double[] { 0.1, 0.2, 0.3 };
-    context[PropertyName.CTX_WIDTH] = 24;
-    context[PropertyName.CTX_HEIGHT] = 16;
-    """;
-
   static (DemoController Demo, ScriptHostEvaluator Evaluator, SceneEntry Stuck, SceneEntry Good) Demo(TempDir tmp, string stuckScript)
   {
     File.WriteAllText(tmp.File("Stuck.cs"), stuckScript);
@@ -47,11 +40,7 @@ public class StuckScriptTests
   {
     using var tmp = new TempDir();
     string marker = tmp.File("started").Replace("\\", "/", StringComparison.Ordinal);
-    (DemoController demo, ScriptHostEvaluator evaluator, _, SceneEntry good) = Demo(tmp, Camera + $$"""
-
-      System.IO.File.WriteAllText("{{marker}}", "");
-      while (true) { }
-      """);
+    (DemoController demo, ScriptHostEvaluator evaluator, _, SceneEntry good) = Demo(tmp, StuckScripts.WhileBuilding(marker));
     using (evaluator)
     using (demo)
     {
@@ -83,23 +72,7 @@ public class StuckScriptTests
   {
     using var tmp = new TempDir();
     string marker = tmp.File("started").Replace("\\", "/", StringComparison.Ordinal);
-    (DemoController demo, ScriptHostEvaluator evaluator, _, _) = Demo(tmp, $$"""
-      class Stuck : ITexture
-      {
-        public long Apply(Intersection inter)
-        {
-          System.IO.File.WriteAllText("{{marker}}", "");
-          while (true) { }
-        }
-      }
-      """ + Camera + """
-
-      var root = new CSGInnerNode(SetOperation.Union);
-      var s = new Sphere();
-      s.SetAttribute(PropertyName.TEXTURE, new Stuck());
-      root.InsertChild(s, Matrix4d.Identity);
-      scene.Intersectable = root;
-      """);
+    (DemoController demo, ScriptHostEvaluator evaluator, _, _) = Demo(tmp, StuckScripts.WhileRendering(marker));
     using (evaluator)
     using (demo)
     {

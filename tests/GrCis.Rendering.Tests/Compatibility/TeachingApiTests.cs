@@ -278,11 +278,19 @@ public class TeachingApiTests
   sealed class IdRecordingTracing : RayTracing
   {
     readonly ConcurrentBag<int> ids;
+    // Both workers meet once, so neither can render every tile alone.
+    readonly System.Threading.Barrier meet = new(2);
+    [ThreadStatic] static bool met;
 
     public IdRecordingTracing(IRayScene scene, ConcurrentBag<int> ids) : base(scene) => this.ids = ids;
 
     public override long GetSample(double x, double y, double[] color)
     {
+      if (!met)
+      {
+        met = true;
+        Assert.True(meet.SignalAndWait(TimeSpan.FromSeconds(30)), "the second render thread never started");
+      }
       ids.Add(MT.threadID);
       long hash = base.GetSample(x, y, color);
       Assert.Equal(x, MT.doubleX);
