@@ -9,6 +9,9 @@ public sealed class ScriptDiagnostic
   /// <summary>Id of the error given for a file that is not text (a NUL byte).</summary>
   public const string BinaryScriptId = "GRCIS003";
 
+  /// <summary>Id of the message about a <c>using</c> of a namespace that does not exist here (GrCis-era APIs).</summary>
+  public const string MissingNamespaceId = "GRCIS004";
+
   public ScriptDiagnostic(string path, int line, int column, string severity, string id, string message)
   {
     Path = path;

@@ -21,6 +21,11 @@ internal sealed class InstrumentedSource
 
   public SourceText Original { get; }
 
+  /// <summary>The same mapping over <paramref name="text"/>, an edit of <see cref="Instrumented"/> that moves no character (blanked spans).</summary>
+  public InstrumentedSource WithInstrumented(SourceText text) =>
+    text.Length == Instrumented.Length ? new InstrumentedSource(Original, text, insertions)
+      : throw new ArgumentException("The edited text must keep every position.", nameof(text));
+
   public SourceText Instrumented { get; }
 
   /// <summary>The offset in the original text of an offset in the instrumented one (inside an insertion: where it was inserted).</summary>

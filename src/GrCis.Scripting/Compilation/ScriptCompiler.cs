@@ -65,8 +65,11 @@ internal static class ScriptCompiler
       assemblyName, tree, References(modules), options,
       previousScriptCompilation: null, returnType: typeof(object), globalsType: typeof(ScriptGlobals));
 
-    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) =
-      Emit(compilation, path, new Dictionary<SyntaxTree, InstrumentedSource> { [tree] = instrumented });
+    var sources = new Dictionary<SyntaxTree, InstrumentedSource> { [tree] = instrumented };
+    var removed = new List<MissingNamespaces.Removed>();
+    compilation = DropMissingNamespaces(compilation, sources, scriptParseOptions, removed);
+    instrumented = sources.Values.Single();
+    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, path, sources, removed);
 
     IMethodSymbol entry = compilation.GetEntryPoint(CancellationToken.None)
       ?? throw new InvalidOperationException($"{path}: the script compilation has no entry point.");
@@ -112,22 +115,54 @@ internal static class ScriptCompiler
     string assemblyName = $"GrCisModule{Interlocked.Increment(ref serial)}_{dirName}_{hash[..12]}";
     CSharpCompilation compilation = CSharpCompilation.Create(assemblyName, trees, References(earlier), options);
 
-    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented);
+    var removed = new List<MissingNamespaces.Removed>();
+    compilation = DropMissingNamespaces(compilation, instrumented, moduleParseOptions, removed);
+    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed);
     byte[] image = pe.ToArray();
     var context = new ScriptLoadContext(assemblyName, ModuleMap(earlier));
     Assembly assembly = context.LoadFromStream(new MemoryStream(image), pdb);
     return new ScriptModule(directory, files, hash, assembly, MetadataReference.CreateFromImage(image), context, warnings);
   }
 
+  /// <summary>
+  /// Blanks out the usings of namespaces that do not exist here (GrCis-era APIs, see
+  /// <see cref="MissingNamespaces"/>) in every user tree; records them in <paramref name="removed"/>.
+  /// </summary>
+  static CSharpCompilation DropMissingNamespaces(CSharpCompilation compilation, Dictionary<SyntaxTree, InstrumentedSource> sources,
+                                                 CSharpParseOptions parseOptions, List<MissingNamespaces.Removed> removed)
+  {
+    foreach ((SyntaxTree tree, InstrumentedSource source) in sources.ToArray())
+    {
+      List<MissingNamespaces.Missing> missing = MissingNamespaces.Find(compilation, tree);
+      if (missing.Count == 0)
+        continue;
+      SourceText blanked = MissingNamespaces.Blank(tree.GetText(), missing);
+      SyntaxTree edited = CSharpSyntaxTree.ParseText(blanked, parseOptions, tree.FilePath);
+      compilation = compilation.ReplaceSyntaxTree(tree, edited);
+      sources.Remove(tree);
+      sources[edited] = source.WithInstrumented(blanked);
+      foreach (MissingNamespaces.Missing m in missing)
+        removed.Add(new MissingNamespaces.Removed(tree.FilePath,
+          source.Original.Lines.GetLinePosition(source.ToOriginal(m.Span.Start)), m.Namespace));
+    }
+    return compilation;
+  }
+
   static (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) Emit(
-    CSharpCompilation compilation, string path, IReadOnlyDictionary<SyntaxTree, InstrumentedSource> sources)
+    CSharpCompilation compilation, string path, IReadOnlyDictionary<SyntaxTree, InstrumentedSource> sources,
+    IReadOnlyList<MissingNamespaces.Removed> removed)
   {
     var pe = new MemoryStream();
     var pdb = new MemoryStream();
     EmitResult result = compilation.Emit(pe, pdb, options: emitOptions);
     List<ScriptDiagnostic> diagnostics = DiagnosticFormatter.Convert(result.Diagnostics, path, sources);
     if (!result.Success)
+    {
+      // First what is gone, then the errors it causes.
+      diagnostics.InsertRange(0, MissingNamespaces.Report(removed, compiled: false));
       throw new ScriptCompilationException(path, diagnostics);
+    }
+    diagnostics.AddRange(MissingNamespaces.Report(removed, compiled: true));
     pe.Position = 0;
     pdb.Position = 0;
     return (pe, pdb, diagnostics);
