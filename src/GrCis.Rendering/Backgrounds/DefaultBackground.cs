@@ -9,20 +9,27 @@ public class DefaultBackground : IBackground
 {
   public static readonly double[] DEFAULT_COLOR = { 0.0, 0.02, 0.03 };
 
+  /// <summary>GrCis's name of <see cref="DEFAULT_COLOR"/>, for subclasses.</summary>
+  protected static readonly double[] DEFAULT = DEFAULT_COLOR;
+
   public double[]? Color;
 
-  readonly IRayScene? scene;
+  /// <summary>The scene whose BackgroundColor wins over <see cref="Color"/>; subclasses may read it.</summary>
+  protected IRayScene? scene;
 
-  public DefaultBackground(double[] color)
+  public IRayScene? Scene
   {
-    ArgumentNullException.ThrowIfNull(color);
-    Color = (double[])color.Clone();
+    get => scene;
+    set => scene = value;
   }
+
+  /// <summary>A fixed colour; null or empty means the default.</summary>
+  public DefaultBackground(double[]? color) => Color = color is { Length: > 0 } ? (double[])color.Clone() : null;
 
   /// <summary>Follows the scene's <see cref="IRayScene.BackgroundColor"/> (read at render time).</summary>
   public DefaultBackground(IRayScene? rtsc = null) => scene = rtsc;
 
-  public long GetColor(Vector3d p1, double[] color)
+  public virtual long GetColor(Vector3d p1, double[] color)
   {
     double[]? src = scene?.BackgroundColor is { Length: > 0 } sc ? sc
       : Color is { Length: > 0 } ? Color

@@ -298,4 +298,34 @@ public class TeachingApiTests
       return hash;
     }
   }
+
+  /// <summary>A student's sky: overrides GetColor and reads the protected scene, as GrCis allowed.</summary>
+  sealed class Sky : DefaultBackground
+  {
+    public Sky(IRayScene sc) : base(sc)
+    {
+    }
+
+    public override long GetColor(Vector3d p1, double[] color)
+    {
+      base.GetColor(p1, color);
+      double up = Math.Max(0.0, p1.Normalized().Y);
+      for (int b = 0; b < color.Length; b++)
+        color[b] += up * (scene?.BackgroundColor?[0] ?? 0.0);
+      return 2L;
+    }
+  }
+
+  [Fact]
+  public void A_background_subclass_overrides_GetColor_and_sees_the_scene()
+  {
+    var scene = new DefaultRayScene { BackgroundColor = new[] { 0.5, 0.25, 0.0 } };
+    IBackground sky = new Sky(scene);
+    double[] c = new double[3];
+    Assert.Equal(2L, sky.GetColor(new Vector3d(0, 1, 0), c));
+    Assert.Equal(new[] { 1.0, 0.75, 0.5 }, c);
+    var plain = new DefaultBackground((double[]?)Array.Empty<double>());
+    plain.GetColor(Vector3d.UnitX, c);
+    Assert.Equal(DefaultBackground.DEFAULT_COLOR, c);
+  }
 }
