@@ -45,6 +45,8 @@ public sealed class CompiledScript
 
     // Slot 0 holds the globals; the script's submission object stores itself in slot 1.
     object?[] submissionStates = { globals, null };
+    // Data files named relative to the script are found beside it (as GrCis scripts expect).
+    using Utilities.DataFiles.Scope folder = Utilities.DataFiles.UseScriptDirectory(System.IO.Path.GetDirectoryName(Path));
     try
     {
       factory(submissionStates).GetAwaiter().GetResult();

@@ -182,4 +182,26 @@ public sealed class StudentModuleTests : IDisposable
     using var host = new ScriptHost();
     Assert.Equal(1, host.Load(script).Context["triangles"]);
   }
+
+  [Fact]
+  public void Data_files_named_with_backslashes_relative_to_the_script_are_found()
+  {
+    Write("homework/models/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    string script = Write("homework/scene.cs", """
+      using Scene3D;
+      using System.IO;
+
+      var reader = new WavefrontObj();
+      var a = new SceneBrep();
+      context["relative"] = reader.ReadBrep("models\\tri.obj", a);
+      string dir = Path.GetDirectoryName((string)context[PropertyName.CTX_SCRIPT_PATH]);
+      var b = new SceneBrep();
+      context["combined"] = reader.ReadBrep(Path.Combine(dir, "models\\tri.obj"), b);
+      """);
+    Assert.NotEqual(Path.Combine(dir, "homework"), Directory.GetCurrentDirectory());
+    using var host = new ScriptHost();
+    ScriptScene run = host.Load(script);
+    Assert.Equal(1, run.Context["relative"]);
+    Assert.Equal(1, run.Context["combined"]);
+  }
 }

@@ -9,6 +9,7 @@ internal static class FileDecoding
   public static T Load<T>(string path, Func<byte[], T> decode)
   {
     ArgumentException.ThrowIfNullOrEmpty(path);
+    path = Utilities.DataFiles.Resolve(path);
     byte[] bytes = File.ReadAllBytes(path);
     try
     {

@@ -29,6 +29,7 @@ public class WavefrontObj
   {
     ArgumentException.ThrowIfNullOrEmpty(fileName);
     ArgumentNullException.ThrowIfNull(scene);
+    fileName = Utilities.DataFiles.Resolve(fileName);
     Stream file = File.OpenRead(fileName);
     Stream data;
     try
