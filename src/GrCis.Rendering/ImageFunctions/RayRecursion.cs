@@ -1,38 +1,71 @@
 using System.Collections.Generic;
 using OpenTK.Mathematics;
+using Utilities;
 
 namespace Rendering;
 
-/// <summary>What a <see cref="RecursionFunction"/> asks the tracer to do: add a direct colour and trace further rays.</summary>
+/// <summary>
+/// What a <see cref="RecursionFunction"/> asks the tracer to do: add a direct colour and trace further
+/// rays. <see cref="Recursion"/> is the default way of doing it; a subclass may override it.
+/// </summary>
 public class RayRecursion
 {
-  /// <summary>One more ray to trace from the intersection, with the coefficient its colour is multiplied by.</summary>
-  public class RayContribution
+  /// <summary>One more ray to trace, with the coefficient its colour is multiplied by.</summary>
+  public struct RayContribution
   {
-    public Vector3d p0;
-    public Vector3d p1;
-    public double importance;
+    public Vector3d origin;
+    public Vector3d direction;
     public double[]? coefficient;
-    public int size;
+    public double importance;
 
-    /// <summary>A ray from the intersection point in direction <paramref name="dir"/>.</summary>
-    public RayContribution(Intersection i, Vector3d dir, double importance)
+    /// <summary>A ray from <paramref name="p0"/> (moved by <see cref="Intersection.RAY_EPSILON"/> along the ray, off the surface).</summary>
+    public RayContribution(in Vector3d p0, in Vector3d p1, in double[]? coeff = null, in double imp = 1.0)
     {
-      p0 = i.CoordWorld;
-      p1 = dir;
-      this.importance = importance;
+      origin = p0 + Intersection.RAY_EPSILON * p1;
+      direction = p1;
+      coefficient = coeff;
+      importance = imp;
     }
 
+    /// <summary>Argument order of earlier versions: importance before the coefficient.</summary>
     public RayContribution(Vector3d p0, Vector3d p1, double importance, double[]? coefficient = null)
+      : this(p0, p1, coefficient, importance)
     {
-      this.p0 = p0;
-      this.p1 = p1;
-      this.importance = importance;
-      this.coefficient = coefficient;
+    }
+
+    /// <summary>A ray from the intersection point in direction <paramref name="dir"/>.</summary>
+    public RayContribution(in Intersection i, in Vector3d dir, in double imp)
+    {
+      origin = i.CoordWorld + Intersection.RAY_EPSILON * dir;
+      direction = dir;
+      coefficient = null;
+      importance = imp;
+    }
+
+    public RayContribution(RayContribution r)
+    {
+      origin = r.origin;
+      direction = r.direction;
+      coefficient = r.coefficient;
+      importance = r.importance;
+    }
+
+    /// <summary>Earlier name of <see cref="origin"/>.</summary>
+    public Vector3d p0
+    {
+      readonly get => origin;
+      set => origin = value;
+    }
+
+    /// <summary>Earlier name of <see cref="direction"/>.</summary>
+    public Vector3d p1
+    {
+      readonly get => direction;
+      set => direction = value;
     }
   }
 
-  /// <summary>Colour added directly (null = nothing).</summary>
+  /// <summary>Colour added directly (null = nothing; one value = the same for every band).</summary>
   public double[]? DirectContribution;
 
   /// <summary>Further rays (null or empty = none).</summary>
@@ -40,16 +73,58 @@ public class RayRecursion
 
   public RayRecursion() { }
 
-  public RayRecursion(double[]? direct, RayContribution? ray = null)
+  public RayRecursion(in double[]? direct, in RayContribution? ray = null)
   {
     DirectContribution = direct;
+    Rays = new List<RayContribution>();
     if (ray != null)
-      Rays = new List<RayContribution> { ray };
+      Rays.Add(ray.Value);
   }
 
   public RayRecursion(double[]? direct, RayContribution? ray1, RayContribution? ray2) : this(direct, ray1)
   {
     if (ray2 != null)
-      (Rays ??= new List<RayContribution>()).Add(ray2);
+      Rays!.Add(ray2.Value);
+  }
+
+  public RayRecursion(in double[]? direct, in List<RayContribution>? rays)
+  {
+    DirectContribution = direct;
+    Rays = rays;
+  }
+
+  /// <summary>Hash multiplier of each further ray's result.</summary>
+  protected const long HASH_RAY = 113L;
+
+  /// <summary>
+  /// The default behaviour: adds <see cref="DirectContribution"/>, then (below the tracer's MaxLevel)
+  /// traces every ray one level deeper and adds its colour times its coefficient. Returns the hash.
+  /// </summary>
+  public virtual long Recursion(RayTracing rt, Intersection i, long hash, int depth, double[] color)
+  {
+    if (DirectContribution is { Length: > 0 } direct)
+    {
+      if (direct.Length == 1)
+        Util.ColorAdd(direct[0], color);
+      else
+        Util.ColorAdd(direct, color);
+    }
+
+    if (Rays == null || Rays.Count == 0 || depth++ >= rt.MaxLevel)
+      return hash;
+
+    double[] comp = new double[color.Length];
+    foreach (RayContribution ray in Rays)
+    {
+      RayContribution rc = ray;
+      hash += HASH_RAY * rt.shade(depth, rc.importance, ref rc.origin, ref rc.direction, comp);
+      if (ray.coefficient == null)
+        Util.ColorAdd(comp, color);
+      else if (ray.coefficient.Length == 1)
+        Util.ColorAdd(comp, ray.coefficient[0], color);
+      else
+        Util.ColorAdd(comp, ray.coefficient, color);
+    }
+    return hash;
   }
 }

@@ -279,33 +279,11 @@ public class RayTracing : RayCasting
     return hash * HASH_LIGHT + source.GetHashCode();
   }
 
-  /// <summary>Custom shading by the solid's <see cref="RecursionFunction"/>.</summary>
+  /// <summary>Custom shading by the solid's <see cref="RecursionFunction"/>: the function's <see cref="RayRecursion"/> does the rest.</summary>
   long ShadeRecursion(RecursionFunction recursion, Intersection i, int depth, double importance, ref Vector3d p1, double[] color, long hash)
   {
     hash += HASH_RECURSION * recursion(i, p1, importance, out RayRecursion rr);
-    if (rr == null)
-      return hash;
-
-    if (rr.DirectContribution is { Length: > 0 } direct)
-      AddScaled(color, direct, 1.0);
-
-    if (rr.Rays == null)
-      return hash;
-
-    double[] comp = new double[color.Length];
-    foreach (RayRecursion.RayContribution ray in rr.Rays)
-    {
-      if (depth++ >= MaxLevel)
-        break;
-      Vector3d o = ray.p0, d = ray.p1;
-      hash += HASH_REFLECT * shade(depth, ray.importance, ref o, ref d, comp);
-      if (ray.coefficient == null)
-        AddScaled(color, comp, 1.0);
-      else
-        for (int b = 0; b < color.Length; b++)
-          color[b] += comp[b] * ray.coefficient[Math.Min(b, ray.coefficient.Length - 1)];
-    }
-    return hash;
+    return rr == null ? hash : rr.Recursion(this, i, hash, depth, color);
   }
 
   static void FillBackground(IRayScene sc, double[] color)

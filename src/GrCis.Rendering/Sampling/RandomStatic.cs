@@ -1,14 +1,30 @@
 namespace MathSupport;
 
-/// <summary>Cheap stateless integer hashes.</summary>
-public static class RandomStatic
+/// <summary>Cheap stateless integer generators (GrCis's, with its unsigned types) and a 64-bit mix.</summary>
+public class RandomStatic
 {
+  protected const ulong BITS_32 = 0xFFFFFFFFUL;
+  protected const ulong BITS_31 = 0x7FFFFFFFUL;
+
   /// <summary>One step of the Numerical Recipes linear congruential generator, kept to 32 bits.</summary>
-  public static ulong numericRecipes(ulong v) => (v * 1664525UL + 1013904223UL) & 0xFFFFFFFFUL;
+  public static ulong numericRecipes(ulong v) => (v * 1664525UL + 1013904223UL) & BITS_32;
 
-  public static long numericRecipes(long v) => (long)numericRecipes((ulong)v);
+  public static ulong numericRecipesMax() => BITS_32 + 1UL;
 
-  public static ulong numericRecipesMax() => 0x100000000UL;
+  /// <summary>IBM's RANDU step (a famously poor generator, for teaching), 31 bits.</summary>
+  public static ulong ibmRandu(ulong v) => (v * 65539UL) & BITS_31;
+
+  public static ulong ibmRanduMax() => BITS_31 + 1UL;
+
+  /// <summary>Park and Miller's minimal standard step.</summary>
+  public static ulong parkMiller(ulong v) => (v * 16807UL) % BITS_31;
+
+  public static ulong parkMillerMax() => BITS_31;
+
+  /// <summary>Maple's linear congruential step.</summary>
+  public static ulong maple(ulong v) => (v * 427419669081UL) % 999999999989UL;
+
+  public static ulong mapleMax() => 999999999989UL;
 
   /// <summary>SplitMix64 finaliser: a strong 64-bit mix used to derive independent sample streams.</summary>
   public static ulong Mix64(ulong z)

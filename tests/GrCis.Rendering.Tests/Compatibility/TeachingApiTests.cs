@@ -328,4 +328,51 @@ public class TeachingApiTests
     plain.GetColor(Vector3d.UnitX, c);
     Assert.Equal(DefaultBackground.DEFAULT_COLOR, c);
   }
+
+  /// <summary>A recursion that adds half the colour of a ray sent straight on, the GrCis way.</summary>
+  sealed class HalfThrough : RayRecursion
+  {
+    public int Calls;
+
+    public HalfThrough(Intersection i, Vector3d dir)
+      : base(new[] { 0.1 }, new RayContribution(i, dir, 1.0) { coefficient = new[] { 0.5 } })
+    {
+    }
+
+    public override long Recursion(RayTracing rt, Intersection i, long hash, int depth, double[] color)
+    {
+      Calls++;
+      return base.Recursion(rt, i, hash, depth, color);
+    }
+  }
+
+  [Fact]
+  public void RayRecursion_adds_its_direct_colour_and_its_rays_scaled_by_their_coefficients()
+  {
+    // A sphere whose recursion sends the ray on through it; behind it, the background.
+    var scene = new DefaultRayScene { BackgroundColor = new[] { 0.2, 0.4, 0.6 } };
+    var root = new CSGInnerNode(SetOperation.Union);
+    var ball = new Sphere();
+    HalfThrough? made = null;
+    ball.SetAttribute(PropertyName.RECURSION, (RecursionFunction)((Intersection i, Vector3d dir, double importance, out RayRecursion rr) =>
+    {
+      rr = made = new HalfThrough(i, dir);
+      return 1L;
+    }));
+    root.InsertChild(ball, Matrix4d.Identity);
+    scene.Intersectable = root;
+    scene.Camera = new StaticCamera(new Vector3d(0, 0, -5), new Vector3d(0, 0, 1), 40.0);
+    scene.Sources = new LinkedList<ILightSource>();
+    var rt = new RayTracing(scene) { MaxLevel = 1 };
+    rt.Width = 10;
+    rt.Height = 10;
+
+    double[] c = new double[3];
+    rt.GetSample(5, 5, c);
+    // Level 0 hits the front: 0.1 + 0.5 × (level 1 hits the back: 0.1, no deeper rays at MaxLevel).
+    Assert.Equal(new[] { 0.15, 0.15, 0.15 }, c.Select(v => Math.Round(v, 12)));
+    Assert.Equal(2, made!.Calls + 1);
+    var copy = new RayRecursion.RayContribution(made.Rays![0]);
+    Assert.Equal(made.Rays[0].origin, copy.p0);
+  }
 }
