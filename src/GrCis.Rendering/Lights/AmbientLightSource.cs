@@ -11,6 +11,9 @@ public class AmbientLightSource : ILightSource
 
   public Vector3d? position { get => null; set { } }
 
+  /// <summary>No light until <see cref="intensity"/> is set.</summary>
+  public AmbientLightSource() => intensity = new double[3];
+
   public AmbientLightSource(double intens) => intensity = new[] { intens, intens, intens };
 
   public AmbientLightSource(double[] intens)

@@ -30,6 +30,13 @@ public class PhongMaterial : IMaterial
 
   double refraction;
 
+  /// <summary>GrCis's backing name of <see cref="n"/>, for subclasses.</summary>
+  protected double _n
+  {
+    get => n;
+    set => n = value;
+  }
+
   /// <summary>Absolute index of refraction; also updates <see cref="cosTotal"/>.</summary>
   public double n
   {

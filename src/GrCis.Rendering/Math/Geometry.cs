@@ -4,7 +4,7 @@ using OpenTK.Mathematics;
 namespace MathSupport;
 
 /// <summary>Small geometric helpers shared by shading and solids.</summary>
-public static class Geometry
+public static partial class Geometry
 {
   /// <summary>Mirror of <paramref name="input"/> about <paramref name="normal"/>: 2(n·i)n − i.</summary>
   public static void SpecularReflection(ref Vector3d normal, ref Vector3d input, out Vector3d output)

@@ -8,7 +8,8 @@ namespace Rendering;
 /// </summary>
 public class SupersamplingImageSynthesizer : ImageSynthesizer
 {
-  int superXY = 1;
+  /// <summary>Samples per row and column of a pixel's grid.</summary>
+  protected int superXY = 1;
 
   /// <summary>Grid cells per pixel side.</summary>
   public int SuperXY => superXY;

@@ -16,6 +16,8 @@ public class CSGInnerNode : DefaultSceneNode
 
   public static long countTriangles;
 
+  public static long countFaces;
+
   /// <summary>Zeroes GrCis's statistics counters (rays, intersections, bounding boxes, triangles).</summary>
   public static void ResetStatistics()
   {

@@ -10,7 +10,17 @@ namespace Rendering;
 /// </summary>
 public class DefaultSceneNode : ISceneNode
 {
+  /// <summary>GrCis's stand-in for an infinite coordinate (e.g. the far end of a plane's texture range).</summary>
+  public static readonly double INFINITY_PLACEHOLDER = 1.0e6;
+
   protected Dictionary<string, object?>? attributes;
+
+  /// <summary>GrCis's field name of <see cref="Children"/>, for subclasses.</summary>
+  protected ICollection<ISceneNode> children
+  {
+    get => Children;
+    set => Children = value;
+  }
   Matrix4d toParent = Matrix4d.Identity;
   Matrix4d fromParent = Matrix4d.Identity;
 

@@ -11,6 +11,12 @@ namespace Rendering;
 /// </summary>
 public class Cube : DefaultSceneNode, ISolid, IFastSolid
 {
+  /// <summary>Outward face normals in GrCis's order: +x, −x, +y, −y, +z, −z.</summary>
+  protected static readonly Vector3d[] Normals =
+  {
+    Vector3d.UnitX, -Vector3d.UnitX, Vector3d.UnitY, -Vector3d.UnitY, Vector3d.UnitZ, -Vector3d.UnitZ,
+  };
+
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     if (!Slabs(p0, p1, out double tMin, out int faceMin, out double tMax, out int faceMax))

@@ -31,10 +31,14 @@ public class Torus : DefaultSceneNode, ISolid, IFastSolid
   /// </summary>
   public bool SelfHits;
 
+  /// <summary>A sphere around the torus (R + r), for subclasses that test it first as GrCis's torus did.</summary>
+  protected BoundingSphere boundingSphere;
+
   public Torus(double bigRadius, double smallRadius)
   {
     this.bigRadius = bigRadius;
     this.smallRadius = smallRadius;
+    boundingSphere = new BoundingSphere(bigRadius + smallRadius);
   }
 
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)

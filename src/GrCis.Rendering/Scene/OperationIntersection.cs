@@ -1,0 +1,7 @@
+namespace Rendering;
+
+/// <summary>Inside the result when inside both operands.</summary>
+public class OperationIntersection : Operation
+{
+  public override bool Result(bool x, bool y) => x && y;
+}

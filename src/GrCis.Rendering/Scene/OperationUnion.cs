@@ -1,0 +1,7 @@
+namespace Rendering;
+
+/// <summary>Inside the result when inside either operand.</summary>
+public class OperationUnion : Operation
+{
+  public override bool Result(bool x, bool y) => x || y;
+}
