@@ -32,10 +32,15 @@ public class ApiSurfaceTests
     public bool Covers(Entry e)
     {
       string[] parts = Scope.Split(':');
-      // A member with its parameter list must match exactly; a bare name covers its overloads.
-      return parts[0] == e.File && (parts.Length < 2 || parts[1] == e.Type) &&
-             (parts.Length < 3 || (parts[2].EndsWith(')') ? e.Member == parts[2] : e.Member.StartsWith(parts[2], StringComparison.Ordinal)));
+      // A member with its parameter list must match exactly; a bare name covers its overloads;
+      // a scope ending in a space ("protected ") covers every member starting so.
+      return parts[0] == e.File && (parts.Length < 2 || parts[1] == e.Type) && (parts.Length < 3 || MemberMatches(parts[2], e.Member));
     }
+
+    static bool MemberMatches(string scope, string member) =>
+      scope.EndsWith(')') ? member == scope
+      : scope.EndsWith(' ') ? member.StartsWith(scope, StringComparison.Ordinal)
+      : member == scope || member.StartsWith(scope + "(", StringComparison.Ordinal);
   }
 
   static List<Entry> Entries() =>
