@@ -16,6 +16,12 @@ public struct Matrix4d : IEquatable<Matrix4d>
   public static readonly Matrix4d Identity = new(Vector4d.UnitX, Vector4d.UnitY, Vector4d.UnitZ, Vector4d.UnitW);
   public static readonly Matrix4d Zero = new(Vector4d.Zero, Vector4d.Zero, Vector4d.Zero, Vector4d.Zero);
 
+  /// <summary>A 4×4 matrix with <paramref name="topLeft"/> as its rotation/scale part and no translation.</summary>
+  public Matrix4d(Matrix3d topLeft)
+    : this(new Vector4d(topLeft.Row0, 0), new Vector4d(topLeft.Row1, 0), new Vector4d(topLeft.Row2, 0), Vector4d.UnitW)
+  {
+  }
+
   public Matrix4d(Vector4d row0, Vector4d row1, Vector4d row2, Vector4d row3)
   {
     Row0 = row0; Row1 = row1; Row2 = row2; Row3 = row3;

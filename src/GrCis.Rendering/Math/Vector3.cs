@@ -26,6 +26,19 @@ public struct Vector3 : IEquatable<Vector3>
   public static Vector3 Cross(Vector3 a, Vector3 b) => new(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
   public static Vector3 Lerp(Vector3 a, Vector3 b, float t) => a + (b - a) * t;
 
+  // OpenTK 3's transforms by a float matrix (row vectors). Transform treats the vector as a point (w = 1).
+  public static Vector3 Transform(Vector3 vec, Matrix4 mat) => TransformPosition(vec, mat);
+  public static void Transform(ref Vector3 vec, ref Matrix4 mat, out Vector3 result) => result = TransformPosition(vec, mat);
+  public static Vector3 TransformPosition(Vector3 vec, Matrix4 mat) => (Vector3)Vector3d.TransformPosition(vec, mat);
+  public static void TransformPosition(ref Vector3 vec, ref Matrix4 mat, out Vector3 result) => result = TransformPosition(vec, mat);
+  public static Vector3 TransformVector(Vector3 vec, Matrix4 mat) => (Vector3)Vector3d.TransformVector(vec, mat);
+  public static void TransformVector(ref Vector3 vec, ref Matrix4 mat, out Vector3 result) => result = TransformVector(vec, mat);
+  public static Vector3 TransformNormal(Vector3 norm, Matrix4 mat) => (Vector3)Vector3d.TransformNormal(norm, mat);
+  public static void TransformNormal(ref Vector3 norm, ref Matrix4 mat, out Vector3 result) => result = TransformNormal(norm, mat);
+  public static Vector3 TransformNormalInverse(Vector3 norm, Matrix4 invMat) => (Vector3)Vector3d.TransformNormalInverse(norm, invMat);
+  public static float Distance(Vector3 a, Vector3 b) => (a - b).Length;
+  public static float DistanceSquared(Vector3 a, Vector3 b) => (a - b).LengthSquared;
+
   public static Vector3 operator +(Vector3 a, Vector3 b) => new(a.X + b.X, a.Y + b.Y, a.Z + b.Z);
   public static Vector3 operator -(Vector3 a, Vector3 b) => new(a.X - b.X, a.Y - b.Y, a.Z - b.Z);
   public static Vector3 operator -(Vector3 a) => new(-a.X, -a.Y, -a.Z);

@@ -147,6 +147,13 @@ public struct Vector3d : IEquatable<Vector3d>
     n.X * invM.Row2.X + n.Y * invM.Row2.Y + n.Z * invM.Row2.Z);
 
   /// <summary>Homogeneous transform with the perspective divide.</summary>
+  /// <summary>OpenTK 3's name: the vector as a point (w = 1), times the matrix, without the perspective divide.</summary>
+  public static Vector3d Transform(Vector3d vec, Matrix4d mat) => TransformPosition(vec, mat);
+  public static void Transform(ref Vector3d vec, ref Matrix4d mat, out Vector3d result) => result = TransformPosition(vec, mat);
+
+  /// <summary>Row vector times a 3×3 matrix.</summary>
+  public static Vector3d Transform(Vector3d vec, Matrix3d mat) => vec * mat;
+
   public static Vector3d TransformPerspective(Vector3d v, Matrix4d m)
   {
     Vector4d r = Vector4d.Transform(new Vector4d(v, 1.0), m);

@@ -19,6 +19,11 @@ public struct Vector4 : IEquatable<Vector4>
   public readonly float Length => MathF.Sqrt(X * X + Y * Y + Z * Z + W * W);
   public static Vector4 Lerp(Vector4 a, Vector4 b, float t) => a + (b - a) * t;
 
+  /// <summary>Row vector times matrix.</summary>
+  public static Vector4 Transform(Vector4 vec, Matrix4 mat) => (Vector4)Vector4d.Transform(vec, mat);
+  public static void Transform(ref Vector4 vec, ref Matrix4 mat, out Vector4 result) => result = Transform(vec, mat);
+  public static Vector4 operator *(Vector4 vec, Matrix4 mat) => Transform(vec, mat);
+
   public static Vector4 operator +(Vector4 a, Vector4 b) => new(a.X + b.X, a.Y + b.Y, a.Z + b.Z, a.W + b.W);
   public static Vector4 operator -(Vector4 a, Vector4 b) => new(a.X - b.X, a.Y - b.Y, a.Z - b.Z, a.W - b.W);
   public static Vector4 operator *(Vector4 a, float s) => new(a.X * s, a.Y * s, a.Z * s, a.W * s);
