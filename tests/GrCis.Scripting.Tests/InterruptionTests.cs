@@ -13,21 +13,15 @@ namespace GrCis.Scripting.Tests;
 public sealed class InterruptionTests : IDisposable
 {
   readonly ScriptHost host = new();
-  readonly string dir = Directory.CreateTempSubdirectory("grcis-interrupt-").FullName;
+  readonly ScratchFolder scratch = new("grcis-interrupt-");
 
   public void Dispose()
   {
     host.Dispose();
-    Directory.Delete(dir, recursive: true);
+    scratch.Dispose();
   }
 
-  string Write(string name, string text)
-  {
-    string path = Path.Combine(dir, name);
-    Directory.CreateDirectory(Path.GetDirectoryName(path)!);
-    File.WriteAllText(path, text);
-    return path;
-  }
+  string Write(string relative, string text) => scratch.Write(relative, text);
 
   /// <summary>Runs the script on a thread whose token is cancelled 200 ms after the script started.</summary>
   static Exception? RunAndStop(Action run)
@@ -83,7 +77,7 @@ public sealed class InterruptionTests : IDisposable
         }
       }
       """);
-    host.AddModule(Path.Combine(dir, "module"));
+    host.AddModule(Path.Combine(scratch.Path, "module"));
     string path = Write("uses.cs", "Spinning.Spinner.Spin();\n");
     Exception? e = RunAndStop(() => host.Load(path));
     Assert.IsType<OperationCanceledException>(e);

@@ -11,21 +11,15 @@ namespace GrCis.Scripting.Tests;
 public sealed class MissingNamespaceTests : IDisposable
 {
   readonly ScriptHost host = new();
-  readonly string dir = Directory.CreateTempSubdirectory("grcis-usings-").FullName;
+  readonly ScratchFolder scratch = new("grcis-usings-");
 
   public void Dispose()
   {
     host.Dispose();
-    Directory.Delete(dir, recursive: true);
+    scratch.Dispose();
   }
 
-  string Write(string name, string text)
-  {
-    string path = Path.Combine(dir, name);
-    Directory.CreateDirectory(Path.GetDirectoryName(path)!);
-    File.WriteAllText(path, text);
-    return path;
-  }
+  string Write(string relative, string text) => scratch.Write(relative, text);
 
   [Fact]
   public void An_unused_using_of_a_missing_namespace_is_ignored_with_a_warning_at_its_line()
@@ -79,7 +73,7 @@ public sealed class MissingNamespaceTests : IDisposable
         }
       }
       """);
-    ScriptModule module = host.AddModule(Path.Combine(dir, "mod"));
+    ScriptModule module = host.AddModule(Path.Combine(scratch.Path, "mod"));
     ScriptDiagnostic warning = Assert.Single(module.Warnings, w => w.Id == ScriptDiagnostic.MissingNamespaceId);
     Assert.Equal(3, warning.Line);
     Assert.EndsWith("Shapes.cs", warning.Path);

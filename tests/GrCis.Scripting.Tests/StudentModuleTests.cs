@@ -16,17 +16,11 @@ namespace GrCis.Scripting.Tests;
 /// </summary>
 public sealed class StudentModuleTests : IDisposable
 {
-  readonly string dir = Directory.CreateTempSubdirectory("grcis-homework-").FullName;
+  readonly ScratchFolder scratch = new("grcis-homework-");
 
-  public void Dispose() => Directory.Delete(dir, recursive: true);
+  public void Dispose() => scratch.Dispose();
 
-  string Write(string relative, string text)
-  {
-    string path = Path.Combine(dir, relative);
-    Directory.CreateDirectory(Path.GetDirectoryName(path)!);
-    File.WriteAllText(path, text);
-    return path;
-  }
+  string Write(string relative, string text) => scratch.Write(relative, text);
 
   const string Tracer = """
     using System;
@@ -109,9 +103,9 @@ public sealed class StudentModuleTests : IDisposable
       "[assembly: System.Reflection.AssemblyTitle(\"x\")]\n[assembly: System.Reflection.AssemblyTitle(\"y\")]\n");
 
     using var host = new ScriptHost();
-    ScriptModule module = host.AddModule(dir);
+    ScriptModule module = host.AddModule(scratch.Path);
     Assert.Equal(new[] { "DistributedRayTracing.cs", "LookAtCamera.cs" }, module.Files.Select(Path.GetFileName));
-    Assert.Equal(new[] { script, Path.Combine(dir, "Scenes", "Other.cs") }, module.SkippedScripts);
+    Assert.Equal(new[] { script, Path.Combine(scratch.Path, "Scenes", "Other.cs") }, module.SkippedScripts);
 
     ScriptScene run = host.Load(script);
     Assert.Equal("Homework049.DistributedRayTracing", run.Algorithm!.GetType().FullName);
@@ -134,7 +128,7 @@ public sealed class StudentModuleTests : IDisposable
   {
     Write("a.cs", "scene.BackgroundColor = new double[] { 1, 0, 0 };\n");
     using var host = new ScriptHost();
-    var ex = Assert.Throws<ScriptCompilationException>(() => host.AddModule(dir));
+    var ex = Assert.Throws<ScriptCompilationException>(() => host.AddModule(scratch.Path));
     Assert.Contains("only scene scripts", ex.Message);
   }
 
@@ -153,7 +147,7 @@ public sealed class StudentModuleTests : IDisposable
       }
       """);
     using var host = new ScriptHost();
-    host.AddModule(dir);
+    host.AddModule(scratch.Path);
     string script = Path.Combine(Path.GetTempPath(), $"grcis-mid-{Guid.NewGuid():N}.cs");
     File.WriteAllText(script, "context[\"mid\"] = Modern.Mid.Of(new Vector3d(0, 0, 0), new Vector3d(2, 4, 6));\n");
     try
@@ -198,7 +192,7 @@ public sealed class StudentModuleTests : IDisposable
       var b = new SceneBrep();
       context["combined"] = reader.ReadBrep(Path.Combine(dir, "models\\tri.obj"), b);
       """);
-    Assert.NotEqual(Path.Combine(dir, "homework"), Directory.GetCurrentDirectory());
+    Assert.NotEqual(Path.Combine(scratch.Path, "homework"), Directory.GetCurrentDirectory());
     using var host = new ScriptHost();
     ScriptScene run = host.Load(script);
     Assert.Equal(1, run.Context["relative"]);
