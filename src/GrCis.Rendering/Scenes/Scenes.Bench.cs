@@ -4,7 +4,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>
   /// The POV-Ray peer flake (shared/bench/povray/sphereflake.pov): Haines's layout, 9 children of

@@ -2,7 +2,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>A checkered bicubic Bezier surface (1×2 patches) with two reflecting cylinders over a checkered plane.</summary>
   public static void Bezier(IRayScene sc)

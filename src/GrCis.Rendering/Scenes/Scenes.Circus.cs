@@ -3,7 +3,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>CSG circus (by A. Hanka, 2012): a clown head and tests of every set operation.</summary>
   public static void Circus(IRayScene sc)

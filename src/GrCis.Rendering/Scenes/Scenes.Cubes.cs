@@ -2,7 +2,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>
   /// Two rows of rotated unit cubes on a checkered plane. Parameters: <c>mat</c> = mirror | glass

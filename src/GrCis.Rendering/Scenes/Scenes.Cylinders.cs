@@ -2,7 +2,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>Infinite, half-infinite and capped cylinders over a checkered plane.</summary>
   public static void Cylinders(IRayScene sc)

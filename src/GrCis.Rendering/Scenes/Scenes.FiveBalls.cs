@@ -2,7 +2,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>Five coloured balls in a row, the rightmost one checkered.</summary>
   public static void FiveBalls(IRayScene sc)

@@ -3,7 +3,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>Six national flags in artistic style (by J. Vlcek, 2012), each built with a different CSG operation.</summary>
   public static void Flags(IRayScene sc)

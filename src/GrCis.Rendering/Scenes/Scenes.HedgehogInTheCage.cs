@@ -3,7 +3,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>Hedgehog in the cage (by M. Wirth, 2012): spheres stretched into cylinders and spines, all CSG.</summary>
   public static void HedgehogInTheCage(IRayScene sc)

@@ -2,7 +2,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>
   /// A sphere flake on a checkered plane. Parameters: <c>depth</c> (levels, default 5),

@@ -2,7 +2,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>An orange sphere on an infinite checkered plane (GrCis's default scene).</summary>
   public static void SpherePlane(IRayScene sc)

@@ -2,7 +2,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>Tori (by J. Navratil, 2012): a ring torus, a bitten spindle "donut" and a row of thin rings.</summary>
   public static void Toroids(IRayScene sc)

@@ -2,7 +2,7 @@ using OpenTK.Mathematics;
 
 namespace Rendering;
 
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>
   /// A glass sphere and an opaque one on a checkered plane. Parameter: <c>n</c> = index of

@@ -11,7 +11,7 @@ namespace Rendering;
 /// that scene scripts call. Each scene fills a <see cref="DefaultRayScene"/>; the registry finds
 /// one by its GrCis name ("Five balls"), its method name ("FiveBalls") or either in any case.
 /// </summary>
-public static partial class Scenes
+public partial class Scenes
 {
   /// <summary>GrCis's default scene.</summary>
   public const string DefaultSceneName = "Sphere on the plane";
