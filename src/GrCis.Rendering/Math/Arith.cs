@@ -3,7 +3,7 @@ using System;
 namespace MathSupport;
 
 /// <summary>GrCis's small arithmetic helpers.</summary>
-public class Arith
+public partial class Arith
 {
   /// <summary><paramref name="val"/> limited to [<paramref name="min"/>, <paramref name="max"/>].</summary>
   public static T Clamp<T>(T val, T min, T max) where T : IComparable<T> =>

@@ -93,4 +93,25 @@ public class GeometryHelpersTests
     ulong next = RandomStatic.numericRecipes(1UL);   // GrCis's unsigned type, whatever the argument's
     Assert.Equal(1015568748UL, next);
   }
+
+  [Theory]
+  [InlineData(1.0, 0.0, 0.0, 0.0)]
+  [InlineData(0.0, 1.0, 0.0, 120.0)]
+  [InlineData(0.0, 0.0, 1.0, 240.0)]
+  [InlineData(1.0, 0.0, 1.0, 300.0)]
+  [InlineData(0.5, 0.25, 0.0, 30.0)]
+  public void HSV_conversions_round_trip(double r, double g, double b, double hue)
+  {
+    Arith.RGBtoHSV(r, g, b, out double h, out double s, out double v);
+    Assert.Equal(hue, h, 9);
+    Assert.Equal(System.Math.Max(r, System.Math.Max(g, b)), v);
+    Arith.HSVtoRGB(h, s, v, out double r2, out double g2, out double b2);
+    Assert.Equal((r, g, b), (System.Math.Round(r2, 9), System.Math.Round(g2, 9), System.Math.Round(b2, 9)));
+    Arith.HSVtoRGB(h - 720.0, s, v, out double r3, out _, out _);   // any hue wraps
+    Assert.Equal(r, r3, 9);
+    System.Drawing.Color c = Arith.HSVToColor(h, s, v);
+    Arith.ColorToHSV(c, out double ch, out _, out double cv);
+    Assert.Equal(hue, ch, 0);
+    Assert.Equal(v, cv, 2);
+  }
 }
