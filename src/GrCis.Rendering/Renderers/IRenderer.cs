@@ -1,3 +1,5 @@
+using MathSupport;
+
 namespace Rendering;
 
 /// <summary>Turns an image function into pixels (sampling, gamma). Re-entrant: threads share one instance.</summary>

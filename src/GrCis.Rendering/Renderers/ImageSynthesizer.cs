@@ -1,4 +1,5 @@
 using System;
+using MathSupport;
 using Rendering.Imaging;
 
 namespace Rendering;
