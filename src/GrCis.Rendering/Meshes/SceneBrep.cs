@@ -17,12 +17,13 @@ public class SceneBrep : ICloneable
   /// <summary>Invalid handle (vertex, triangle, corner).</summary>
   public const int NULL = -1;
 
-  List<Vector3> geometry = new();
-  List<Vector3>? normals;
-  List<Vector3>? colors;
-  List<Vector2>? txtCoords;
-  List<int> vertexPtr = new();
-  List<int>? oppositePtr;
+  // GrCis's names; protected as in GrCis, for subclasses.
+  protected List<Vector3> geometry = new();
+  protected List<Vector3>? normals;
+  protected List<Vector3>? colors;
+  protected List<Vector2>? txtCoords;
+  protected List<int> vertexPtr = new();
+  protected List<int>? oppositePtr;
 
   /// <summary>Statistics of the last <see cref="BuildCornerTable"/>: unmatched and shared edges.</summary>
   public int statEdges;
