@@ -12,14 +12,7 @@ public static partial class Geometry
   /// A unit direction around +z: tilted from z by a normally distributed angle (σ = <paramref name="variance"/>,
   /// radians) towards a uniformly random azimuth in [0, π) (the tilt's sign covers the other half).
   /// </summary>
-  public static Vector3d RandomDirectionNormal(RandomJames rnd, double variance)
-  {
-    double deviation = rnd.Normal(0.0, variance);
-    double orientation = rnd.RandomDouble(0.0, Math.PI);
-    // z rotated about x by the deviation, then about z by the orientation (row vectors).
-    Matrix4d m = Matrix4d.CreateRotationX(deviation) * Matrix4d.CreateRotationZ(orientation);
-    return new Vector3d(m.Row2);
-  }
+  public static Vector3d RandomDirectionNormal(RandomJames rnd, double variance) => new(Tilt(rnd, variance).Row2);
 
   /// <summary><see cref="RandomDirectionNormal(RandomJames, double)"/> around <paramref name="dir"/> instead of +z.</summary>
   public static Vector3d RandomDirectionNormal(RandomJames rnd, Vector3d dir, double variance)
@@ -28,10 +21,15 @@ public static partial class Geometry
     GetTangents(ref dir, out Vector3d u, out Vector3d v);
     // Rows: the frame that takes +z to dir.
     var frame = new Matrix4d(new Vector4d(u.Normalized(), 0.0), new Vector4d(v.Normalized(), 0.0), new Vector4d(dir, 0.0), Vector4d.UnitW);
+    return new Vector3d((Tilt(rnd, variance) * frame).Row2);
+  }
+
+  /// <summary>A random tilt of +z: about x by a normal deviation, then about z by a uniform orientation (row vectors).</summary>
+  static Matrix4d Tilt(RandomJames rnd, double variance)
+  {
     double deviation = rnd.Normal(0.0, variance);
     double orientation = rnd.RandomDouble(0.0, Math.PI);
-    Matrix4d m = Matrix4d.CreateRotationX(deviation) * Matrix4d.CreateRotationZ(orientation) * frame;
-    return new Vector3d(m.Row2);
+    return Matrix4d.CreateRotationX(deviation) * Matrix4d.CreateRotationZ(orientation);
   }
 
   /// <summary>
@@ -143,49 +141,36 @@ public static partial class Geometry
   /// <summary>A vector from the script context (a vector value, or text).</summary>
   public static bool TryParse(Dictionary<string, object> rec, string key, ref Vector3 val)
   {
-    if (rec == null || !rec.TryGetValue(key, out object? o))
+    if (Read(rec, key, 3) is not double[] v)
       return false;
-    switch (o)
-    {
-      case Vector3 f:
-        val = f;
-        return true;
-      case Vector3d d:
-        val = (Vector3)d;
-        return true;
-      case string s:
-        float[]? v = TryParseFloatVector(s);
-        if (v == null || v.Length < 3)
-          return false;
-        val = new Vector3(v[0], v[1], v[2]);
-        return true;
-      default:
-        return false;
-    }
+    val = new Vector3((float)v[0], (float)v[1], (float)v[2]);
+    return true;
   }
 
   /// <summary>A vector from the script context (a vector value, or text).</summary>
   public static bool TryParse(Dictionary<string, object> rec, string key, ref Vector4 val)
   {
-    if (rec == null || !rec.TryGetValue(key, out object? o))
+    if (Read(rec, key, 4) is not double[] v)
       return false;
-    switch (o)
+    val = new Vector4((float)v[0], (float)v[1], (float)v[2], (float)v[3]);
+    return true;
+  }
+
+  /// <summary>The context value as numbers: a 3- or 4-component vector (float or double) or vector text; null when missing or short.</summary>
+  static double[]? Read(Dictionary<string, object> rec, string key, int count)
+  {
+    if (rec == null || !rec.TryGetValue(key, out object? o))
+      return null;
+    double[]? v = o switch
     {
-      case Vector4 f:
-        val = f;
-        return true;
-      case Vector4d d:
-        val = (Vector4)d;
-        return true;
-      case string s:
-        float[]? v = TryParseFloatVector(s);
-        if (v == null || v.Length < 4)
-          return false;
-        val = new Vector4(v[0], v[1], v[2], v[3]);
-        return true;
-      default:
-        return false;
-    }
+      Vector3 f when count == 3 => new double[] { f.X, f.Y, f.Z },
+      Vector3d d when count == 3 => new[] { d.X, d.Y, d.Z },
+      Vector4 f when count == 4 => new double[] { f.X, f.Y, f.Z, f.W },
+      Vector4d d when count == 4 => new[] { d.X, d.Y, d.Z, d.W },
+      string text => TryParseDoubleVector(text),
+      _ => null,
+    };
+    return v != null && v.Length >= count ? v : null;
   }
 
   static double[]? Read(Dictionary<string, string> rec, string key, int count)

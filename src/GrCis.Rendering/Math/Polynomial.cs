@@ -60,7 +60,9 @@ public class Polynomial
   public static Polynomial operator /(Polynomial p, double a) => p * (1.0 / a);
 
   /// <summary>The value at <paramref name="x"/> (Horner).</summary>
-  public double Evaluate(double x) => (((E * x + D) * x + C) * x + B) * x + A;
+  public double Evaluate(double x) => Value(x, E, D);
+
+  double Value(double x, double e, double d) => (((e * x + d) * x + C) * x + B) * x + A;
 
   /// <summary>Real roots of <c>A + B x + C x²</c> (linear when C is 0).</summary>
   public int SolveQuadratic(double[] y) => Finish(y, Quadratic(A, B, C, y), 2);
@@ -132,17 +134,16 @@ public class Polynomial
   int Finish(double[] y, int count, int degree)
   {
     double e = degree >= 4 ? E : 0.0, d = degree >= 3 ? D : 0.0;
-    double Value(double x) => (((e * x + d) * x + C) * x + B) * x + A;
     for (int i = 0; i < count; i++)
     {
       double x = y[i];
       for (int k = 0; k < 3; k++)
       {
-        double f = Value(x), df = ((4.0 * e * x + 3.0 * d) * x + 2.0 * C) * x + B;
+        double f = Value(x, e, d), df = ((4.0 * e * x + 3.0 * d) * x + 2.0 * C) * x + B;
         if (df == 0.0 || !double.IsFinite(f / df))
           break;
         double next = x - f / df;
-        if (Math.Abs(Value(next)) >= Math.Abs(f))
+        if (Math.Abs(Value(next, e, d)) >= Math.Abs(f))
           break;
         x = next;
       }

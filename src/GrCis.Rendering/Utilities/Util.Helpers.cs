@@ -15,8 +15,7 @@ public static partial class Util
   static bool firstLog = true;
 
   /// <summary><paramref name="val"/> limited to [<paramref name="min"/>, <paramref name="max"/>].</summary>
-  public static T Clamp<T>(T val, T min, T max) where T : IComparable<T> =>
-    val.CompareTo(min) < 0 ? min : val.CompareTo(max) > 0 ? max : val;
+  public static T Clamp<T>(T val, T min, T max) where T : IComparable<T> => MathSupport.Arith.Clamp(val, min, max);
 
   /// <summary>Clamps to [0, 1].</summary>
   public static float Saturate(float val) => val < 0.0f ? 0.0f : val > 1.0f ? 1.0f : val;

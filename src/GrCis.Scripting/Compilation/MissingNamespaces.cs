@@ -73,11 +73,10 @@ internal static class MissingNamespaces
   {
     foreach (Removed r in removed)
     {
-      (string path, LinePosition p) = (r.Path, r.At);
       yield return compiled
-        ? new ScriptDiagnostic(path, p.Line + 1, p.Character + 1, "warning", ScriptDiagnostic.MissingNamespaceId,
+        ? new ScriptDiagnostic(r.Path, r.At.Line + 1, r.At.Character + 1, "warning", ScriptDiagnostic.MissingNamespaceId,
             $"'using {r.Namespace};' was ignored: the namespace does not exist here ({Hint(r.Namespace)}); nothing in the file needed it")
-        : new ScriptDiagnostic(path, p.Line + 1, p.Character + 1, "error", ScriptDiagnostic.MissingNamespaceId,
+        : new ScriptDiagnostic(r.Path, r.At.Line + 1, r.At.Character + 1, "error", ScriptDiagnostic.MissingNamespaceId,
             $"namespace '{r.Namespace}' does not exist here: {Hint(r.Namespace)}; the errors below about names the file expected from it follow from that");
     }
   }

@@ -49,8 +49,7 @@ internal static class ScriptCompiler
     if (!tree.GetRoot().ChildNodes().Any())
       throw new ScriptCompilationException(path, new[] { new ScriptDiagnostic(path, 1, 1, "error", ScriptDiagnostic.EmptyScriptId,
         "the scene script is empty (only whitespace or comments); it must build the scene: set scene.Intersectable, scene.Camera, scene.Sources") });
-    InstrumentedSource instrumented = InterruptionPoints.Instrument(tree);
-    tree = CSharpSyntaxTree.ParseText(instrumented.Instrumented, scriptParseOptions, path);
+    (tree, InstrumentedSource instrumented) = Instrument(tree, scriptParseOptions);
     var options = new CSharpCompilationOptions(
       OutputKind.DynamicallyLinkedLibrary,
       usings: DefaultImports,
@@ -92,8 +91,7 @@ internal static class ScriptCompiler
     for (int i = 0; i < files.Count; i++)
     {
       SyntaxTree parsed = CSharpSyntaxTree.ParseText(SourceText.From(sources[i], Encoding.UTF8), moduleParseOptions, files[i]);
-      InstrumentedSource source = InterruptionPoints.Instrument(parsed);
-      SyntaxTree tree = CSharpSyntaxTree.ParseText(source.Instrumented, moduleParseOptions, files[i]);
+      (SyntaxTree tree, InstrumentedSource source) = Instrument(parsed, moduleParseOptions);
       trees.Add(tree);
       instrumented[tree] = source;
     }
@@ -122,6 +120,13 @@ internal static class ScriptCompiler
     var context = new ScriptLoadContext(assemblyName, ModuleMap(earlier));
     Assembly assembly = context.LoadFromStream(new MemoryStream(image), pdb);
     return new ScriptModule(directory, files, hash, assembly, MetadataReference.CreateFromImage(image), context, warnings);
+  }
+
+  /// <summary>The user's tree with interruption points inserted (see <see cref="InterruptionPoints"/>), parsed again, and the way back to the original.</summary>
+  static (SyntaxTree Tree, InstrumentedSource Source) Instrument(SyntaxTree parsed, CSharpParseOptions parseOptions)
+  {
+    InstrumentedSource source = InterruptionPoints.Instrument(parsed);
+    return (CSharpSyntaxTree.ParseText(source.Instrumented, parseOptions, parsed.FilePath), source);
   }
 
   /// <summary>
