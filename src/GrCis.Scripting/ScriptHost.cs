@@ -6,6 +6,7 @@ using System.Security.Cryptography;
 using System.Text;
 using System.Threading;
 using GrCis.Scripting.Compilation;
+using Microsoft.CodeAnalysis;
 using Rendering;
 using Utilities;
 
@@ -96,16 +97,19 @@ public sealed class ScriptHost : IDisposable
     // Scene scripts kept beside the classes, and build output, are not module code.
     var files = new List<string>();
     var sources = new List<string>();
+    var trees = new List<SyntaxTree>();
     var scripts = new List<string>();
     foreach (string file in ModuleFiles.Candidates(dir))
     {
       string text = File.ReadAllText(file);
-      if (ModuleFiles.IsSceneScript(text))
+      SyntaxTree tree = ModuleFiles.Parse(file, text);
+      if (ModuleFiles.IsSceneScript(tree))
         scripts.Add(file);
       else
       {
         files.Add(file);
         sources.Add(text);
+        trees.Add(tree);
       }
     }
     if (files.Count == 0)
@@ -123,7 +127,7 @@ public sealed class ScriptHost : IDisposable
       ScriptModule? existing = modules.FirstOrDefault(m => m.ContentHash == hash);
       if (existing != null)
         return existing;
-      ScriptModule module = ScriptCompiler.CompileModule(dir, files, sources, hash, modules.ToArray());
+      ScriptModule module = ScriptCompiler.CompileModule(dir, files, trees, hash, modules.ToArray());
       module.SkippedScripts = scripts;
       Interlocked.Increment(ref moduleCompilations);
       modules.Add(module);

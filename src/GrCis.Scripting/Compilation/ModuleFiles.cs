@@ -2,9 +2,11 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
+using System.Text;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
 using Microsoft.CodeAnalysis.CSharp.Syntax;
+using Microsoft.CodeAnalysis.Text;
 
 namespace GrCis.Scripting.Compilation;
 
@@ -18,7 +20,12 @@ internal static class ModuleFiles
   /// <summary>Build output and tool folders of a C# project (generated AssemblyInfo files would clash).</summary>
   static readonly string[] skippedFolders = { "bin", "obj", ".git", ".vs", ".idea", "node_modules" };
 
-  static readonly CSharpParseOptions parseOptions = new(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Regular);
+  /// <summary>How module files are parsed (regular C#, not the script dialect).</summary>
+  public static readonly CSharpParseOptions ParseOptions = new(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Regular);
+
+  /// <summary>A module file's text, parsed once: to tell scene scripts apart and then to compile.</summary>
+  public static SyntaxTree Parse(string path, string source) =>
+    CSharpSyntaxTree.ParseText(SourceText.From(source, Encoding.UTF8), ParseOptions, path);
 
   /// <summary>Every <c>*.cs</c> below <paramref name="directory"/> outside build-output folders, in ordinal order.</summary>
   public static string[] Candidates(string directory)
@@ -39,9 +46,6 @@ internal static class ModuleFiles
   /// True for a scene script: statements at the top level (GrCis's script dialect, or a program
   /// with top-level statements), which a library of classes cannot hold.
   /// </summary>
-  public static bool IsSceneScript(string source)
-  {
-    SyntaxTree tree = CSharpSyntaxTree.ParseText(source, parseOptions);
-    return ((CompilationUnitSyntax)tree.GetRoot()).Members.Any(m => m is GlobalStatementSyntax);
-  }
+  public static bool IsSceneScript(SyntaxTree tree) =>
+    ((CompilationUnitSyntax)tree.GetRoot()).Members.Any(m => m is GlobalStatementSyntax);
 }

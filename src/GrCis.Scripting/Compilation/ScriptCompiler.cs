@@ -31,8 +31,7 @@ internal static class ScriptCompiler
   static readonly CSharpParseOptions scriptParseOptions =
     new(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Script);
 
-  static readonly CSharpParseOptions moduleParseOptions =
-    new(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Regular);
+  static readonly CSharpParseOptions moduleParseOptions = ModuleFiles.ParseOptions;
 
   static readonly EmitOptions emitOptions = new(debugInformationFormat: DebugInformationFormat.PortablePdb);
 
@@ -83,15 +82,15 @@ internal static class ScriptCompiler
     return new CompiledScript(path, key, factory, context, warnings, instrumented);
   }
 
-  public static ScriptModule CompileModule(string directory, IReadOnlyList<string> files, IReadOnlyList<string> sources,
+  /// <param name="parsed">The files' trees, parsed with <see cref="ModuleFiles.Parse"/>.</param>
+  public static ScriptModule CompileModule(string directory, IReadOnlyList<string> files, IReadOnlyList<SyntaxTree> parsed,
                                            string hash, IReadOnlyList<ScriptModule> earlier)
   {
     var trees = new List<SyntaxTree>(files.Count);
     var instrumented = new Dictionary<SyntaxTree, InstrumentedSource>();
     for (int i = 0; i < files.Count; i++)
     {
-      SyntaxTree parsed = CSharpSyntaxTree.ParseText(SourceText.From(sources[i], Encoding.UTF8), moduleParseOptions, files[i]);
-      (SyntaxTree tree, InstrumentedSource source) = Instrument(parsed, moduleParseOptions);
+      (SyntaxTree tree, InstrumentedSource source) = Instrument(parsed[i], moduleParseOptions);
       trees.Add(tree);
       instrumented[tree] = source;
     }
