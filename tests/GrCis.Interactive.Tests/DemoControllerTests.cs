@@ -2,6 +2,7 @@ using System;
 using System.IO;
 using System.Threading.Tasks;
 using Rendering.Imaging;
+using Rendering.Observation;
 
 namespace GrCis.Interactive.Tests;
 

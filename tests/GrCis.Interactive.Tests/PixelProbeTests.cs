@@ -2,6 +2,7 @@ using System;
 using System.Linq;
 using OpenTK.Mathematics;
 using Rendering;
+using Rendering.Observation;
 
 namespace GrCis.Interactive.Tests;
 

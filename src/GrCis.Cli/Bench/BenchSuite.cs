@@ -146,9 +146,10 @@ public static class BenchSuite
     ImageSynthesizer renderer = RenderJob.CreateSynthesizer(settings);
     RayTracing function = RenderJob.CreateImageFunction(scene, settings);
     var clock = Stopwatch.StartNew();
-    var image = TileRenderer.Render(scene, function, renderer, new RenderOptions { Threads = threads, Seed = 0 }, null, cancel);
+    var context = new RenderContext();
+    var image = TileRenderer.Render(scene, function, renderer, new RenderOptions { Threads = threads, Seed = 0 }, null, cancel, context);
     clock.Stop();
     fallbacks = function.LastPrepared?.FallbackCount ?? 0;
-    return new RenderResult(image, renderer.SamplesPerPixel, clock.Elapsed, TileRenderer.LastRenderRays, cancel.IsCancellationRequested);
+    return new RenderResult(image, renderer.SamplesPerPixel, clock.Elapsed, context.Rays, cancel.IsCancellationRequested);
   }
 }

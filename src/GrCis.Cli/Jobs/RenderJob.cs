@@ -40,9 +40,9 @@ public static class RenderJob
     var options = new RenderOptions { Threads = settings.Threads, Seed = settings.Seed, Tiles = tiles };
 
     var clock = Stopwatch.StartNew();
-    var image = TileRenderer.Render(scene, function, renderer, options, progress, cancel);
+    var context = new RenderContext();
+    var image = TileRenderer.Render(scene, function, renderer, options, progress, cancel, context);
     clock.Stop();
-    long rays = TileRenderer.LastRenderRays;   // summed from per-thread counters, exact for this render
-    return new RenderResult(image, renderer.SamplesPerPixel, clock.Elapsed, rays, cancel.IsCancellationRequested);
+    return new RenderResult(image, renderer.SamplesPerPixel, clock.Elapsed, context.Rays, cancel.IsCancellationRequested);
   }
 }

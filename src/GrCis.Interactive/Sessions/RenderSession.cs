@@ -103,11 +103,9 @@ public sealed class RenderSession : IDisposable
     int tilesTotal = TileRenderer.MakeTiles(job.Width, job.Height, options.TileSize).Count;
 
     ImageSynthesizer inner = job.Renderer;
-    IImageFunction? savedFunction = inner.ImageFunction;
     FloatImage? image = null;
     Exception? error = null;
-    CountingObserver? counter = null;
-    long globalRaysBefore = Interlocked.Read(ref Intersection.countRays);
+    var context = new RenderContext();
     Timer? timer = null;
     try
     {
@@ -118,25 +116,16 @@ public sealed class RenderSession : IDisposable
           Publish(PreviewPass.Coarse, live, force: false);
       }
 
-      // Count rays by instrumenting plain ray tracing (identical images); other functions use the global counter.
-      IImageFunction function = job.ImageFunction;
-      if (InstrumentedRayTracing.CanInstrument(function))
-      {
-        counter = new CountingObserver();
-        function = new InstrumentedRayTracing((RayTracing)function, counter);
-      }
-      inner.ImageFunction = function;
-
       TimeSpan interval = PreviewInterval > TimeSpan.Zero ? PreviewInterval : TimeSpan.FromMilliseconds(500);
       timer = new Timer(_ => Publish(PreviewPass.Tiles, live, force: false), null, interval, interval);
 
       var synth = new PreviewSynthesizer(inner, live);
-      image = TileRenderer.Render(job.Scene, function, synth, options, p =>
+      image = TileRenderer.Render(job.Scene, job.ImageFunction, synth, options, p =>
       {
         lock (finished)
           finished.Add(p.LastTile);
         Raise(ProgressChanged, new RenderProgressEventArgs(p, clock.Elapsed));
-      }, token);
+      }, token, context);
     }
     catch (Exception ex) when (ex is RenderException or AggregateException)
     {
@@ -144,7 +133,6 @@ public sealed class RenderSession : IDisposable
     }
     finally
     {
-      inner.ImageFunction = savedFunction;
       timer?.Dispose();
       lock (publishLock)
         tilesOver = true;
@@ -156,7 +144,6 @@ public sealed class RenderSession : IDisposable
       tiles = finished.ToArray();
     image ??= KeepTiles(live, tiles);
 
-    (long rays, long hits) = counter?.Totals() ?? (Interlocked.Read(ref Intersection.countRays) - globalRaysBefore, 0L);
     var stats = new RenderStatistics
     {
       Elapsed = clock.Elapsed,
@@ -164,8 +151,8 @@ public sealed class RenderSession : IDisposable
       Height = job.Height,
       Threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tilesTotal)),
       SamplesPerPixel = inner.SamplesPerPixel,
-      Rays = rays,
-      Intersections = hits,
+      Rays = context.Rays,
+      Intersections = context.Hits,
       TilesDone = tiles.Length,
       TilesTotal = tilesTotal,
     };

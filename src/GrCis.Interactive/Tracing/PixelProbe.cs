@@ -1,13 +1,14 @@
 using System;
 using Rendering;
+using Rendering.Execution;
 using Rendering.Imaging;
 
 namespace GrCis.Interactive;
 
 /// <summary>
 /// The demo's pixel click: the pixel's colour, the hash of its centre sample and the tree of rays
-/// that sample traced. Rays are recorded by a throw-away instrumented copy of the ray tracer, so
-/// ordinary renders carry no recording cost.
+/// that sample traced, recorded by an observer attached to the job's own image function for this one
+/// sample (<see cref="RenderContext"/>); ordinary renders attach none and carry no recording cost.
 /// </summary>
 public static class PixelProbe
 {
@@ -44,21 +45,13 @@ public static class PixelProbe
 
       // One sample through the pixel centre, seeded as the renderer seeds the pixel.
       double[] sample = new double[bands];
-      RayNode? tree = null;
       MT.StartPixel(x, y, 1);
+      var observer = new ProbeObserver(scene);
       long hash;
-      if (InstrumentedRayTracing.CanInstrument(job.ImageFunction))
-      {
-        var observer = new ProbeObserver(scene);
-        var tracer = new InstrumentedRayTracing((RayTracing)job.ImageFunction, observer);
-        MT.imageFunction = tracer;
-        hash = tracer.GetSample(x + 0.5, y + 0.5, sample);
-        tree = observer.Root;
-      }
-      else
+      using (new RenderContext { Observer = observer }.Enter())
         hash = job.ImageFunction.GetSample(x + 0.5, y + 0.5, sample);
 
-      return new ProbeResult(x, y, pixel, sample, hash, tree);
+      return new ProbeResult(x, y, pixel, sample, hash, observer.Root);
     }
     finally
     {

@@ -1,6 +1,7 @@
 using System.Collections.Generic;
 using OpenTK.Mathematics;
 using Rendering;
+using Rendering.Observation;
 
 namespace GrCis.Interactive;
 
@@ -13,8 +14,6 @@ internal sealed class ProbeObserver : RayObserver
   public ProbeObserver(IRayScene scene) => this.scene = scene;
 
   public RayNode? Root { get; private set; }
-
-  public override bool NeedsKinds => true;
 
   public override void BeginRay(RayKind kind, int depth, in Vector3d origin, in Vector3d direction)
   {

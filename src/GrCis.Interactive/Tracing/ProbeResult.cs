@@ -30,7 +30,7 @@ public sealed class ProbeResult
   /// <summary>Hash the image function returned for the centre sample.</summary>
   public long Hash { get; }
 
-  /// <summary>Tree of rays of the centre sample; null when the image function is not plain ray tracing.</summary>
+  /// <summary>Tree of rays of the centre sample; null when the image function reports none (it is not a <see cref="Rendering.RayCasting"/>).</summary>
   public RayNode? Rays { get; }
 
   /// <summary>All rays, depth first (empty when <see cref="Rays"/> is null).</summary>

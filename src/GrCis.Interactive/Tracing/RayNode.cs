@@ -1,6 +1,7 @@
 using System.Collections.Generic;
 using OpenTK.Mathematics;
 using Rendering;
+using Rendering.Observation;
 
 namespace GrCis.Interactive;
 

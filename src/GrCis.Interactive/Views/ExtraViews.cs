@@ -11,8 +11,9 @@ namespace GrCis.Interactive;
 
 /// <summary>
 /// Depth, normals and rays-per-pixel maps of a render job, with a value read-out and PNG, CSV and
-/// point-cloud (PLY) export. Computed by a separate pass of an instrumented copy of the job's ray
-/// tracer, sampling exactly the renderer's sample positions; the job's own image is not touched.
+/// point-cloud (PLY) export. Computed by a separate pass of the job's own image function with an observer
+/// attached (<see cref="RenderContext"/>), sampling exactly the renderer's sample positions; the image of
+/// that pass is thrown away.
 /// </summary>
 public sealed class ExtraViews
 {
@@ -30,7 +31,7 @@ public sealed class ExtraViews
 
   public int Height { get; }
 
-  /// <summary>False when the job's image function is not plain ray tracing: only primary rays were counted.</summary>
+  /// <summary>False when the job's image function is not a <see cref="RayTracing"/>: only primary rays were counted.</summary>
   public bool AllRaysKnown { get; }
 
   /// <summary>Runs the maps pass. Do not call while the same job is rendering (it shares the renderer).</summary>
@@ -38,18 +39,16 @@ public sealed class ExtraViews
   {
     ArgumentNullException.ThrowIfNull(job);
     var observer = new AovObserver(job.Width, job.Height);
-    bool known = InstrumentedRayTracing.CanInstrument(job.ImageFunction);
-    // Another image function: its first hits are those of ray casting, so depth and normals still hold.
-    RayTracing template = known
-      ? (RayTracing)job.ImageFunction
-      : new RayTracing { DoShadows = false, DoReflections = false, DoRefractions = false, DoRecursion = false };
-    var tracer = new InstrumentedRayTracing(template, observer);
+    bool known = job.ImageFunction is RayTracing;
+    // Another image function reports no rays unless it is a RayCasting: its first hits are those of ray
+    // casting, so depth and normals come from plain ray casting on the same query path.
+    IImageFunction tracer = job.ImageFunction is RayCasting ? job.ImageFunction : new RayCasting();
 
     ImageSynthesizer renderer = job.Renderer;
     IImageFunction? saved = renderer.ImageFunction;
     try
     {
-      TileRenderer.Render(job.Scene, tracer, renderer, job.Options, null, cancel);
+      TileRenderer.Render(job.Scene, tracer, renderer, job.Options, null, cancel, new RenderContext { Observer = observer });
     }
     finally
     {

@@ -24,27 +24,19 @@ public static class TileRenderer
     return tiles;
   }
 
-  /// <summary>Rays cast by the last <see cref="Render"/> that returned on the calling thread (all workers).</summary>
-  public static long LastRenderRays
-  {
-    get => lastRenderRays;
-    private set => lastRenderRays = value;
-  }
-
-  [ThreadStatic]
-  static long lastRenderRays;
-
   /// <summary>
   /// Renders <paramref name="scene"/> through <paramref name="renderer"/> into a new linear image.
   /// Returns the image even when cancelled (unfinished tiles stay black); check the token to know.
   /// </summary>
+  /// <param name="context">The render's observer and ray counts (read <see cref="RenderContext.Rays"/> afterwards); null = a private one.</param>
   public static FloatImage Render(
     IRayScene scene,
     IImageFunction imageFunction,
     ImageSynthesizer renderer,
     RenderOptions options,
     Action<RenderProgress>? progress = null,
-    CancellationToken cancel = default)
+    CancellationToken cancel = default,
+    RenderContext? context = null)
   {
     ArgumentNullException.ThrowIfNull(scene);
     ArgumentNullException.ThrowIfNull(imageFunction);
@@ -78,7 +70,8 @@ public static class TileRenderer
     int threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tiles.Count));
     var failure = new EarliestFailure();
     object progressLock = new();
-    long renderRays = 0;
+    context ??= new RenderContext();
+    long raysBefore = context.Rays;
 
     int nextWorker = -1;
     MT.threads = threads;
@@ -87,8 +80,8 @@ public static class TileRenderer
     {
       int previousThreadID = MT.threadID;
       MT.threadID = Interlocked.Increment(ref nextWorker);
-      long rays0 = RayCounter.ThreadRays;
       int k = -1;
+      using RenderContext.Scope counting = context.Enter();
       // A script's texture or shader stuck in a loop stops with the render.
       using Interruption.Scope interruption = Interruption.Use(cancel);
       MT.InitThreadData();
@@ -125,7 +118,6 @@ public static class TileRenderer
       {
         MT.SetRendering(null, null, null);
         MT.threadID = previousThreadID;
-        Interlocked.Add(ref renderRays, RayCounter.ThreadRays - rays0);
       }
     }
 
@@ -143,10 +135,10 @@ public static class TileRenderer
         w.Join();
     }
 
-    // Publish this render's rays to GrCis's global counter once (workers counted per thread).
+    // Publish this render's rays to GrCis's global counters once (workers counted per thread).
+    long renderRays = context.Rays - raysBefore;
     Interlocked.Add(ref Intersection.countRays, renderRays);
     Interlocked.Add(ref Statistics.allRaysCount, (int)Math.Min(renderRays, int.MaxValue));
-    LastRenderRays = renderRays;
 
     if (failure.Exception is Exception e)
       throw new RenderException($"Rendering failed: {e.Message}", e);

@@ -4,6 +4,7 @@ using System.Runtime.CompilerServices;
 using OpenTK.Mathematics;
 using Rendering.Accel;
 using Rendering.Execution;
+using Rendering.Observation;
 
 namespace Rendering;
 
@@ -74,13 +75,18 @@ public class RayCasting : IImageFunction
   /// <summary><see cref="FirstHitAt(int, Vector3d, Vector3d)"/> with the thread's scratch already at hand.</summary>
   internal Intersection? FirstHitAt(ShadingScratch scratch, int depth, Vector3d p0, Vector3d p1)
   {
-    if (firstHitOverridden || !ReuseIntersections || depth < 0)
-      return FirstHit(p0, p1);
-    PreparedScene? ps = Prepared;
-    if (ps == null)
-      return FirstHit(p0, p1);
-    scratch.Rays++;
-    return ps.FirstHit(p0, p1, scratch.Intersection(depth), ReferenceEquals(ps, leanPrepared));
+    Intersection? hit;
+    PreparedScene? ps;
+    if (firstHitOverridden || !ReuseIntersections || depth < 0 || (ps = Prepared) == null)
+      hit = FirstHit(p0, p1);
+    else
+    {
+      scratch.Rays++;
+      hit = ps.FirstHit(p0, p1, scratch.Intersection(depth), ReferenceEquals(ps, leanPrepared));
+    }
+    if (hit != null)
+      scratch.Hits++;
+    return hit;
   }
 
   // Set by Prepare when only this library's shading reads the pooled hits of that snapshot (of that scene's
@@ -212,7 +218,21 @@ public class RayCasting : IImageFunction
     if (sc.Camera == null || !sc.Camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))
       return 1L;
 
-    Intersection? i = FirstHitAt(0, p0, p1);
+    ShadingScratch scratch = ShadingScratch.Current;
+    Intersection? i = FirstHitAt(scratch, 0, p0, p1);
+    if (scratch.Observer is RayObserver observer)
+    {
+      // Ray casting traces one ray per sample: reported once its hit is complete.
+      long h = Cast(sc, i, p1, color);
+      observer.BeginRay(RayKind.Primary, 0, p0, p1);
+      observer.EndRay(RayKind.Primary, 0, p0, p1, i);
+      return h;
+    }
+    return Cast(sc, i, p1, color);
+  }
+
+  long Cast(IRayScene sc, Intersection? i, Vector3d p1, double[] color)
+  {
     if (i == null)
     {
       if (sc.BackgroundColor != null)

@@ -4,6 +4,7 @@ using MathSupport;
 using OpenTK.Mathematics;
 using Rendering.Accel;
 using Rendering.Execution;
+using Rendering.Observation;
 
 namespace Rendering;
 
@@ -75,6 +76,9 @@ public class RayTracing : RayCasting
     ICamera? camera = Scene.Camera;
     if (camera == null || !camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))
       return 11L;
+    ShadingScratch scratch = ShadingScratch.Current;
+    if (scratch.Observer != null)
+      scratch.NextKind = RayKind.Primary;
     return shade(0, 1.0, ref p0, ref p1, color);
   }
 
@@ -84,25 +88,51 @@ public class RayTracing : RayCasting
   bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
   {
     scratch.Rays++;
+    bool blocked;
     PreparedScene? ps = Prepared;
     if (ps != null)
-      return ps.Occluded(p0, dir);
-    LinkedList<Intersection>? list = FaithfulQuery.Intersect(Scene.Intersectable, p0, dir);
-    Intersection? si = Intersection.FirstRealIntersection(list, ref dir);
-    return si != null && !si.Far(1.0, ref dir);
+      blocked = ps.Occluded(p0, dir);
+    else
+    {
+      LinkedList<Intersection>? list = FaithfulQuery.Intersect(Scene.Intersectable, p0, dir);
+      Intersection? si = Intersection.FirstRealIntersection(list, ref dir);
+      blocked = si != null && !si.Far(1.0, ref dir);
+    }
+    if (blocked)
+      scratch.Hits++;
+    return blocked;
   }
 
   /// <summary>Receives every ray traced, when set (GrCis's 048 ray visualiser API); null costs nothing.</summary>
   [NonSerialized]
   public AbstractRayRegisterer? rayRegisterer;
 
-  /// <summary>Colour seen along the ray <c>p0 + t p1</c>, written to <paramref name="color"/>; returns the path hash.</summary>
+  /// <summary>
+  /// Colour seen along the ray <c>p0 + t p1</c>, written to <paramref name="color"/>; returns the path hash.
+  /// The ray is reported to the render's observer, when one is attached (<see cref="RenderContext.Observer"/>).
+  /// </summary>
   public virtual long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
+  {
+    ShadingScratch scratch = ShadingScratch.Current;
+    RayObserver? observer = scratch.Observer;
+    if (observer == null)
+      return Shade(scratch, depth, importance, p0, p1, color, out _);
+
+    RayKind kind = scratch.NextKind;
+    scratch.NextKind = RayKind.Secondary;
+    Vector3d origin = p0, direction = p1;
+    observer.BeginRay(kind, depth, origin, direction);
+    long hash = Shade(scratch, depth, importance, origin, direction, color, out Intersection? hit);
+    observer.EndRay(kind, depth, origin, direction, hit);
+    return hash;
+  }
+
+  /// <summary>The body of <see cref="shade"/>; <paramref name="i"/> is the ray's completed hit (valid until the next ray at this depth).</summary>
+  long Shade(ShadingScratch scratch, int depth, double importance, Vector3d p0, Vector3d p1, double[] color, out Intersection? i)
   {
     IRayScene sc = Scene;
     Vector3d direction = p1;
-    ShadingScratch scratch = ShadingScratch.Current;
-    Intersection? i = FirstHitAt(scratch, depth, p0, direction);
+    i = FirstHitAt(scratch, depth, p0, direction);
     if (i == null)
     {
       rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerNormal, depth, p0, direction * 100000.0);
@@ -177,6 +207,8 @@ public class RayTracing : RayCasting
         double newImportance = importance * maxK;
         if (newImportance >= MinImportance)
         {
+          if (scratch.Observer != null)
+            scratch.NextKind = RayKind.Reflected;
           hash += HASH_REFLECT * shade(depth, newImportance, ref origin, ref r, comp);
           for (int b = 0; b < bands; b++)
             color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
@@ -195,6 +227,8 @@ public class RayTracing : RayCasting
       Vector3d r = Geometry.SpecularRefraction(i.Normal, i.Material.n, viewer);
       if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0)
         return hash;
+      if (scratch.Observer != null)
+        scratch.NextKind = RayKind.Refracted;
       hash += HASH_REFRACT * shade(depth, newImportance, ref origin, ref r, comp);
       AddScaled(color, comp, kt);
     }
@@ -255,8 +289,16 @@ public class RayTracing : RayCasting
     double transmit = 1.0;
     if (DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0))
     {
-      transmit = TransparentShadows ? ShadowTransmittance(i.CoordWorld, dir)
-        : (occludedOverridden ? Occluded(i.CoordWorld, dir) : Occluded(scratch, i.CoordWorld, dir)) ? 0.0 : 1.0;
+      if (TransparentShadows)
+      {
+        scratch.Rays++;
+        transmit = ShadowTransmittance(i.CoordWorld, dir);
+        if (transmit <= 0.0)
+          scratch.Hits++;
+      }
+      else
+        transmit = (occludedOverridden ? Occluded(i.CoordWorld, dir) : Occluded(scratch, i.CoordWorld, dir)) ? 0.0 : 1.0;
+      scratch.Observer?.ShadowRay(i.CoordWorld, dir, transmit <= 0.0);
       if (transmit <= 0.0)
         return hash;
     }

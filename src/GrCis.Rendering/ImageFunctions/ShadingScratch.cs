@@ -4,7 +4,7 @@ namespace Rendering;
 
 /// <summary>
 /// One worker thread's shading state, fetched with one thread-static look-up per shaded ray instead of one
-/// per use: its ray count, and per recursion depth the reusable intersection, the material copy that
+/// per use: its ray and hit counts, the observer of its render (<see cref="Execution.RenderContext"/>), and per recursion depth the reusable intersection, the material copy that
 /// carries the surface colour and the buffer a secondary ray's colour is returned in. A depth's objects are
 /// only used while that depth's shade() runs, so deeper levels never overwrite them.
 /// </summary>
@@ -17,6 +17,15 @@ internal sealed class ShadingScratch
 
   /// <summary>Rays counted on this thread (<see cref="Execution.RayCounter"/>).</summary>
   public long Rays;
+
+  /// <summary>Of those, rays that hit something (blocked shadow rays included).</summary>
+  public long Hits;
+
+  /// <summary>The observer of the render this thread works for (<see cref="Execution.RenderContext"/>); null = none.</summary>
+  public Observation.RayObserver? Observer;
+
+  /// <summary>Kind of the next shaded ray, set by its caller for the observer; read once, then back to Secondary.</summary>
+  public Observation.RayKind NextKind = Observation.RayKind.Secondary;
 
   PhongMaterial?[] materials = new PhongMaterial?[16];
   double[]?[] buffers = new double[]?[16];

@@ -1,4 +1,4 @@
-namespace GrCis.Interactive;
+namespace Rendering.Observation;
 
 /// <summary>Why a ray was traced.</summary>
 public enum RayKind
@@ -15,6 +15,6 @@ public enum RayKind
   /// <summary>Bent through the surface at the parent hit.</summary>
   Refracted,
 
-  /// <summary>Asked for by a solid's own recursion function (<see cref="Rendering.RecursionFunction"/>).</summary>
+  /// <summary>Asked for by a solid's own recursion function (<see cref="Rendering.RecursionFunction"/>) or a subclass.</summary>
   Secondary,
 }
