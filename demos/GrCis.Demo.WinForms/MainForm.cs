@@ -5,6 +5,7 @@ using System.Threading;
 using System.Threading.Tasks;
 using System.Windows.Forms;
 using GrCis.Interactive;
+using GrCis.Hosting;
 
 namespace GrCis.Demo.WinForms;
 
@@ -122,11 +123,11 @@ sealed class MainForm : Form
 
     resolution.Click += (_, _) => ChooseResolution();
     supersampling.ValueChanged += (_, _) => Apply(s => s with { SamplesPerPixel = (int)supersampling.Value });
-    jitter.CheckedChanged += (_, _) => Apply(s => s with { Jittering = jitter.Checked ? 1.0 : 0.0 });
+    jitter.CheckedChanged += (_, _) => Apply(s => s with { Jitter = jitter.Checked ? 1.0 : 0.0 });
     shadows.CheckedChanged += (_, _) => Apply(s => s with { Shadows = shadows.Checked });
     reflections.CheckedChanged += (_, _) => Apply(s => s with { Reflections = reflections.Checked });
     refractions.CheckedChanged += (_, _) => Apply(s => s with { Refractions = refractions.Checked });
-    multithreading.CheckedChanged += (_, _) => Apply(s => s with { Multithreading = multithreading.Checked });
+    multithreading.CheckedChanged += (_, _) => Apply(s => s with { Threads = multithreading.Checked ? 0 : 1 });
 
     render.Click += async (_, _) => await RenderAsync();
     stop.Click += (_, _) => controller.Stop();
@@ -186,11 +187,11 @@ sealed class MainForm : Form
     RenderSettings s = controller.Settings;
     resolution.Text = $"Resolution {s.Width} x {s.Height}";
     supersampling.Value = Math.Clamp(s.SamplesPerPixel, (int)supersampling.Minimum, (int)supersampling.Maximum);
-    jitter.Checked = s.Jittering > 0.0;
+    jitter.Checked = s.Jitter > 0.0;
     shadows.Checked = s.Shadows;
     reflections.Checked = s.Reflections;
     refractions.Checked = s.Refractions;
-    multithreading.Checked = s.Multithreading;
+    multithreading.Checked = s.Threads != 1;
   }
 
   void Apply(Func<RenderSettings, RenderSettings> change) => controller.Settings = change(controller.Settings);
@@ -229,7 +230,7 @@ sealed class MainForm : Form
     {
       await controller.RenderAsync();
     }
-    catch (ArgumentOutOfRangeException ex)
+    catch (ArgumentException ex)
     {
       // A setting out of range (RenderSettings.Validate): a message, not a crash.
       MessageBox.Show(this, ex.Message, Text, MessageBoxButtons.OK, MessageBoxIcon.Warning);

@@ -4,6 +4,7 @@ using System.Threading;
 using System.Threading.Tasks;
 using Rendering;
 using Rendering.Execution;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive;
 

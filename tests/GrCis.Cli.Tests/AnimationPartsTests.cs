@@ -2,6 +2,7 @@ using System.IO;
 using System.Linq;
 using GrCis.Cli.Animation;
 using GrCis.Cli.Jobs;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Tests;
 
@@ -69,7 +70,7 @@ public class AnimationPartsTests
     var size = new ImageSize(6, 4);
     var store = new FrameStore(FramePattern.Parse("f##.png", dir.Path), size, 1.0);
     store.Prepare();
-    var renderer = new FrameRenderer(TestAnimations.Clock(), new RenderSettings { Size = size }, new Rendering.AnimationTimeline(0, 10, 1));
+    var renderer = new FrameRenderer(TestAnimations.Clock(), new RenderSettings { Width = size.Width, Height = size.Height }, new Rendering.AnimationTimeline(0, 10, 1));
     var saved = new System.Collections.Generic.List<int>();
     int n = new FrameScheduler(renderer, store).Run(Enumerable.Range(2, count).ToList(), mode, threads, saved.Add, default);
 

@@ -5,6 +5,7 @@ using System.IO;
 using System.IO.Compression;
 using System.Linq;
 using GrCis.Cli.Jobs;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Tests;
 

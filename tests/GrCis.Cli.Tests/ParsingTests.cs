@@ -1,5 +1,6 @@
 using GrCis.Cli.Jobs;
 using GrCis.Cli.SceneSources;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Tests;
 

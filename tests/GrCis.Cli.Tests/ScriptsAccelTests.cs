@@ -6,6 +6,7 @@ using GrCis.Cli.Jobs;
 using GrCis.Cli.SceneSources;
 using Rendering.Accel;
 using Rendering.Imaging;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Tests;
 
@@ -23,9 +24,9 @@ public class ScriptsAccelTests
 
   static FloatImage Render(string file, AccelMode accel)
   {
-    var settings = new RenderSettings { Size = new ImageSize(Width, Height), Threads = 2, Accel = accel };
+    var settings = new RenderSettings { Width = Width, Height = Height, Threads = 2, Accel = accel };
     using var source = new ScriptSceneSource(RepoPaths.Script(file), "", Array.Empty<string>());
-    SceneSetup setup = SceneSetup.Create(source, settings, new ExplicitOptions(Size: true), null);
+    SceneSetup setup = SceneSetup.Create(source, settings, GivenSettings.Size | GivenSettings.Accel, null);
     return RenderJob.Run(setup.Scene, setup.Settings, setup.ImageFunction, setup.Synthesizer, null, default).Image;
   }
 

@@ -6,6 +6,7 @@ using GrCis.Cli.Jobs;
 using GrCis.Cli.SceneSources;
 using Rendering;
 using Rendering.Imaging;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Tests;
 
@@ -69,10 +70,10 @@ public class ScriptsFolderTests
   [MemberData(nameof(ClassicCases))]
   public void Classic_script_renders_the_same_image_as_the_builtin_scene(string file, string builtInName, string param)
   {
-    var settings = new RenderSettings { Size = new ImageSize(Width, Height), Threads = 2 };
+    var settings = new RenderSettings { Width = Width, Height = Height, Threads = 2 };
 
     using var source = new ScriptSceneSource(RepoPaths.Script(file), param, Array.Empty<string>());
-    SceneSetup setup = SceneSetup.Create(source, settings, new ExplicitOptions(Size: true), null);
+    SceneSetup setup = SceneSetup.Create(source, settings, GivenSettings.Size, null);
     Assert.Empty(setup.Notes);
     FloatImage fromScript = RenderJob.Run(setup.Scene, setup.Settings, setup.ImageFunction, setup.Synthesizer, null, default).Image;
 
@@ -90,9 +91,9 @@ public class ScriptsFolderTests
   [MemberData(nameof(FeatureCases))]
   public void Feature_script_renders_a_non_flat_image(string file)
   {
-    var settings = new RenderSettings { Size = new ImageSize(Width, Height), Threads = 2 };
+    var settings = new RenderSettings { Width = Width, Height = Height, Threads = 2 };
     using var source = new ScriptSceneSource(RepoPaths.Script(file), "", Array.Empty<string>());
-    SceneSetup setup = SceneSetup.Create(source, settings, new ExplicitOptions(Size: true), null);
+    SceneSetup setup = SceneSetup.Create(source, settings, GivenSettings.Size, null);
     FloatImage image = RenderJob.Run(setup.Scene, setup.Settings, setup.ImageFunction, setup.Synthesizer, null, default).Image;
 
     Assert.Equal(Width, image.Width);

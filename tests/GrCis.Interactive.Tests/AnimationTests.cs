@@ -5,6 +5,7 @@ using System.Linq;
 using System.Threading.Tasks;
 using OpenTK.Mathematics;
 using Rendering;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive.Tests;
 

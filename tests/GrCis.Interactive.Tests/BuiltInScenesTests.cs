@@ -7,6 +7,7 @@ using OpenTK.Mathematics;
 using Rendering;
 using Rendering.Observation;
 using Rendering.Imaging;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive.Tests;
 

@@ -3,6 +3,7 @@ using System.IO;
 using System.Threading.Tasks;
 using Rendering.Imaging;
 using Rendering.Observation;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive.Tests;
 

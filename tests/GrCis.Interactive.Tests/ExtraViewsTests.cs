@@ -3,6 +3,7 @@ using System.IO;
 using System.Linq;
 using OpenTK.Mathematics;
 using Rendering.Imaging;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive.Tests;
 

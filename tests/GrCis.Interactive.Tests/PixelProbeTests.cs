@@ -3,6 +3,7 @@ using System.Linq;
 using OpenTK.Mathematics;
 using Rendering;
 using Rendering.Observation;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive.Tests;
 

@@ -2,6 +2,7 @@ using System;
 using System.IO;
 using System.Linq;
 using Rendering.Imaging;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive.Tests;
 

@@ -6,6 +6,7 @@ using System.Threading.Tasks;
 using Rendering;
 using Rendering.Execution;
 using Rendering.Imaging;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive.Tests;
 
@@ -58,7 +59,7 @@ public class RenderSessionTests
   [Fact]
   public async Task Same_image_for_one_thread_and_many_and_with_glass()
   {
-    RenderSettings one = Small with { Multithreading = false };
+    RenderSettings one = Small with { Threads = 1 };
     using var a = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(glass: true), one));
     using var b = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(glass: true), Small with { Threads = 4 }));
     float[] ia = (await a.Start()).Image.Data, ib = (await b.Start()).Image.Data;
@@ -69,7 +70,7 @@ public class RenderSessionTests
   [Fact]
   public async Task Stop_after_five_tiles_keeps_exactly_those_tiles()
   {
-    RenderSettings s = Small with { Multithreading = false };
+    RenderSettings s = Small with { Threads = 1 };
     using var session = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(), s));
     // One thread runs tiles in order and checks for a stop between tiles: exactly five finish.
     session.ProgressChanged += (_, e) => { if (e.Progress.TilesDone == 5) session.Stop(); };
@@ -114,7 +115,7 @@ public class RenderSessionTests
   {
     var scene = TestScenes.PlaneAt(5);
     var slow = new SlowFunction(TimeSpan.FromMilliseconds(1), new RayTracing(scene));
-    RenderSettings s = new() { Width = 40, Height = 30, TileSize = 40, Multithreading = false };
+    RenderSettings s = new() { Width = 40, Height = 30, TileSize = 40, Threads = 1 };
     using var session = new RenderSession(RenderJob.Create(scene, s, slow)) { PreviewInterval = TimeSpan.FromMilliseconds(250) };
     var times = new List<(PreviewPass Pass, TimeSpan At)>();
     var clock = System.Diagnostics.Stopwatch.StartNew();

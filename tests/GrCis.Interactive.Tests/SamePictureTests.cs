@@ -6,6 +6,7 @@ using Rendering;
 using Rendering.Execution;
 using Rendering.Imaging;
 using Rendering.Observation;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive.Tests;
 

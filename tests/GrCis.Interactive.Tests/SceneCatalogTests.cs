@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Linq;
 using Rendering;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive.Tests;
 

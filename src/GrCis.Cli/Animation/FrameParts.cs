@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using GrCis.Cli.Jobs;
 using Rendering;
 using Rendering.Execution;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Animation;
 
@@ -37,17 +38,14 @@ public sealed class FrameParts
   {
     if (scriptFunction == null)
     {
-      RayTracing fresh = RenderSetup.CreateRayTracing(scene, settings.Shadows, settings.Reflections, settings.Refractions);
-      fresh.Accel = settings.Accel;
-      return fresh;
+      return settings.CreateImageFunction(scene);
     }
     if (Sequential || !IsLibraryRayCaster(scriptFunction))
       return scriptFunction;
 
     var source = (RayCasting)scriptFunction;
     RayCasting copy = source is RayTracing ? new RayTracing(scene) : new RayCasting(scene);
-    copy.CopySettingsFrom(source);
-    copy.Accel = settings.Accel;
+    copy.CopySettingsFrom(source);   // --accel, when given, was applied to the script's function (Precedence)
     return copy;
   }
 

@@ -4,6 +4,7 @@ using GrCis.Cli.Jobs;
 using Rendering;
 using Rendering.Execution;
 using Rendering.Imaging;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Animation;
 

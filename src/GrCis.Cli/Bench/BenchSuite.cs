@@ -7,6 +7,7 @@ using GrCis.Cli.Jobs;
 using Rendering;
 using Rendering.Accel;
 using Rendering.Execution;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Bench;
 
@@ -142,7 +143,7 @@ public static class BenchSuite
 
   internal static RenderResult Render(IRayScene scene, ImageSize size, int spp, int threads, AccelMode accel, CancellationToken cancel, out long fallbacks)
   {
-    var settings = new RenderSettings { Size = size, SamplesPerPixel = spp, Threads = threads, Accel = accel }.Validate();
+    var settings = new RenderSettings { Width = size.Width, Height = size.Height, SamplesPerPixel = spp, Threads = threads, Accel = accel }.Validate();
     ImageSynthesizer renderer = RenderJob.CreateSynthesizer(settings);
     RayTracing function = RenderJob.CreateImageFunction(scene, settings);
     var clock = Stopwatch.StartNew();

@@ -7,6 +7,7 @@ using GrCis.Cli.Jobs;
 using GrCis.Cli.ProgressViews;
 using GrCis.Cli.SceneSources;
 using GrCis.Scripting;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Commands;
 

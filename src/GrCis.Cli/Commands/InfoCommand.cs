@@ -5,6 +5,7 @@ using GrCis.Cli.Jobs;
 using GrCis.Cli.SceneSources;
 using GrCis.Scripting;
 using Rendering;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Commands;
 

@@ -11,6 +11,7 @@ using GrCis.Cli.SceneSources;
 using GrCis.Scripting;
 using Rendering;
 using Rendering.Parts;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Commands;
 

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using GrCis.Cli.Jobs;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Commands;
 
@@ -55,21 +56,26 @@ public sealed class RenderOptionSet
   }
 
   /// <summary>Which options the user typed (they win over a scene script's context values).</summary>
-  public ExplicitOptions Given(ParseResult parse) => new(
-    Size: IsGiven(parse, size),
-    SamplesPerPixel: IsGiven(parse, spp),
-    Jitter: IsGiven(parse, jitter),
-    Gamma: IsGiven(parse, gamma),
-    NoShadows: parse.GetValue(noShadows),
-    NoReflections: parse.GetValue(noReflections),
-    NoRefractions: parse.GetValue(noRefractions));
+  public GivenSettings Given(ParseResult parse) =>
+    (IsGiven(parse, size) ? GivenSettings.Size : 0) |
+    (IsGiven(parse, spp) ? GivenSettings.SamplesPerPixel : 0) |
+    (IsGiven(parse, jitter) ? GivenSettings.Jitter : 0) |
+    (IsGiven(parse, gamma) ? GivenSettings.Gamma : 0) |
+    (IsGiven(parse, accel) ? GivenSettings.Accel : 0) |
+    (parse.GetValue(noShadows) ? GivenSettings.Shadows : 0) |
+    (parse.GetValue(noReflections) ? GivenSettings.Reflections : 0) |
+    (parse.GetValue(noRefractions) ? GivenSettings.Refractions : 0);
 
   static bool IsGiven(ParseResult parse, Option option) => parse.GetResult(option) is { Implicit: false };
 
   /// <exception cref="UsageException">A value outside its allowed range.</exception>
-  public RenderSettings Read(ParseResult parse) => new RenderSettings
+  public RenderSettings Read(ParseResult parse)
   {
-    Size = ImageSize.Parse(parse.GetValue(size) ?? ImageSize.Default.ToString()),
+    ImageSize imageSize = ImageSize.Parse(parse.GetValue(size) ?? ImageSize.Default.ToString());
+    return new RenderSettings
+    {
+    Width = imageSize.Width,
+    Height = imageSize.Height,
     SamplesPerPixel = parse.GetValue(spp),
     Jitter = parse.GetValue(jitter),
     Threads = parse.GetValue(threads),
@@ -79,5 +85,6 @@ public sealed class RenderOptionSet
     Reflections = !parse.GetValue(noReflections),
     Refractions = !parse.GetValue(noRefractions),
     Accel = AccelOption.Parse(parse.GetValue(accel)),
-  }.Validate();
+    }.ValidateOptions();
+  }
 }

@@ -4,6 +4,7 @@ using System.Diagnostics;
 using System.Threading;
 using Rendering;
 using Rendering.Execution;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Jobs;
 
@@ -15,15 +16,9 @@ namespace GrCis.Cli.Jobs;
 public static class RenderJob
 {
   // The construction is shared with the interactive demo (RenderSetup), so both make the same image.
-  public static ImageSynthesizer CreateSynthesizer(RenderSettings s) =>
-    RenderSetup.CreateSynthesizer(s.Size.Width, s.Size.Height, s.SamplesPerPixel, s.Jitter, s.Gamma);
+  public static ImageSynthesizer CreateSynthesizer(RenderSettings s) => s.CreateSynthesizer();
 
-  public static RayTracing CreateImageFunction(IRayScene scene, RenderSettings s)
-  {
-    RayTracing rt = RenderSetup.CreateRayTracing(scene, s.Shadows, s.Reflections, s.Refractions);
-    rt.Accel = s.Accel;
-    return rt;
-  }
+  public static RayTracing CreateImageFunction(IRayScene scene, RenderSettings s) => s.CreateImageFunction(scene);
 
   public static RenderResult Run(IRayScene scene, RenderSettings settings, Action<RenderProgress>? progress, CancellationToken cancel) =>
     Run(scene, settings, null, null, progress, cancel);
@@ -35,8 +30,6 @@ public static class RenderJob
   {
     ImageSynthesizer renderer = synthesizer ?? CreateSynthesizer(settings);
     IImageFunction function = imageFunction ?? CreateImageFunction(scene, settings);
-    if (function is RayCasting rc)
-      rc.Accel = settings.Accel;   // a script's own RayTracing honours --accel too
     var options = new RenderOptions { Threads = settings.Threads, Seed = settings.Seed, Tiles = tiles };
 
     var clock = Stopwatch.StartNew();

@@ -9,6 +9,7 @@ using GrCis.Cli.Animation;
 using GrCis.Cli.SceneSources;
 using Rendering;
 using Rendering.Parts;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Jobs;
 

@@ -1,5 +1,6 @@
 using System;
 using Rendering.Imaging;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive;
 

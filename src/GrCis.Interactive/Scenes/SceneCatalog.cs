@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using Rendering;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive;
 

@@ -1,4 +1,5 @@
 using System;
+using GrCis.Hosting;
 using Rendering;
 using Rendering.Execution;
 
@@ -40,72 +41,88 @@ public sealed class RenderJob
 
   public RenderOptions Options => Settings.ToRenderOptions();
 
+  /// <summary>
+  /// What a demo user sets explicitly, winning over a script (<see cref="Precedence"/>): the ray-tracing switches,
+  /// whose check boxes apply to a script's ray tracer as in GrCis. Size and sampling are the script's when it sets them.
+  /// </summary>
+  public const GivenSettings Given = GivenSettings.Switches;
+
   /// <summary>The image function the settings select: Whitted ray tracing with the three switches.</summary>
   public static RayTracing CreateImageFunction(IRayScene scene, RenderSettings settings)
   {
     ArgumentNullException.ThrowIfNull(scene);
     ArgumentNullException.ThrowIfNull(settings);
     // Unbound: it shades MT.scene, so each render worker uses its own clone of an animated scene.
-    return RenderSetup.CreateRayTracing(null, settings.Shadows, settings.Reflections, settings.Refractions);
+    return settings.CreateImageFunction(null);
   }
 
   /// <summary>The renderer the settings select: one centred sample, or n×n (jittered) supersampling.</summary>
   public static ImageSynthesizer CreateRenderer(RenderSettings settings)
   {
     ArgumentNullException.ThrowIfNull(settings);
-    return RenderSetup.CreateSynthesizer(settings.Width, settings.Height, settings.SamplesPerPixel, settings.Jittering, settings.Gamma);
+    return settings.CreateSynthesizer();
   }
 
-  /// <summary>A job for <paramref name="scene"/>; <paramref name="function"/> and <paramref name="renderer"/> default from the settings.</summary>
+  /// <summary>
+  /// A job for <paramref name="scene"/>: the script's <paramref name="overrides"/>, <paramref name="function"/> and
+  /// <paramref name="renderer"/> (null = not chosen) resolved against <paramref name="settings"/> by the shared precedence rule.
+  /// </summary>
+  /// <exception cref="SceneEvaluationException">The script asks for an image size or supersampling out of range.</exception>
+  /// <exception cref="InvalidSettingException">A setting out of range.</exception>
   public static RenderJob Create(IRayScene scene, RenderSettings settings, IImageFunction? function = null, IRenderer? renderer = null,
-    string? sceneName = null, string param = "")
+    string? sceneName = null, string param = "", SceneOverrides? overrides = null)
   {
     ArgumentNullException.ThrowIfNull(scene);
     ArgumentNullException.ThrowIfNull(settings);
-    settings.Validate();
+    var choices = new ScriptChoices
+    {
+      Name = sceneName ?? "the scene",
+      Width = overrides?.Width,
+      Height = overrides?.Height,
+      SamplesPerPixel = overrides?.Supersampling,
+      ImageFunction = function,
+      Renderer = renderer,
+    };
+    RenderPlan plan;
+    try
+    {
+      plan = Precedence.Resolve(settings, Given, choices);
+    }
+    catch (ScriptChoiceException e)
+    {
+      throw new SceneEvaluationException(e.Message);
+    }
+    settings = plan.Settings;
 
     if (settings.Time is double t)
       SceneTime.Set(scene, t);
 
-    if (function == null)
-      function = CreateImageFunction(scene, settings);
-    else if (function is RayTracing rt)
-      ApplySwitches(rt, settings); // the demo's switches apply to a script's ray tracer too, as in GrCis
-
-    ImageSynthesizer synth;
-    if (renderer == null)
-      synth = CreateRenderer(settings);
-    else
-    {
-      synth = renderer as ImageSynthesizer
-        ?? throw new SceneEvaluationException($"The script's renderer {renderer.GetType().Name} is not an ImageSynthesizer; the tile renderer cannot drive it.");
-      synth.Width = settings.Width;
-      synth.Height = settings.Height;
-    }
+    IImageFunction f = plan.CreateImageFunction();   // unbound when from the settings (see CreateImageFunction)
+    ImageSynthesizer synth = plan.CreateSynthesizer();
 
     // What TileRenderer does at the start of a render; done here too so probes work before any render.
-    synth.ImageFunction = function;
+    synth.ImageFunction = f;
     IRayScene? callerScene = MT.scene;
     MT.scene = scene; // an unbound function reaches the camera through MT.scene
     try
     {
-      function.Width = settings.Width;
-      function.Height = settings.Height;
+      f.Width = settings.Width;
+      f.Height = settings.Height;
     }
     finally
     {
       MT.scene = callerScene;
     }
-    return new RenderJob(scene, function, synth, settings, sceneName, param);
+    return new RenderJob(scene, f, synth, settings, sceneName, param) { Notes = plan.Notes };
   }
 
-  /// <summary>A job for a built scene: the script's overrides and its chosen function/renderer win.</summary>
+  /// <summary>Things the user should know about how the script's choices were used (<see cref="RenderPlan.Notes"/>).</summary>
+  public System.Collections.Generic.IReadOnlyList<string> Notes { get; private init; } = Array.Empty<string>();
+
+  /// <summary>A job for a built scene: the script's overrides and its chosen function/renderer, by the precedence rule.</summary>
   public static RenderJob Create(BuiltScene built, RenderSettings settings)
   {
     ArgumentNullException.ThrowIfNull(built);
-    return Create(built.Scene, settings.With(built.Overrides), built.ImageFunction, built.Renderer, built.Entry.Name, built.Param);
+    return Create(built.Scene, settings, built.ImageFunction, built.Renderer, built.Entry.Name, built.Param, built.Overrides);
   }
-
-  static void ApplySwitches(RayTracing rt, RenderSettings s) =>
-    RenderSetup.ApplySwitches(rt, s.Shadows, s.Reflections, s.Refractions);
 }

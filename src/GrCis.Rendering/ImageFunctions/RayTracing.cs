@@ -76,9 +76,6 @@ public class RayTracing : RayCasting
     ICamera? camera = Scene.Camera;
     if (camera == null || !camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))
       return 11L;
-    ShadingScratch scratch = ShadingScratch.Current;
-    if (scratch.Observer != null)
-      scratch.NextKind = RayKind.Primary;
     return shade(0, 1.0, ref p0, ref p1, color);
   }
 
@@ -118,7 +115,8 @@ public class RayTracing : RayCasting
     if (observer == null)
       return Shade(scratch, depth, importance, p0, p1, color, out _);
 
-    RayKind kind = scratch.NextKind;
+    // Depth 0 is the camera's ray; deeper rays were classified by the code that spawned them.
+    RayKind kind = depth == 0 ? RayKind.Primary : scratch.NextKind;
     scratch.NextKind = RayKind.Secondary;
     Vector3d origin = p0, direction = p1;
     observer.BeginRay(kind, depth, origin, direction);

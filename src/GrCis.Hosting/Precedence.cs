@@ -1,0 +1,96 @@
+using System;
+using System.Collections.Generic;
+using Rendering;
+
+namespace GrCis.Hosting;
+
+/// <summary>
+/// The one precedence rule of every front end: a setting the user gave explicitly, then the scene script's
+/// choice, then the default. So a script's size and supersampling count unless the user gave them; its
+/// renderer (CTX_SYNTHESIZER) is used unless a sampling setting was given; its image function (CTX_ALGORITHM)
+/// is used with the given switches applied, and replaced by ray tracing only when a given switch turns
+/// off something a function of another class cannot be told to skip.
+/// </summary>
+public static class Precedence
+{
+  /// <summary>Resolves <paramref name="requested"/> (given ones marked in <paramref name="given"/>) against the script's choices.</summary>
+  /// <param name="name">How the front end names a setting in notes (an option such as <c>--spp</c>); null = plain words.</param>
+  /// <exception cref="ScriptChoiceException">The script asks for an image size or a sample count out of range.</exception>
+  /// <exception cref="InvalidSettingException">A requested setting out of range.</exception>
+  public static RenderPlan Resolve(RenderSettings requested, GivenSettings given, ScriptChoices? script, Func<Setting, string>? name = null)
+  {
+    ArgumentNullException.ThrowIfNull(requested);
+    name ??= Words;
+    if (script == null)
+      return new RenderPlan(requested.Validate(), null, null, Array.Empty<string>());
+
+    RenderSettings s = requested;
+    var notes = new List<string>();
+
+    if (!given.HasFlag(GivenSettings.Size) && (script.Width != null || script.Height != null))
+    {
+      int w = script.Width ?? s.Width, h = script.Height ?? s.Height;
+      if (w <= 0 || h <= 0 || (long)w * h > Rendering.Imaging.Rgb8Image.MaxPixels)
+        throw new ScriptChoiceException($"{script.Name}: the script asks for the image size {w}x{h}, which is not a valid size");
+      s = s with { Width = w, Height = h };
+    }
+    if (!given.HasFlag(GivenSettings.SamplesPerPixel) && script.SamplesPerPixel is int spp)
+    {
+      if (spp < 1 || spp > RenderSettings.MaxSamplesPerPixel)
+        throw new ScriptChoiceException($"{script.Name}: the script asks for supersampling {spp}; it must be 1 to {RenderSettings.MaxSamplesPerPixel}");
+      s = s with { SamplesPerPixel = spp };
+    }
+    if (!given.HasFlag(GivenSettings.Time) && script.Time is double t)
+      s = s with { Time = t };
+
+    ImageSynthesizer? synthesizer = null;
+    if (script.Renderer != null)
+    {
+      string type = script.Renderer.GetType().Name;
+      if ((given & GivenSettings.Sampling) != 0)
+        notes.Add($"{name(Setting.SamplesPerPixel)}/{name(Setting.Jitter)} given: the script's renderer {type} is not used");
+      else if (script.Renderer is ImageSynthesizer synth)
+      {
+        synth.Width = s.Width;
+        synth.Height = s.Height;
+        synthesizer = synth;
+        if (!given.HasFlag(GivenSettings.Gamma))
+          s = s with { Gamma = synth.Gamma > 0.001 ? synth.Gamma : 1.0 };
+      }
+      else
+        notes.Add($"the script's renderer {type} is not an ImageSynthesizer; using the default renderer");
+    }
+
+    IImageFunction? function = null;
+    if (script.ImageFunction != null)
+    {
+      if (given.HasFlag(GivenSettings.Accel) && script.ImageFunction is RayCasting rc)
+        rc.Accel = s.Accel;
+      if (script.ImageFunction is RayTracing rt)
+      {
+        if (given.HasFlag(GivenSettings.Shadows)) rt.DoShadows = s.Shadows;
+        if (given.HasFlag(GivenSettings.Reflections)) rt.DoReflections = s.Reflections;
+        if (given.HasFlag(GivenSettings.Refractions)) rt.DoRefractions = s.Refractions;
+        function = rt;
+      }
+      else if (TurnsSomethingOff(s, given))
+        notes.Add($"{name(Setting.Shadows)}/{name(Setting.Reflections)}/{name(Setting.Refractions)} given: the script's image function {script.ImageFunction.GetType().Name} is replaced by RayTracing");
+      else
+        function = script.ImageFunction;
+    }
+
+    return new RenderPlan(s.Validate(), function, synthesizer, notes);
+  }
+
+  static bool TurnsSomethingOff(RenderSettings s, GivenSettings given) =>
+    (given.HasFlag(GivenSettings.Shadows) && !s.Shadows) ||
+    (given.HasFlag(GivenSettings.Reflections) && !s.Reflections) ||
+    (given.HasFlag(GivenSettings.Refractions) && !s.Refractions);
+
+  static string Words(Setting setting) => setting switch
+  {
+    Setting.SamplesPerPixel => "samples per pixel",
+    Setting.TileSize => "tile size",
+    _ => setting.ToString().ToLowerInvariant(),
+  };
+}

@@ -1,0 +1,34 @@
+using System.Collections.Generic;
+using Rendering;
+
+namespace GrCis.Hosting;
+
+/// <summary>What <see cref="Precedence.Resolve"/> decided: the effective settings and the script's objects that render.</summary>
+public sealed class RenderPlan
+{
+  internal RenderPlan(RenderSettings settings, IImageFunction? function, ImageSynthesizer? synthesizer, IReadOnlyList<string> notes)
+  {
+    Settings = settings;
+    ImageFunction = function;
+    Synthesizer = synthesizer;
+    Notes = notes;
+  }
+
+  /// <summary>Settings after precedence, validated (what the render and its summary use).</summary>
+  public RenderSettings Settings { get; }
+
+  /// <summary>The script's image function (given switches applied), or null for <see cref="RenderSettings.CreateImageFunction"/>.</summary>
+  public IImageFunction? ImageFunction { get; }
+
+  /// <summary>The script's renderer (sized to the image), or null for <see cref="RenderSettings.CreateSynthesizer"/>.</summary>
+  public ImageSynthesizer? Synthesizer { get; }
+
+  /// <summary>Things the user should know: a script object not used, and why.</summary>
+  public IReadOnlyList<string> Notes { get; }
+
+  /// <summary>The image function to render with: the script's, else a new one from the settings.</summary>
+  public IImageFunction CreateImageFunction(IRayScene? scene = null) => ImageFunction ?? Settings.CreateImageFunction(scene);
+
+  /// <summary>The renderer to render with: the script's, else a new one from the settings.</summary>
+  public ImageSynthesizer CreateSynthesizer() => Synthesizer ?? Settings.CreateSynthesizer();
+}
