@@ -10,26 +10,24 @@ namespace Rendering.Accel;
 /// </summary>
 internal static class FaithfulQuery
 {
-  [System.ThreadStatic]
-  static bool active;
-
-  /// <summary>True while a faithful query runs on this thread.</summary>
-  public static bool Active => active;
+  /// <summary>True while a faithful query runs on this thread (kept in the thread's shading state).</summary>
+  public static bool Active => ShadingScratch.Current.FaithfulQuery;
 
   /// <summary>All records of <paramref name="node"/> along <c>p0 + t p1</c>, searched as GrCis did.</summary>
   public static LinkedList<Intersection>? Intersect(IIntersectable? node, in Vector3d p0, in Vector3d p1)
   {
     if (node == null)
       return null;
-    bool outer = active;
-    active = true;
+    ShadingScratch scratch = ShadingScratch.Current;
+    bool outer = scratch.FaithfulQuery;
+    scratch.FaithfulQuery = true;
     try
     {
       return node.Intersect(p0, p1);
     }
     finally
     {
-      active = outer;
+      scratch.FaithfulQuery = outer;
     }
   }
 }

@@ -71,7 +71,7 @@ public static class TileRenderer
     var failure = new EarliestFailure();
     object progressLock = new();
     context ??= new RenderContext();
-    long raysBefore = context.Rays;
+    long raysBefore = context.Rays, hitsBefore = context.Hits;
 
     int nextWorker = -1;
     MT.threads = threads;
@@ -138,6 +138,7 @@ public static class TileRenderer
     // Publish this render's rays to GrCis's global counters once (workers counted per thread).
     long renderRays = context.Rays - raysBefore;
     Interlocked.Add(ref Intersection.countRays, renderRays);
+    Interlocked.Add(ref Intersection.countIntersections, context.Hits - hitsBefore);
     Interlocked.Add(ref Statistics.allRaysCount, (int)Math.Min(renderRays, int.MaxValue));
 
     if (failure.Exception is Exception e)

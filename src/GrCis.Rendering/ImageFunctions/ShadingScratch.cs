@@ -24,6 +24,9 @@ internal sealed class ShadingScratch
   /// <summary>The observer of the render this thread works for (<see cref="Execution.RenderContext"/>); null = none.</summary>
   public Observation.RayObserver? Observer;
 
+  /// <summary>True while a faithful (GrCis-style, no search structure) query runs on this thread (<see cref="Accel.FaithfulQuery"/>).</summary>
+  public bool FaithfulQuery;
+
   /// <summary>Kind of the next shaded ray, set by its caller for the observer; read once, then back to Secondary.</summary>
   public Observation.RayKind NextKind = Observation.RayKind.Secondary;
 

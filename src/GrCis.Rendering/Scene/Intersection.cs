@@ -289,6 +289,6 @@ public class Intersection : IComparable<Intersection>
   /// <summary>Rays cast by finished renders (statistics): workers count per thread (<see cref="Execution.RayCounter"/>) and each render adds its total here when it ends.</summary>
   public static long countRays;
 
-  /// <summary>Number of intersection queries (statistics).</summary>
+  /// <summary>Rays of finished renders that hit something (statistics; a blocked shadow ray counts), added per render as <see cref="countRays"/>.</summary>
   public static long countIntersections;
 }

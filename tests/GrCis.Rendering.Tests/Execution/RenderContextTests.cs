@@ -107,19 +107,21 @@ public class RenderContextTests
   }
 
   [Fact]
-  public void Each_render_counts_its_own_rays_and_adds_them_to_GrCis_counter_once()
+  public void Each_render_counts_its_own_rays_and_hits_and_adds_them_to_GrCis_counters_once()
   {
     IRayScene scene = TestScenes.BallOnGround(areaLight: true);
     var one = new RenderContext();
     Render(scene, new RayTracing(scene), one, threads: 1);
-    long before = Interlocked.Read(ref Intersection.countRays);
+    long before = Interlocked.Read(ref Intersection.countRays), hitsBefore = Interlocked.Read(ref Intersection.countIntersections);
     var three = new RenderContext();
     Render(scene, new RayTracing(scene), three, threads: 3);
-    long after = Interlocked.Read(ref Intersection.countRays);
+    long after = Interlocked.Read(ref Intersection.countRays), hitsAfter = Interlocked.Read(ref Intersection.countIntersections);
 
     Assert.True(one.Rays > 48 * 36 * 4);
     Assert.Equal(one.Rays, three.Rays);            // the count of a render does not depend on threads
     Assert.True(after - before >= three.Rays);     // other tests may render at the same time
+    Assert.Equal(one.Hits, three.Hits);
+    Assert.True(three.Hits > 0 && hitsAfter - hitsBefore >= three.Hits);
   }
 
   [Fact]
