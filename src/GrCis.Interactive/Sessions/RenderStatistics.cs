@@ -12,10 +12,10 @@ public sealed record RenderStatistics
   public int Threads { get; init; }
   public int SamplesPerPixel { get; init; }
 
-  /// <summary>Rays traced (primary, shadow, secondary). Exact when the image function is plain ray tracing; otherwise the library's global counter, approximate under threads.</summary>
+  /// <summary>Rays traced (primary, shadow, secondary), counted per thread into the render's context: exact whatever the image function and threads.</summary>
   public long Rays { get; init; }
 
-  /// <summary>Rays that hit something.</summary>
+  /// <summary>Rays that hit something (a blocked shadow ray counts).</summary>
   public long Intersections { get; init; }
 
   public int TilesDone { get; init; }
