@@ -113,20 +113,20 @@ public class RayTracing : RayCasting
     ShadingScratch scratch = ShadingScratch.Current;
     RayObserver? observer = scratch.Observer;
     if (observer == null)
-      return Shade(scratch, depth, importance, p0, p1, color, out _);
+      return Shade(scratch, depth, importance, in p0, in p1, color, out _);
 
     // Depth 0 is the camera's ray; deeper rays were classified by the code that spawned them.
     RayKind kind = depth == 0 ? RayKind.Primary : scratch.NextKind;
     scratch.NextKind = RayKind.Secondary;
     Vector3d origin = p0, direction = p1;
     observer.BeginRay(kind, depth, origin, direction);
-    long hash = Shade(scratch, depth, importance, origin, direction, color, out Intersection? hit);
+    long hash = Shade(scratch, depth, importance, in origin, in direction, color, out Intersection? hit);
     observer.EndRay(kind, depth, origin, direction, hit);
     return hash;
   }
 
   /// <summary>The body of <see cref="shade"/>; <paramref name="i"/> is the ray's completed hit (valid until the next ray at this depth).</summary>
-  long Shade(ShadingScratch scratch, int depth, double importance, Vector3d p0, Vector3d p1, double[] color, out Intersection? i)
+  long Shade(ShadingScratch scratch, int depth, double importance, in Vector3d p0, in Vector3d p1, double[] color, out Intersection? i)
   {
     IRayScene sc = Scene;
     Vector3d direction = p1;
@@ -146,7 +146,7 @@ public class RayTracing : RayCasting
     Array.Clear(color);
 
     if (DoRecursion && i.RecursionAttribute is RecursionFunction recursion)
-      return ShadeRecursion(recursion, i, depth, importance, ref p1, color, hash);
+      return ShadeRecursion(recursion, i, depth, importance, ref direction, color, hash);
 
     Vector3d viewer = -p1.Normalized();
     double[] surface = i.SurfaceColor!;
