@@ -64,6 +64,6 @@ public sealed class FrameRenderer
       function = new MotionBlurImageFunction(function) { FrameTime = time, Shutter = Shutter, Fps = Timeline.Fps };
     ImageSynthesizer synthesizer = parts.CreateSynthesizer();
     var options = new RenderOptions { Threads = threads, Seed = Settings.Seed, Frame = frame };
-    return TileRenderer.Render(workerScene, function, synthesizer, options, progress, cancel);
+    return FrameRendering.Render(workerScene, function, synthesizer, options, progress, cancel).Image;
   }
 }

@@ -107,7 +107,7 @@ public static class BenchSuite
     }
 
     TimeSpan cpu0 = Process.GetCurrentProcess().TotalProcessorTime;
-    RenderResult fast = Render(scene, c.Size, c.Spp, threads, AccelMode.Bvh, cancel, out long fallbacks);
+    FrameResult fast = Render(scene, c.Size, c.Spp, threads, AccelMode.Bvh, cancel, out long fallbacks);
     double cpu = (Process.GetCurrentProcess().TotalProcessorTime - cpu0).TotalSeconds;
     var result = new BenchResult
     {
@@ -117,10 +117,10 @@ public static class BenchSuite
       Size = c.Size.ToString(),
       Spp = c.Spp,
       Threads = threads,
-      Seconds = fast.Elapsed.TotalSeconds,
+      Seconds = fast.Statistics.Elapsed.TotalSeconds,
       CpuSeconds = cpu,
-      Rays = fast.Rays,
-      RaysPerSecond = fast.Rays / Math.Max(fast.Elapsed.TotalSeconds, 1e-9),
+      Rays = fast.Statistics.Rays,
+      RaysPerSecond = fast.Statistics.Rays / Math.Max(fast.Statistics.Elapsed.TotalSeconds, 1e-9),
       PrepareSeconds = prepare,
       Fallbacks = fallbacks,
     };
@@ -129,28 +129,25 @@ public static class BenchSuite
 
     // Warm-up at the same small size first: a short faithful run would otherwise time tier-0 JIT code.
     Render(scene, c.SlowSize, c.SlowSpp, threads, AccelMode.None, cancel, out _);
-    RenderResult slow = Render(scene, c.SlowSize, c.SlowSpp, threads, AccelMode.None, cancel, out _);
-    double slowRate = slow.Rays / Math.Max(slow.Elapsed.TotalSeconds, 1e-9);
+    FrameResult slow = Render(scene, c.SlowSize, c.SlowSpp, threads, AccelMode.None, cancel, out _);
+    double slowRate = slow.Statistics.Rays / Math.Max(slow.Statistics.Elapsed.TotalSeconds, 1e-9);
     return result with
     {
       SlowSize = c.SlowSize.ToString(),
       SlowSpp = c.SlowSpp,
-      SlowSeconds = slow.Elapsed.TotalSeconds,
+      SlowSeconds = slow.Statistics.Elapsed.TotalSeconds,
       SlowRaysPerSecond = slowRate,
       Speedup = slowRate > 0.0 ? result.RaysPerSecond / slowRate : null,
     };
   }
 
-  internal static RenderResult Render(IRayScene scene, ImageSize size, int spp, int threads, AccelMode accel, CancellationToken cancel, out long fallbacks)
+  internal static FrameResult Render(IRayScene scene, ImageSize size, int spp, int threads, AccelMode accel, CancellationToken cancel, out long fallbacks)
   {
     var settings = new RenderSettings { Width = size.Width, Height = size.Height, SamplesPerPixel = spp, Threads = threads, Accel = accel }.Validate();
     ImageSynthesizer renderer = RenderJob.CreateSynthesizer(settings);
     RayTracing function = RenderJob.CreateImageFunction(scene, settings);
-    var clock = Stopwatch.StartNew();
-    var context = new RenderContext();
-    var image = TileRenderer.Render(scene, function, renderer, new RenderOptions { Threads = threads, Seed = 0 }, null, cancel, context);
-    clock.Stop();
+    FrameResult result = FrameRendering.Render(scene, function, renderer, new RenderOptions { Threads = threads, Seed = 0 }, null, cancel);
     fallbacks = function.LastPrepared?.FallbackCount ?? 0;
-    return new RenderResult(image, renderer.SamplesPerPixel, clock.Elapsed, context.Rays, cancel.IsCancellationRequested);
+    return result;
   }
 }

@@ -3,6 +3,7 @@ using System.Threading;
 using GrCis.Cli.Jobs;
 using Rendering;
 using Rendering.Accel;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Bench;
 
@@ -17,8 +18,8 @@ public static class ThreadScaling
     double best1 = double.MaxValue, bestN = double.MaxValue;
     for (int r = 0; r < rounds && !cancel.IsCancellationRequested; r++)
     {
-      best1 = Math.Min(best1, BenchSuite.Render(scene, c.Size, c.Spp, 1, AccelMode.Bvh, cancel, out _).Elapsed.TotalSeconds);
-      bestN = Math.Min(bestN, BenchSuite.Render(scene, c.Size, c.Spp, threads, AccelMode.Bvh, cancel, out _).Elapsed.TotalSeconds);
+      best1 = Math.Min(best1, BenchSuite.Render(scene, c.Size, c.Spp, 1, AccelMode.Bvh, cancel, out _).Statistics.Elapsed.TotalSeconds);
+      bestN = Math.Min(bestN, BenchSuite.Render(scene, c.Size, c.Spp, threads, AccelMode.Bvh, cancel, out _).Statistics.Elapsed.TotalSeconds);
     }
     if (cancel.IsCancellationRequested)
       return result;

@@ -83,7 +83,7 @@ public sealed class RenderCommand
     IProgressView view = parse.GetValue(quiet) ? new SilentProgressView()
       : env.Interactive ? new SpectreProgressView(env.Error)
       : new PlainProgressView(env.Error);
-    RenderResult result;
+    FrameResult result;
     try
     {
       result = view.Run($"render {source.DisplayName}",
@@ -103,7 +103,7 @@ public sealed class RenderCommand
     }
 
     if (part is ShardSpec shard)
-      target.SavePart(StillPart.Header(source, setup, shard, Modules(parse, env), result.SamplesPerPixel), result.Image);
+      target.SavePart(StillPart.Header(source, setup, shard, Modules(parse, env), result.Statistics.SamplesPerPixel), result.Image);
     else
       target.Save(result.Image, settings.Gamma);
     env.Out.WriteLine(Summary(target, settings, result) + (part is ShardSpec sp ? $", part {sp} (merge with 'grcis merge')" : ""));
@@ -131,12 +131,13 @@ public sealed class RenderCommand
   IEnumerable<string> Modules(ParseResult parse, CliEnvironment env) =>
     (parse.GetValue(scriptOptions.Modules) ?? []).Select(m => System.IO.Path.GetFullPath(m, env.WorkingDirectory));
 
-  static string Summary(OutputTarget target, RenderSettings s, RenderResult r)
+  static string Summary(OutputTarget target, RenderSettings s, FrameResult r)
   {
     string line = string.Create(CultureInfo.InvariantCulture,
-      $"wrote {target.FullPath}: {s.Size}, spp {r.SamplesPerPixel}, seed {s.Seed}, {r.Elapsed.TotalSeconds:0.00} s");
-    if (r.RaysPerSecond is double rps)
-      line += string.Create(CultureInfo.InvariantCulture, $", {rps / 1e6:0.00} Mrays/s");
+      $"wrote {target.FullPath}: {s.Size}, spp {r.Statistics.SamplesPerPixel}, seed {s.Seed}, {r.Statistics.Elapsed.TotalSeconds:0.00} s");
+    // Rays per second only when the time is long enough to say.
+    if (r.Statistics.Elapsed.TotalSeconds > 1e-3 && r.Statistics.Rays > 0)
+      line += string.Create(CultureInfo.InvariantCulture, $", {r.Statistics.RaysPerSecond / 1e6:0.00} Mrays/s");
     return line;
   }
 }

@@ -20,22 +20,18 @@ public static class RenderJob
 
   public static RayTracing CreateImageFunction(IRayScene scene, RenderSettings s) => s.CreateImageFunction(scene);
 
-  public static RenderResult Run(IRayScene scene, RenderSettings settings, Action<RenderProgress>? progress, CancellationToken cancel) =>
+  public static FrameResult Run(IRayScene scene, RenderSettings settings, Action<RenderProgress>? progress, CancellationToken cancel) =>
     Run(scene, settings, null, null, progress, cancel);
 
   /// <summary>Renders with a given image function and renderer (a scene script's), or the defaults where null.</summary>
   /// <param name="tiles">Only these tiles (one part of a scaled-out still); null = the whole image.</param>
-  public static RenderResult Run(IRayScene scene, RenderSettings settings, IImageFunction? imageFunction, ImageSynthesizer? synthesizer,
+  public static FrameResult Run(IRayScene scene, RenderSettings settings, IImageFunction? imageFunction, ImageSynthesizer? synthesizer,
                                  Action<RenderProgress>? progress, CancellationToken cancel, IReadOnlyList<Tile>? tiles = null)
   {
     ImageSynthesizer renderer = synthesizer ?? CreateSynthesizer(settings);
     IImageFunction function = imageFunction ?? CreateImageFunction(scene, settings);
     var options = new RenderOptions { Threads = settings.Threads, Seed = settings.Seed, Tiles = tiles };
 
-    var clock = Stopwatch.StartNew();
-    var context = new RenderContext();
-    var image = TileRenderer.Render(scene, function, renderer, options, progress, cancel, context);
-    clock.Stop();
-    return new RenderResult(image, renderer.SamplesPerPixel, clock.Elapsed, context.Rays, cancel.IsCancellationRequested);
+    return FrameRendering.Render(scene, function, renderer, options, progress, cancel);
   }
 }

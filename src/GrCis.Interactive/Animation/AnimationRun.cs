@@ -5,6 +5,7 @@ using System.IO;
 using System.Text.RegularExpressions;
 using System.Threading;
 using System.Threading.Tasks;
+using GrCis.Hosting;
 using Rendering;
 using Rendering.Execution;
 using Rendering.Imaging;
@@ -41,7 +42,7 @@ public sealed partial class AnimationRun
   {
     double time = Timeline.FrameTime(frame);
     SceneTime.Set(Job.Scene, time);
-    return TileRenderer.Render(Job.Scene, Job.ImageFunction, Job.Renderer, Job.Settings.ToRenderOptions(frame), null, cancel);
+    return FrameRendering.Render(Job.Scene, Job.ImageFunction, Job.Renderer, Job.Settings.ToRenderOptions(frame), null, cancel).Image;
   }
 
   /// <summary>Renders every frame in order; stops between frames when cancelled. Returns the frames rendered.</summary>

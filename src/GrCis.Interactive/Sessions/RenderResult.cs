@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using Rendering.Execution;
 using Rendering.Imaging;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive;
 

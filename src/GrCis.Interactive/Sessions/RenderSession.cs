@@ -6,6 +6,7 @@ using System.Threading.Tasks;
 using Rendering;
 using Rendering.Execution;
 using Rendering.Imaging;
+using GrCis.Hosting;
 
 namespace GrCis.Interactive;
 

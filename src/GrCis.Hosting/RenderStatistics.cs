@@ -1,9 +1,9 @@
 using System;
 using System.Globalization;
 
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
-/// <summary>The statistics line of a render.</summary>
+/// <summary>What a render did: size, samples, threads, time, rays and hits, tiles; its <see cref="ToString"/> is the statistics line.</summary>
 public sealed record RenderStatistics
 {
   public TimeSpan Elapsed { get; init; }
