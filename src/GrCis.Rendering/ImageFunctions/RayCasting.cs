@@ -75,18 +75,13 @@ public class RayCasting : IImageFunction
   /// <summary><see cref="FirstHitAt(int, Vector3d, Vector3d)"/> with the thread's scratch already at hand.</summary>
   internal Intersection? FirstHitAt(ShadingScratch scratch, int depth, Vector3d p0, Vector3d p1)
   {
-    Intersection? hit;
-    PreparedScene? ps;
-    if (firstHitOverridden || !ReuseIntersections || depth < 0 || (ps = Prepared) == null)
-      hit = FirstHit(p0, p1);
-    else
-    {
-      scratch.Rays++;
-      hit = ps.FirstHit(p0, p1, scratch.Intersection(depth), ReferenceEquals(ps, leanPrepared));
-    }
-    if (hit != null)
-      scratch.Hits++;
-    return hit;
+    if (firstHitOverridden || !ReuseIntersections || depth < 0)
+      return FirstHit(p0, p1);
+    PreparedScene? ps = Prepared;
+    if (ps == null)
+      return FirstHit(p0, p1);
+    scratch.Rays++;
+    return ps.FirstHit(p0, p1, scratch.Intersection(depth), ReferenceEquals(ps, leanPrepared));
   }
 
   // Set by Prepare when only this library's shading reads the pooled hits of that snapshot (of that scene's
@@ -239,6 +234,7 @@ public class RayCasting : IImageFunction
         Array.Copy(sc.BackgroundColor, color, Math.Min(color.Length, sc.BackgroundColor.Length));
       return 0L;
     }
+    ShadingScratch.Current.Hits++;
 
     long hash = CompleteAndTexture(i);
     double[] surface = i.SurfaceColor!;

@@ -85,19 +85,12 @@ public class RayTracing : RayCasting
   bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
   {
     scratch.Rays++;
-    bool blocked;
     PreparedScene? ps = Prepared;
     if (ps != null)
-      blocked = ps.Occluded(p0, dir);
-    else
-    {
-      LinkedList<Intersection>? list = FaithfulQuery.Intersect(Scene.Intersectable, p0, dir);
-      Intersection? si = Intersection.FirstRealIntersection(list, ref dir);
-      blocked = si != null && !si.Far(1.0, ref dir);
-    }
-    if (blocked)
-      scratch.Hits++;
-    return blocked;
+      return ps.Occluded(p0, dir);
+    LinkedList<Intersection>? list = FaithfulQuery.Intersect(Scene.Intersectable, p0, dir);
+    Intersection? si = Intersection.FirstRealIntersection(list, ref dir);
+    return si != null && !si.Far(1.0, ref dir);
   }
 
   /// <summary>Receives every ray traced, when set (GrCis's 048 ray visualiser API); null costs nothing.</summary>
@@ -112,41 +105,44 @@ public class RayTracing : RayCasting
   {
     ShadingScratch scratch = ShadingScratch.Current;
     RayObserver? observer = scratch.Observer;
-    if (observer == null)
-      return Shade(scratch, depth, importance, in p0, in p1, color, out _);
+    int rayDepth = depth;
+    RayKind kind = RayKind.Primary;
+    if (observer != null)
+    {
+      // Depth 0 is the camera's ray; deeper rays were classified by the code that spawned them.
+      kind = depth == 0 ? RayKind.Primary : scratch.NextKind;
+      scratch.NextKind = RayKind.Secondary;
+      observer.BeginRay(kind, depth, p0, p1);
+    }
 
-    // Depth 0 is the camera's ray; deeper rays were classified by the code that spawned them.
-    RayKind kind = depth == 0 ? RayKind.Primary : scratch.NextKind;
-    scratch.NextKind = RayKind.Secondary;
-    Vector3d origin = p0, direction = p1;
-    observer.BeginRay(kind, depth, origin, direction);
-    long hash = Shade(scratch, depth, importance, in origin, in direction, color, out Intersection? hit);
-    observer.EndRay(kind, depth, origin, direction, hit);
-    return hash;
-  }
-
-  /// <summary>The body of <see cref="shade"/>; <paramref name="i"/> is the ray's completed hit (valid until the next ray at this depth).</summary>
-  long Shade(ShadingScratch scratch, int depth, double importance, in Vector3d p0, in Vector3d p1, double[] color, out Intersection? i)
-  {
     IRayScene sc = Scene;
     Vector3d direction = p1;
-    i = FirstHitAt(scratch, depth, p0, direction);
+    Intersection? i = FirstHitAt(scratch, depth, p0, direction);
+    long hash;
     if (i == null)
     {
       rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerNormal, depth, p0, direction * 100000.0);
       if (sc.Background != null)
-        return sc.Background.GetColor(p1, color);
-      FillBackground(sc, color);
-      return 1L;
+        hash = sc.Background.GetColor(p1, color);
+      else
+      {
+        FillBackground(sc, color);
+        hash = 1L;
+      }
+      goto done;
     }
 
-    long hash = CompleteAndTexture(i);
+    scratch.Hits++;   // counted here, on a branch taken anyway
+    hash = CompleteAndTexture(i);
     rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.unknown, depth, p0, i);
     int bands = color.Length;
     Array.Clear(color);
 
     if (DoRecursion && i.RecursionAttribute is RecursionFunction recursion)
-      return ShadeRecursion(recursion, i, depth, importance, ref direction, color, hash);
+    {
+      hash = ShadeRecursion(recursion, i, depth, importance, ref direction, color, hash);
+      goto done;
+    }
 
     Vector3d viewer = -p1.Normalized();
     double[] surface = i.SurfaceColor!;
@@ -172,7 +168,7 @@ public class RayTracing : RayCasting
     }
 
     if (depth++ >= MaxLevel || (!DoReflections && !DoRefractions))
-      return hash;
+      goto done;
 
     double[] comp = scratch.Buffer(depth, bands);
     Vector3d origin = i.CoordWorld;
@@ -205,7 +201,7 @@ public class RayTracing : RayCasting
         double newImportance = importance * maxK;
         if (newImportance >= MinImportance)
         {
-          if (scratch.Observer != null)
+          if (observer != null)
             scratch.NextKind = RayKind.Reflected;
           hash += HASH_REFLECT * shade(depth, newImportance, ref origin, ref r, comp);
           for (int b = 0; b < bands; b++)
@@ -221,16 +217,20 @@ public class RayTracing : RayCasting
         kt *= 1.0 - SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), i.Material.n);
       double newImportance = importance * kt;
       if (newImportance < MinImportance)
-        return hash;
+        goto done;
       Vector3d r = Geometry.SpecularRefraction(i.Normal, i.Material.n, viewer);
       if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0)
-        return hash;
-      if (scratch.Observer != null)
+        goto done;
+      if (observer != null)
         scratch.NextKind = RayKind.Refracted;
       hash += HASH_REFRACT * shade(depth, newImportance, ref origin, ref r, comp);
       AddScaled(color, comp, kt);
     }
 
+  done:
+    // Every way out passes here, so an observer sees the end of each ray it saw begin (the hit stays valid
+    // until the next ray at this depth).
+    observer?.EndRay(kind, rayDepth, p0, p1, i);
     return hash;
   }
 
@@ -291,14 +291,15 @@ public class RayTracing : RayCasting
       {
         scratch.Rays++;
         transmit = ShadowTransmittance(i.CoordWorld, dir);
-        if (transmit <= 0.0)
-          scratch.Hits++;
       }
       else
         transmit = (occludedOverridden ? Occluded(i.CoordWorld, dir) : Occluded(scratch, i.CoordWorld, dir)) ? 0.0 : 1.0;
       scratch.Observer?.ShadowRay(i.CoordWorld, dir, transmit <= 0.0);
       if (transmit <= 0.0)
+      {
+        scratch.Hits++;   // a blocked shadow ray
         return hash;
+      }
     }
     int bands = color.Length;
     if (phong)
