@@ -34,7 +34,7 @@ namespace Rendering.Accel;
 /// (first valid record, inside state before it); its record is completed from its leaf's cached matrices.</para>
 /// <para>The prepared scene is a snapshot: prepare again after changing the scene graph or attributes.</para>
 /// </remarks>
-public sealed partial class PreparedScene
+public sealed partial class PreparedScene : ISceneQuery
 {
   readonly PreparedMember[] members;
   readonly Matrix4d[] chain;
@@ -134,13 +134,22 @@ public sealed partial class PreparedScene
   /// The hit <see cref="Intersection.FirstIntersection"/> would pick from the scene's list, completed
   /// with cached matrices (list members' hits are left to <see cref="Intersection.Complete"/>), or null.
   /// </summary>
-  public Intersection? FirstHit(Vector3d p0, Vector3d p1) => FirstHit(p0, p1, null);
+  public Intersection? FirstHit(Vector3d p0, Vector3d p1) => FirstHit(p0, p1, null, false);
 
   /// <summary>
   /// <see cref="FirstHit(Vector3d, Vector3d)"/> that fills <paramref name="reuse"/> (reset first) instead of
   /// allocating, when the winner is a known solid; hits of list members are returned as listed.
   /// </summary>
   public Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse) => FirstHit(p0, p1, reuse, false);
+
+  /// <inheritdoc/>
+  /// <remarks>With <paramref name="needs"/> = <see cref="HitData.Surface"/>, members whose attributes allow it
+  /// are completed without their local frame (<see cref="LeanCompletion"/>); the computed fields are the same bits.</remarks>
+  public Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse = null, HitData needs = HitData.All) =>
+    FirstHit(p0, p1, reuse, (needs & HitData.LocalFrame) == 0);
+
+  /// <inheritdoc/>
+  public bool AnyHit(Vector3d p0, Vector3d dir) => Occluded(p0, dir);
 
   /// <summary>
   /// <see cref="FirstHit(Vector3d, Vector3d, Intersection?)"/>; with <paramref name="lean"/> (only the library's own

@@ -81,12 +81,13 @@ public class RayCasting : IImageFunction
     if (ps == null)
       return FirstHit(p0, p1);
     scratch.Rays++;
-    return ps.FirstHit(p0, p1, scratch.Intersection(depth), ReferenceEquals(ps, leanPrepared));
+    return ps.FirstHit(p0, p1, scratch.Intersection(depth), ReferenceEquals(ps, surfaceOnly));
   }
 
-  // Set by Prepare when only this library's shading reads the pooled hits of that snapshot (of that scene's
-  // lights): its members may complete them leanly. A snapshot built on first use, for another scene, is not lean.
-  [NonSerialized] PreparedScene? leanPrepared;
+  // What this function reads from the hits of the snapshot made by Prepare, decided there once: HitData.Surface
+  // when only this library's shading reads them (LibraryShadingOnly, for that scene's lights), else everything.
+  // A snapshot built on first use, for another scene, gets HitData.All.
+  [NonSerialized] PreparedScene? surfaceOnly;
 
   /// <summary>
   /// True when nothing but the library's own code reads a shaded hit: this is a plain RayTracing or RayCasting
@@ -120,7 +121,7 @@ public class RayCasting : IImageFunction
     if (source == null)
       return null;
     PreparedScene ps = PreparedScene.Prepare(source);
-    leanPrepared = LibraryShadingOnly(sc ?? Scene) ? ps : null;
+    surfaceOnly = LibraryShadingOnly(sc ?? Scene) ? ps : null;
     (preparedBySource ??= new ConditionalWeakTable<IIntersectable, PreparedScene>()).AddOrUpdate(source, ps);
     prepared = ps;
     return ps;
@@ -175,15 +176,32 @@ public class RayCasting : IImageFunction
     set { if (Scene.Camera != null) Scene.Camera.Height = value; }
   }
 
-  /// <summary>First hit of the ray, or null. Overridden by the prepared fast path.</summary>
+  /// <summary>
+  /// The query of the scene being shaded (<see cref="ISceneQuery"/>: first hit, shadow any-hit): the prepared
+  /// scene, or GrCis's own lists with <see cref="AccelMode.None"/>. Same hits either way.
+  /// </summary>
+  protected ISceneQuery Query => (ISceneQuery?)Prepared ?? Lists;
+
+  [NonSerialized] SceneLists? lists;
+
+  /// <summary>GrCis's list search of the current scene (kept while the scene's root stays the same).</summary>
+  private protected SceneLists Lists
+  {
+    get
+    {
+      IIntersectable? source = Scene.Intersectable;
+      SceneLists? l = lists;
+      if (l == null || l.Source != source)
+        lists = l = new SceneLists(source);
+      return l;
+    }
+  }
+
+  /// <summary>First hit of the ray (fully completed), or null; a subclass may override it (then every ray comes here).</summary>
   protected virtual Intersection? FirstHit(Vector3d p0, Vector3d p1)
   {
     RayCounter.CountRay();
-    PreparedScene? ps = Prepared;
-    if (ps != null)
-      return ps.FirstHit(p0, p1);
-    LinkedList<Intersection>? list = FaithfulQuery.Intersect(Scene.Intersectable, p0, p1);
-    return Intersection.FirstIntersection(list, ref p1);
+    return Query.FirstHit(p0, p1);
   }
 
   /// <summary>
@@ -191,7 +209,7 @@ public class RayCasting : IImageFunction
   /// <see cref="Accel"/> mode says: with <see cref="AccelMode.None"/> without any search structure.
   /// </summary>
   protected LinkedList<Intersection>? IntersectScene(Vector3d p0, Vector3d p1) =>
-    Accel == AccelMode.None ? FaithfulQuery.Intersect(Scene.Intersectable, p0, p1) : Scene.Intersectable?.Intersect(p0, p1);
+    Accel == AccelMode.None ? Lists.AllHits(p0, p1) : Scene.Intersectable?.Intersect(p0, p1);
 
   /// <summary>Completes the hit and applies its textures; returns the hash of the solid and texture cells.</summary>
   protected static long CompleteAndTexture(Intersection i)

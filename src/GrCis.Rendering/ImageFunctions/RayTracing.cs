@@ -86,11 +86,7 @@ public class RayTracing : RayCasting
   {
     scratch.Rays++;
     PreparedScene? ps = Prepared;
-    if (ps != null)
-      return ps.Occluded(p0, dir);
-    LinkedList<Intersection>? list = FaithfulQuery.Intersect(Scene.Intersectable, p0, dir);
-    Intersection? si = Intersection.FirstRealIntersection(list, ref dir);
-    return si != null && !si.Far(1.0, ref dir);
+    return ps != null ? ps.AnyHit(p0, dir) : Lists.AnyHit(p0, dir);
   }
 
   /// <summary>Receives every ray traced, when set (GrCis's 048 ray visualiser API); null costs nothing.</summary>
