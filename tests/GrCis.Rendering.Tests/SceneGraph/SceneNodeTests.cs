@@ -2,7 +2,7 @@ using System.Collections.Generic;
 using OpenTK.Mathematics;
 using Rendering;
 
-namespace GrCis.Rendering.Tests.Scene;
+namespace GrCis.Rendering.Tests.SceneGraph;
 
 public class SceneNodeTests
 {

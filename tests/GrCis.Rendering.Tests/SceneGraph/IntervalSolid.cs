@@ -2,7 +2,7 @@ using System.Collections.Generic;
 using OpenTK.Mathematics;
 using Rendering;
 
-namespace GrCis.Rendering.Tests.Scene;
+namespace GrCis.Rendering.Tests.SceneGraph;
 
 /// <summary>Test solid: the slab a ≤ x ≤ b, so CSG results are easy to predict along the x axis.</summary>
 internal sealed class IntervalSolid : DefaultSceneNode, ISolid

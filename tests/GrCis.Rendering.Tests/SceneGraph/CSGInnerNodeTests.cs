@@ -3,7 +3,7 @@ using System.Linq;
 using OpenTK.Mathematics;
 using Rendering;
 
-namespace GrCis.Rendering.Tests.Scene;
+namespace GrCis.Rendering.Tests.SceneGraph;
 
 public class CSGInnerNodeTests
 {
