@@ -90,14 +90,41 @@ public class RayCasting : IImageFunction
   [NonSerialized] PreparedScene? surfaceOnly;
 
   /// <summary>
-  /// True when nothing but the library's own code reads a shaded hit: this is a plain RayTracing or RayCasting
-  /// (no overridden shade) and every light is a library light (they read only the world point and normal).
-  /// Materials, reflectance models and textures are checked per member (<see cref="LeanCompletion"/>).
+  /// What this image function reads from the hits it shades (<see cref="HitData"/>): <see cref="HitData.Surface"/>
+  /// for the library's own shading, including a subclass that overrides none of the methods that see hits
+  /// (<see cref="HitReaders"/>); <see cref="HitData.All"/> for one that does. A subclass that overrides them
+  /// but reads only the surface may say so here and keep the cheaper hits.
+  /// </summary>
+  protected virtual HitData HitDataRead => OverridesAHitReader(GetType()) ? HitData.All : HitData.Surface;
+
+  /// <summary>The virtual methods of RayCasting and RayTracing that see a hit: a subclass overriding one may read anything.</summary>
+  public static readonly System.Collections.Generic.IReadOnlyList<string> HitReaders =
+    new[] { nameof(GetSample), nameof(FirstHit), "shade", "Occluded", "ShadowTransmittance" };
+
+  static readonly System.Collections.Concurrent.ConcurrentDictionary<Type, bool> hitReaderOverrides = new();
+
+  /// <summary>Whether a class between <paramref name="type"/> and the library's RayCasting/RayTracing overrides a <see cref="HitReaders"/> method (cached per class).</summary>
+  static bool OverridesAHitReader(Type type) => hitReaderOverrides.GetOrAdd(type, static t =>
+  {
+    const System.Reflection.BindingFlags declared = System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.Public |
+                                                    System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.DeclaredOnly;
+    for (Type? c = t; c != null && c != typeof(RayTracing) && c != typeof(RayCasting); c = c.BaseType)
+      foreach (System.Reflection.MethodInfo m in c.GetMethods(declared))
+        if (m.IsVirtual && m.GetBaseDefinition().DeclaringType is Type d && (d == typeof(RayCasting) || d == typeof(RayTracing)) &&
+            ((System.Collections.Generic.IList<string>)HitReaders).Contains(m.Name))
+          return true;
+    return false;
+  });
+
+  /// <summary>
+  /// True when nothing but the library's own code reads a shaded hit, decided once per prepared scene: the
+  /// function reads only <see cref="HitData.Surface"/>, no ray registerer receives hits, and every light is a
+  /// library light (they read only the world point and normal). Materials, reflectance models and textures are
+  /// checked per member (<see cref="LeanCompletion"/>).
   /// </summary>
   bool LibraryShadingOnly(IRayScene sc)
   {
-    Type type = GetType();
-    if (type != typeof(RayTracing) && type != typeof(RayCasting))
+    if ((HitDataRead & HitData.LocalFrame) != 0 || this is RayTracing { rayRegisterer: not null })
       return false;
     if (sc.Sources != null)
       foreach (ILightSource light in sc.Sources)

@@ -15,7 +15,9 @@ public abstract class RayObserver
 
   /// <summary>
   /// A shaded ray is done; <paramref name="hit"/> is its completed first hit, or null for a miss. The hit may be
-  /// a pooled object reused by the next ray: copy what is needed, keep no reference.
+  /// a pooled object reused by the next ray (copy what is needed, keep no reference), and it carries what the
+  /// image function reads (<see cref="Accel.HitData"/>): for the library's shading the surface only (point,
+  /// normal, solid, attributes), not the local frame.
   /// </summary>
   public virtual void EndRay(RayKind kind, int depth, in Vector3d origin, in Vector3d direction, Intersection? hit) { }
 
