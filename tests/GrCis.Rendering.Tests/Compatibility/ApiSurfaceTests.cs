@@ -70,6 +70,7 @@ public class ApiSurfaceTests
     ["+"] = "op_Addition", ["-"] = "op_Subtraction", ["*"] = "op_Multiply", ["/"] = "op_Division",
     ["=="] = "op_Equality", ["!="] = "op_Inequality", ["<"] = "op_LessThan", [">"] = "op_GreaterThan",
     ["<="] = "op_LessThanOrEqual", [">="] = "op_GreaterThanOrEqual", ["%"] = "op_Modulus",
+    ["++"] = "op_Increment", ["--"] = "op_Decrement", ["|"] = "op_BitwiseOr", ["&"] = "op_BitwiseAnd", ["^"] = "op_ExclusiveOr",
   };
 
   /// <summary>Whether <paramref name="e"/> exists: same name, same number of parameters, same ref/out places, reachable by subclasses.</summary>
