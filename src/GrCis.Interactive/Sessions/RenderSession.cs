@@ -112,7 +112,7 @@ public sealed class RenderSession : IDisposable
     {
       if (CoarseBlock > 1)
       {
-        CoarsePass(job, options, live, CoarseBlock, token);
+        CoarsePass(job, options, live, CoarseBlock, new RenderContext { Queries = context.Queries }, token);
         if (!token.IsCancellationRequested)
           Publish(PreviewPass.Coarse, live, force: false);
       }
@@ -162,7 +162,8 @@ public sealed class RenderSession : IDisposable
   }
 
   /// <summary>Renders one pixel per block (its exact final value) and fills the block with it.</summary>
-  static void CoarsePass(RenderJob job, RenderOptions options, FloatImage target, int block, CancellationToken token)
+  /// <param name="preview">The pass's own counts, sharing the render's prepared scenes.</param>
+  static void CoarsePass(RenderJob job, RenderOptions options, FloatImage target, int block, RenderContext preview, CancellationToken token)
   {
     int w = job.Width, h = job.Height;
     int rows = (h + block - 1) / block;
@@ -175,12 +176,13 @@ public sealed class RenderSession : IDisposable
         MT.SetRendering(SceneCloner.CloneForWorker(job.Scene), job.ImageFunction, renderer);
         MT.seed = options.Seed;
         MT.frame = options.Frame;
-        return new double[target.Bands];
+        return (Color: new double[target.Bands], Scope: preview.Enter());
       },
-      (row, _, color) =>
+      (row, _, state) =>
       {
+        double[] color = state.Color;
         if (token.IsCancellationRequested)
-          return color;
+          return state;
         // A script's code stuck in a loop stops with the session (see Interruption).
         using Interruption.Scope interruption = Interruption.Use(token);
         int y0 = row * block, y1 = Math.Min(y0 + block, h);
@@ -198,9 +200,13 @@ public sealed class RenderSession : IDisposable
         catch (OperationCanceledException) when (token.IsCancellationRequested)
         {
         }
-        return color;
+        return state;
       },
-      _ => MT.SetRendering(null, null, null));
+      state =>
+      {
+        state.Scope.Dispose();
+        MT.SetRendering(null, null, null);
+      });
   }
 
   /// <summary>An image with only the given tiles copied from <paramref name="source"/> (used after a failure).</summary>

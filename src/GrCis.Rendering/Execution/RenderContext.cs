@@ -1,5 +1,6 @@
 using System;
 using System.Threading;
+using Rendering.Accel;
 using Rendering.Observation;
 
 namespace Rendering.Execution;
@@ -17,6 +18,9 @@ public sealed class RenderContext
   /// <summary>Receives every ray the render's <see cref="RayTracing"/> traces; null = none (no cost).</summary>
   public RayObserver? Observer { get; init; }
 
+  /// <summary>The render's prepared scenes (fresh for each context unless shared, as a preview pass shares its render's).</summary>
+  public SceneQueries Queries { get; init; } = new();
+
   /// <summary>Rays traced under this context by the scopes that have ended (shadow rays included).</summary>
   public long Rays => Interlocked.Read(ref rays);
 
@@ -27,8 +31,10 @@ public sealed class RenderContext
   public Scope Enter()
   {
     ShadingScratch s = ShadingScratch.Current;
-    var scope = new Scope(this, s, s.Observer, s.Rays, s.Hits);
+    var scope = new Scope(this, s, s.Observer, s.Queries, s.LastPrepared, s.Rays, s.Hits);
     s.Observer = Observer;
+    s.Queries = Queries;
+    s.LastPrepared = null;
     return scope;
   }
 
@@ -38,13 +44,18 @@ public sealed class RenderContext
     readonly RenderContext? context;
     readonly ShadingScratch? scratch;
     readonly RayObserver? previous;
+    readonly SceneQueries? previousQueries;
+    readonly PreparedScene? previousLast;
     readonly long rays0, hits0;
 
-    internal Scope(RenderContext context, ShadingScratch scratch, RayObserver? previous, long rays0, long hits0)
+    internal Scope(RenderContext context, ShadingScratch scratch, RayObserver? previous, SceneQueries previousQueries, PreparedScene? previousLast,
+                   long rays0, long hits0)
     {
       this.context = context;
       this.scratch = scratch;
       this.previous = previous;
+      this.previousQueries = previousQueries;
+      this.previousLast = previousLast;
       this.rays0 = rays0;
       this.hits0 = hits0;
     }
@@ -56,6 +67,8 @@ public sealed class RenderContext
       Interlocked.Add(ref context.rays, scratch.Rays - rays0);
       Interlocked.Add(ref context.hits, scratch.Hits - hits0);
       scratch.Observer = previous;
+      scratch.Queries = previousQueries!;
+      scratch.LastPrepared = previousLast;
     }
   }
 }

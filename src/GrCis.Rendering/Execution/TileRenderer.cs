@@ -61,16 +61,17 @@ public static class TileRenderer
       MT.scene = callerScene;
     }
 
-    // Prepare the fast path once per frame, before the workers share it read-only.
+    // Prepare the fast path once per frame, into this render's queries, before the workers share it read-only.
+    context ??= new RenderContext();
     if (imageFunction is RayCasting rc)
-      rc.Prepare(scene);
+      using (context.Enter())
+        rc.Prepare(scene);
 
     IReadOnlyList<Tile> tiles = options.Tiles ?? MakeTiles(width, height, options.TileSize);
     int next = -1, done = 0;
     int threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tiles.Count));
     var failure = new EarliestFailure();
     object progressLock = new();
-    context ??= new RenderContext();
     long raysBefore = context.Rays, hitsBefore = context.Hits;
 
     int nextWorker = -1;

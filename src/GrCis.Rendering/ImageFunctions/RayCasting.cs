@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Runtime.CompilerServices;
 using OpenTK.Mathematics;
 using Rendering.Accel;
 using Rendering.Execution;
@@ -20,12 +19,10 @@ public class RayCasting : IImageFunction
   /// <summary>How ray queries are answered: the prepared fast path (default) or the faithful GrCis path.</summary>
   public AccelMode Accel = AccelMode.Bvh;
 
-  [NonSerialized] PreparedScene? prepared;
 
-  [NonSerialized] readonly object prepareLock = new();
 
-  // Per-scene snapshots when threads render different scene clones (clone on write).
-  [NonSerialized] ConditionalWeakTable<IIntersectable, PreparedScene>? preparedBySource;
+  // The snapshot of the last Prepare or first use, for statistics and tests (not a cache: the render context keeps those).
+  [NonSerialized] PreparedScene? lastPrepared;
 
   /// <summary>
   /// On the fast path, fill one <see cref="Intersection"/> per thread and recursion depth instead of a new
@@ -77,7 +74,7 @@ public class RayCasting : IImageFunction
   {
     if (firstHitOverridden || !ReuseIntersections || depth < 0)
       return FirstHit(p0, p1);
-    PreparedScene? ps = Prepared;
+    PreparedScene? ps = PreparedFor(scratch);
     if (ps == null)
       return FirstHit(p0, p1);
     scratch.Rays++;
@@ -147,41 +144,35 @@ public class RayCasting : IImageFunction
     IIntersectable? source = (sc ?? Scene).Intersectable;
     if (source == null)
       return null;
-    PreparedScene ps = PreparedScene.Prepare(source);
+    ShadingScratch scratch = ShadingScratch.Current;
+    PreparedScene ps = scratch.Queries.Prepare(source);
     surfaceOnly = LibraryShadingOnly(sc ?? Scene) ? ps : null;
-    (preparedBySource ??= new ConditionalWeakTable<IIntersectable, PreparedScene>()).AddOrUpdate(source, ps);
-    prepared = ps;
+    scratch.LastPrepared = lastPrepared = ps;
     return ps;
   }
 
   /// <summary>The snapshot made by the last <see cref="Prepare"/> or first use (statistics, tests).</summary>
-  public PreparedScene? LastPrepared => prepared;
+  public PreparedScene? LastPrepared => lastPrepared;
 
   /// <summary>The prepared snapshot of the current scene (built on first use), or null on the faithful path.</summary>
-  protected PreparedScene? Prepared
+  protected PreparedScene? Prepared => PreparedFor(ShadingScratch.Current);
+
+  /// <summary>
+  /// The prepared snapshot of the current scene from the queries of the render this thread works for (or the
+  /// thread's own outside a render); the thread's last snapshot is checked first, so a ray costs one comparison.
+  /// </summary>
+  private protected PreparedScene? PreparedFor(ShadingScratch scratch)
   {
-    get
-    {
-      if (Accel == AccelMode.None)
-        return null;
-      IIntersectable? source = Scene.Intersectable;
-      PreparedScene? ps = prepared;
-      if (ps != null && ps.Source == source)
-        return ps;
-      if (source == null)
-        return null;
-      lock (prepareLock)
-      {
-        preparedBySource ??= new ConditionalWeakTable<IIntersectable, PreparedScene>();
-        if (!preparedBySource.TryGetValue(source, out ps))
-        {
-          ps = PreparedScene.Prepare(source);
-          preparedBySource.AddOrUpdate(source, ps);
-        }
-        prepared = ps;
-        return ps;
-      }
-    }
+    if (Accel == AccelMode.None)
+      return null;
+    IIntersectable? source = Scene.Intersectable;
+    PreparedScene? ps = scratch.LastPrepared;
+    if (ps != null && ps.Source == source)
+      return ps;
+    if (source == null)
+      return null;
+    scratch.LastPrepared = lastPrepared = ps = scratch.Queries.For(source);
+    return ps;
   }
 
   /// <summary>The scene: the one given to the constructor, else the thread's current scene.</summary>

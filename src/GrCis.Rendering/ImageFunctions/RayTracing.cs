@@ -85,7 +85,7 @@ public class RayTracing : RayCasting
   bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
   {
     scratch.Rays++;
-    PreparedScene? ps = Prepared;
+    PreparedScene? ps = PreparedFor(scratch);
     return ps != null ? ps.AnyHit(p0, dir) : Lists.AnyHit(p0, dir);
   }
 

@@ -24,6 +24,18 @@ internal sealed class ShadingScratch
   /// <summary>The observer of the render this thread works for (<see cref="Execution.RenderContext"/>); null = none.</summary>
   public Observation.RayObserver? Observer;
 
+  /// <summary>The prepared scenes of the render this thread works for (<see cref="Execution.RenderContext.Queries"/>), else the thread's own.</summary>
+  public Accel.SceneQueries Queries
+  {
+    get => queries ??= own ??= new Accel.SceneQueries();
+    set => queries = value;
+  }
+
+  Accel.SceneQueries? queries, own;
+
+  /// <summary>The snapshot this thread used last (checked first: the scene rarely changes between rays).</summary>
+  public Accel.PreparedScene? LastPrepared;
+
   /// <summary>True while a faithful (GrCis-style, no search structure) query runs on this thread (<see cref="Accel.FaithfulQuery"/>).</summary>
   public bool FaithfulQuery;
 

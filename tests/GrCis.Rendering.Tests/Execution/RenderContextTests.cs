@@ -148,4 +148,28 @@ public class RenderContextTests
     // The outer scope's count includes the inner one (same thread, nested); nothing after it is counted.
     Assert.Equal(inner.Shaded + inner.Shadows + outer.Shaded + outer.Shadows, outerContext.Rays);
   }
+
+  [Fact]
+  public void Each_render_prepares_its_scene_in_its_own_context_and_the_function_keeps_no_snapshot()
+  {
+    IRayScene scene = TestScenes.BallOnGround(areaLight: false);
+    var tracer = new RayTracing(scene);
+    var first = new RenderContext();
+    var second = new RenderContext();
+    FloatImage a = Render(scene, tracer, first);
+    global::Rendering.Accel.PreparedScene? firstSnapshot = tracer.LastPrepared;
+    FloatImage b = Render(scene, tracer, second);
+
+    Assert.Equal(a.Data, b.Data);
+    Assert.NotNull(firstSnapshot);
+    Assert.Same(firstSnapshot, first.Queries.For(scene.Intersectable!));
+    Assert.Same(tracer.LastPrepared, second.Queries.For(scene.Intersectable!));
+    Assert.NotSame(firstSnapshot, tracer.LastPrepared);   // a new render starts from a fresh snapshot
+
+    // Outside any render a thread uses queries of its own, and a context's queries are back after its scope.
+    var probe = new RenderContext();
+    using (probe.Enter())
+      tracer.GetSample(24.5, 18.5, new double[3]);
+    Assert.Same(tracer.LastPrepared, probe.Queries.For(scene.Intersectable!));
+  }
 }
