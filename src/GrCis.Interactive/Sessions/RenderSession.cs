@@ -107,7 +107,7 @@ public sealed class RenderSession : IDisposable
     FloatImage? image = null;
     Exception? error = null;
     var context = new RenderContext();
-    Timer? timer = null;
+    PreviewTicker? ticker = null;
     try
     {
       if (CoarseBlock > 1)
@@ -118,7 +118,7 @@ public sealed class RenderSession : IDisposable
       }
 
       TimeSpan interval = PreviewInterval > TimeSpan.Zero ? PreviewInterval : TimeSpan.FromMilliseconds(500);
-      timer = new Timer(_ => Publish(PreviewPass.Tiles, live, force: false), null, interval, interval);
+      ticker = new PreviewTicker(interval, () => Publish(PreviewPass.Tiles, live, force: false));
 
       var synth = new PreviewSynthesizer(inner, live);
       image = TileRenderer.Render(job.Scene, job.ImageFunction, synth, options, p =>
@@ -134,7 +134,7 @@ public sealed class RenderSession : IDisposable
     }
     finally
     {
-      timer?.Dispose();
+      ticker?.Dispose();
       lock (publishLock)
         tilesOver = true;
     }
@@ -228,7 +228,7 @@ public sealed class RenderSession : IDisposable
       return;
     lock (publishLock)
     {
-      // A late timer tick must not follow the final image.
+      // A late tick must not follow the final image.
       if (tilesOver && !force)
         return;
       var snapshot = new FloatImage(source.Width, source.Height, source.Bands, (float[])source.Data.Clone());
