@@ -2,12 +2,21 @@ using Utilities;
 
 namespace GrCis.Rendering.Tests.Utilities;
 
+/// <summary>GrCis's id sets: plain ids plus ranges of numbered ids (with or without a common prefix).</summary>
 public class IdSetTests
 {
+  static IdSet Of(params string[] items)
+  {
+    var set = new IdSet();
+    foreach (string item in items)
+      set.Add(item);
+    return set;
+  }
+
   [Fact]
   public void Plain_ids_and_ranges_with_and_without_a_prefix()
   {
-    var ids = new IdSet();
+    IdSet ids = Of();
     Assert.True(ids.Add("sphere"));
     Assert.False(ids.Add("sphere"));
     Assert.False(ids.Add("obj12-obj40"));   // a range is stored, not counted as a new member
@@ -33,8 +42,7 @@ public class IdSetTests
   [Fact]
   public void A_reversed_range_holds_its_lower_end_and_a_copy_keeps_the_ranges()
   {
-    var ids = new IdSet();
-    ids.Add("x9-x3");
+    IdSet ids = Of("x9-x3");
     Assert.True(ids.Contains("x9"));
     Assert.False(ids.Contains("x5"));
 
