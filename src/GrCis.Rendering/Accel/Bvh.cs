@@ -5,17 +5,15 @@ using OpenTK.Mathematics;
 namespace Rendering.Accel;
 
 /// <summary>
-/// Bounding volume hierarchy over boxes, built with binned SAH and stored as a flat node array
-/// (depth-first, left child adjacent) so traversal is a loop over an index stack.
+/// The one bounding volume hierarchy, over scene members and over mesh triangles alike: built with
+/// binned SAH on all three axes, stored as a flat node array (depth-first, left child adjacent, right
+/// child at <see cref="BvhNode.Index"/>) so traversal is a loop over an index stack. What an item is
+/// stays with the caller: leaves name item ids, in <see cref="Items"/>.
 /// </summary>
 internal sealed class Bvh
 {
   const int Bins = 16;
-  const int MaxLeaf = 4;
-
-  // Relative costs of visiting a node and of testing an item (a transform chain and a solid).
   const double TraversalCost = 1.0;
-  const double ItemCost = 2.0;
 
   public readonly BvhNode[] Nodes;
 
@@ -25,10 +23,10 @@ internal sealed class Bvh
   /// <summary>Maximal depth (for sizing the traversal stack).</summary>
   public readonly int Depth;
 
-  /// <summary>Per inner node, both children's boxes packed for the two-box SIMD test (unused for leaves).</summary>
+  /// <summary>Per inner node, both children's boxes packed for the two-box SIMD tests (unused for leaves).</summary>
   public readonly BvhChildBoxes[] Children;
 
-  Bvh(BvhNode[] nodes, int[] items, int depth)
+  Bvh(BvhNode[] nodes, int[] items, int depth, double childPad)
   {
     Nodes = nodes;
     Items = items;
@@ -36,129 +34,32 @@ internal sealed class Bvh
     Children = new BvhChildBoxes[nodes.Length];
     for (int i = 0; i < nodes.Length; i++)
       if (nodes[i].Count == 0)
-        Children[i] = new BvhChildBoxes(nodes[i + 1], nodes[nodes[i].Index]);
+        Children[i] = new BvhChildBoxes(nodes[i + 1], nodes[nodes[i].Index], childPad);
   }
 
-  /// <summary>Builds over <paramref name="boxes"/>[ids[k]]; ids are reordered into leaf order.</summary>
-  public static Bvh Build(Aabb[] boxes, int[] ids)
+  /// <summary>
+  /// Builds over <paramref name="boxes"/>[ids[k]], split by <paramref name="centers"/>; <paramref name="ids"/>
+  /// is reordered into leaf order and kept as <see cref="Items"/>. <paramref name="childPad"/> grows the
+  /// packed child boxes (not <see cref="Nodes"/>) for kernels that need a conservative two-box test.
+  /// </summary>
+  public static Bvh Build(Aabb[] boxes, Vector3d[] centers, int[] ids, BvhShape shape, double childPad = 0.0)
   {
     var nodes = new List<BvhNode>(Math.Max(1, 2 * ids.Length));
+    int depth = 0;
+    if (ids.Length > 0)
+      new Builder(boxes, centers, ids, shape, nodes).Node(0, ids.Length, 1, ref depth);
+    else
+      nodes.Add(Leaf(new Aabb(Vector3d.Zero, Vector3d.Zero), 0, 0));
+    return new Bvh(nodes.ToArray(), ids, depth, childPad);
+  }
+
+  /// <summary>Builds over boxes split by their centres.</summary>
+  public static Bvh Build(Aabb[] boxes, int[] ids, BvhShape shape)
+  {
     var centers = new Vector3d[boxes.Length];
     for (int i = 0; i < boxes.Length; i++)
       centers[i] = boxes[i].Center;
-    int depth = 0;
-    if (ids.Length > 0)
-      BuildNode(boxes, centers, ids, 0, ids.Length, nodes, 1, ref depth);
-    return new Bvh(nodes.ToArray(), ids, depth);
-  }
-
-  static int BuildNode(Aabb[] boxes, Vector3d[] centers, int[] ids, int start, int end, List<BvhNode> nodes, int level, ref int depth)
-  {
-    depth = Math.Max(depth, level);
-    Aabb bounds = Aabb.Empty, cbounds = Aabb.Empty;
-    for (int k = start; k < end; k++)
-    {
-      bounds.Add(boxes[ids[k]]);
-      cbounds.Add(centers[ids[k]]);
-    }
-
-    int self = nodes.Count;
-    nodes.Add(Leaf(bounds, start, end - start));
-    int count = end - start;
-    if (count <= 1)
-      return self;
-
-    // Split axis: the largest extent of the centroids.
-    Vector3d ext = cbounds.Max - cbounds.Min;
-    int axis = ext.X >= ext.Y && ext.X >= ext.Z ? 0 : ext.Y >= ext.Z ? 1 : 2;
-    double cmin = cbounds.Min[axis], cext = ext[axis];
-    int mid;
-    if (cext <= 0.0)
-    {
-      if (count <= MaxLeaf)
-        return self;
-      mid = (start + end) / 2;
-    }
-    else
-    {
-      // Bin the centroids, then sweep for the cheapest plane.
-      Span<int> binCount = stackalloc int[Bins];
-      var binBox = new Aabb[Bins];
-      for (int b = 0; b < Bins; b++)
-        binBox[b] = Aabb.Empty;
-      double scale = Bins / cext;
-      for (int k = start; k < end; k++)
-      {
-        int b = Math.Min(Bins - 1, (int)((centers[ids[k]][axis] - cmin) * scale));
-        binCount[b]++;
-        binBox[b].Add(boxes[ids[k]]);
-      }
-
-      Span<double> leftArea = stackalloc double[Bins];
-      Span<int> leftCount = stackalloc int[Bins];
-      Aabb acc = Aabb.Empty;
-      int n = 0;
-      for (int b = 0; b < Bins - 1; b++)
-      {
-        acc.Add(binBox[b]);
-        n += binCount[b];
-        leftArea[b] = acc.HalfArea;
-        leftCount[b] = n;
-      }
-      acc = Aabb.Empty;
-      n = 0;
-      double bestCost = double.PositiveInfinity;
-      int bestSplit = -1;
-      for (int b = Bins - 1; b > 0; b--)
-      {
-        acc.Add(binBox[b]);
-        n += binCount[b];
-        if (leftCount[b - 1] == 0 || n == 0)
-          continue;
-        double cost = leftArea[b - 1] * leftCount[b - 1] + acc.HalfArea * n;
-        if (cost < bestCost)
-        {
-          bestCost = cost;
-          bestSplit = b;
-        }
-      }
-
-      double parentArea = Math.Max(bounds.HalfArea, 1e-300);
-      double splitCost = TraversalCost + ItemCost * bestCost / parentArea;
-      if (count <= MaxLeaf && (bestSplit < 0 || splitCost >= ItemCost * count))
-        return self;
-
-      if (bestSplit < 0)
-        mid = (start + end) / 2;
-      else
-      {
-        // Partition by bin index.
-        int i = start, j = end - 1;
-        while (i <= j)
-        {
-          int b = Math.Min(Bins - 1, (int)((centers[ids[i]][axis] - cmin) * scale));
-          if (b < bestSplit)
-            i++;
-          else
-          {
-            (ids[i], ids[j]) = (ids[j], ids[i]);
-            j--;
-          }
-        }
-        mid = i;
-        if (mid == start || mid == end)
-          mid = (start + end) / 2;
-      }
-    }
-
-    BuildNode(boxes, centers, ids, start, mid, nodes, level + 1, ref depth);
-    int right = BuildNode(boxes, centers, ids, mid, end, nodes, level + 1, ref depth);
-    BvhNode node = nodes[self];
-    node.Index = right;
-    node.Count = 0;
-    node.Axis = axis;
-    nodes[self] = node;
-    return self;
+    return Build(boxes, centers, ids, shape);
   }
 
   static BvhNode Leaf(in Aabb b, int first, int count) => new()
@@ -168,4 +69,118 @@ internal sealed class Bvh
     Index = first,
     Count = count,
   };
+
+  readonly struct Builder(Aabb[] boxes, Vector3d[] centers, int[] ids, BvhShape shape, List<BvhNode> nodes)
+  {
+    public int Node(int start, int end, int level, ref int depth)
+    {
+      depth = Math.Max(depth, level);
+      Aabb bounds = Aabb.Empty, cbounds = Aabb.Empty;
+      for (int k = start; k < end; k++)
+      {
+        bounds.Add(boxes[ids[k]]);
+        cbounds.Add(centers[ids[k]]);
+      }
+
+      int self = nodes.Count;
+      nodes.Add(Leaf(bounds, start, end - start));
+      int count = end - start;
+      if (count <= shape.SmallLeaf)
+        return self;
+
+      Split split = BestSplit(start, end, cbounds);
+      double leafCost = shape.ItemCost * count;
+      double parentArea = bounds.HalfArea;
+      double splitCost = split.Axis >= 0 && parentArea > 0.0
+        ? TraversalCost + shape.ItemCost * split.Cost / parentArea
+        : double.PositiveInfinity;
+      int mid;
+      if (splitCost < leafCost || (count > shape.LargeLeaf && split.Axis >= 0))
+        mid = Partition(start, end, cbounds, split);
+      else if (count > shape.LargeLeaf)
+        mid = (start + end) / 2;   // inseparable centres: halves in the current order
+      else
+        return self;
+      if (mid == start || mid == end)
+        mid = (start + end) / 2;
+
+      Node(start, mid, level + 1, ref depth);
+      int right = Node(mid, end, level + 1, ref depth);
+      BvhNode node = nodes[self];
+      node.Index = right;
+      node.Count = 0;
+      node.Axis = split.Axis >= 0 ? split.Axis : 0;
+      nodes[self] = node;
+      return self;
+    }
+
+    /// <summary>The cheapest of the bin planes on the three axes (SAH, unnormalised); Axis −1 when none separates.</summary>
+    Split BestSplit(int start, int end, in Aabb cbounds)
+    {
+      Span<int> binCount = stackalloc int[Bins];
+      Span<Aabb> binBox = stackalloc Aabb[Bins];
+      Span<double> rightArea = stackalloc double[Bins];
+      Span<int> rightCount = stackalloc int[Bins];
+      var best = new Split(-1, 0, double.PositiveInfinity);
+      for (int axis = 0; axis < 3; axis++)
+      {
+        double cmin = cbounds.Min[axis], extent = cbounds.Max[axis] - cmin;
+        if (!(extent > 0.0))
+          continue;
+        double scale = Bins / extent;
+        binCount.Clear();
+        binBox.Fill(Aabb.Empty);
+        for (int k = start; k < end; k++)
+        {
+          int b = Bin(centers[ids[k]][axis], cmin, scale);
+          binCount[b]++;
+          binBox[b].Add(boxes[ids[k]]);
+        }
+        Aabb acc = Aabb.Empty;
+        int n = 0;
+        for (int b = Bins - 1; b > 0; b--)
+        {
+          acc.Add(binBox[b]);
+          n += binCount[b];
+          rightCount[b] = n;
+          rightArea[b] = acc.HalfArea;
+        }
+        acc = Aabb.Empty;
+        n = 0;
+        for (int b = 1; b < Bins; b++)
+        {
+          acc.Add(binBox[b - 1]);
+          n += binCount[b - 1];
+          if (n == 0 || rightCount[b] == 0)
+            continue;
+          double cost = n * acc.HalfArea + rightCount[b] * rightArea[b];
+          if (cost < best.Cost)
+            best = new Split(axis, b, cost);
+        }
+      }
+      return best;
+    }
+
+    /// <summary>Items whose centre falls in a bin below the split plane first; returns the first of the rest.</summary>
+    int Partition(int start, int end, in Aabb cbounds, Split split)
+    {
+      double cmin = cbounds.Min[split.Axis], scale = Bins / (cbounds.Max[split.Axis] - cmin);
+      int i = start, j = end - 1;
+      while (i <= j)
+      {
+        if (Bin(centers[ids[i]][split.Axis], cmin, scale) < split.Bin)
+          i++;
+        else
+        {
+          (ids[i], ids[j]) = (ids[j], ids[i]);
+          j--;
+        }
+      }
+      return i;
+    }
+
+    static int Bin(double c, double cmin, double scale) => Math.Min(Bins - 1, (int)((c - cmin) * scale));
+  }
+
+  readonly record struct Split(int Axis, int Bin, double Cost);
 }

@@ -98,7 +98,7 @@ public sealed partial class PreparedScene : ISceneQuery
     always = open.ToArray();
     if (union && bounded.Count > 0)
     {
-      bvh = Bvh.Build(boxes, bounded.ToArray());
+      bvh = Bvh.Build(boxes, bounded.ToArray(), BvhShape.SceneMembers);
       stackSize = bvh.Depth + 2;
     }
     else if (!union)

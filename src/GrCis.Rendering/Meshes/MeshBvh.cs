@@ -4,46 +4,25 @@ using System.Collections.Generic;
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using OpenTK.Mathematics;
+using Rendering.Accel;
 
 namespace Rendering;
 
-/// <summary>One ray–triangle hit found by <see cref="MeshBvh"/>.</summary>
-internal struct MeshHit
-{
-  public double T;
-  public int Triangle;
-  public double U, V;   // barycentrics: p = (1 − u − v)·a + u·b + v·c
-  public bool Front;    // the ray runs against the geometric normal (b − a) × (c − a)
-}
-
 /// <summary>
-/// Bounding volume hierarchy over a triangle soup: binned SAH build, nodes in flat arrays
-/// (a node's children are adjacent), allocation-free traversal with an explicit stack and
-/// Möller–Trumbore tests. It reports every hit along the whole line (negative t included),
-/// because CSG needs the complete list.
+/// A mesh's triangles under the generic <see cref="Bvh"/>, with the two allocation-free traversals a
+/// mesh needs: every hit along the whole line (negative t included, because CSG needs the complete
+/// list) and the nearest accepted or last rejected hit. Triangles are stored in leaf order and tested
+/// with Möller–Trumbore (<see cref="MeshTriangles"/>).
 /// </summary>
 internal sealed class MeshBvh
 {
-  const int Bins = 16;
-  const int MaxLeafSize = 4;
-  const double TraversalCost = 1.0;
-  const double TriangleCost = 1.0;
-
-  // Triangles in leaf order: first vertex and the two edges.
-  readonly double[] tri;      // 9 doubles per triangle: a, b − a, c − a
-  readonly int[] triId;       // original triangle handle
-
-  // Nodes: box, then either (first triangle, count > 0) or (left child index, count = 0); right = left + 1.
-  double[] boxes = Array.Empty<double>();   // 6 per node: min xyz, max xyz
-  int[] firstOrLeft = Array.Empty<int>();
-  int[] counts = Array.Empty<int>();
-  int nodeCount;
-  // Inner node with children (left, left + 1) → its padded child boxes at (left − 1) / 2, for Nearest.
-  MeshChildBoxes[] childBoxes = Array.Empty<MeshChildBoxes>();
+  readonly Bvh tree;
+  readonly double[] tri;      // 9 doubles per triangle in leaf order: a, b − a, c − a
+  readonly int[] triId;       // leaf order → original triangle handle
 
   public int TriangleCount => triId.Length;
 
-  public int NodeCount => nodeCount;
+  public int NodeCount => tree.Nodes.Length;
 
   /// <summary>Size of the mesh's box (for relative tolerances).</summary>
   public double Extent { get; }
@@ -54,182 +33,39 @@ internal sealed class MeshBvh
     var a = new Vector3d[n];
     var b = new Vector3d[n];
     var c = new Vector3d[n];
+    var boxes = new Aabb[n];
+    var centroids = new Vector3d[n];
+    var order = new int[n];
     for (int i = 0; i < n; i++)
     {
       mesh.GetTriangleVertices(i, out Vector3 pa, out Vector3 pb, out Vector3 pc);
       a[i] = pa;
       b[i] = pb;
       c[i] = pc;
-    }
-
-    // Per-triangle bounds and centroids.
-    var lo = new Vector3d[n];
-    var hi = new Vector3d[n];
-    var centroid = new Vector3d[n];
-    var order = new int[n];
-    for (int i = 0; i < n; i++)
-    {
-      lo[i] = Vector3d.ComponentMin(a[i], Vector3d.ComponentMin(b[i], c[i]));
-      hi[i] = Vector3d.ComponentMax(a[i], Vector3d.ComponentMax(b[i], c[i]));
-      centroid[i] = (a[i] + b[i] + c[i]) / 3.0;
+      boxes[i] = new Aabb(Vector3d.ComponentMin(a[i], Vector3d.ComponentMin(b[i], c[i])),
+                          Vector3d.ComponentMax(a[i], Vector3d.ComponentMax(b[i], c[i])));
+      centroids[i] = (a[i] + b[i] + c[i]) / 3.0;
       order[i] = i;
     }
 
-    int maxNodes = Math.Max(1, 2 * n - 1);
-    boxes = new double[6 * maxNodes];
-    firstOrLeft = new int[maxNodes];
-    counts = new int[maxNodes];
-    nodeCount = 1;
-    if (n > 0)
-      Build(0, 0, n, order, lo, hi, centroid);
-    else
-      SetBox(0, Vector3d.Zero, Vector3d.Zero);
-    Extent = n > 0 ? new Vector3d(boxes[3] - boxes[0], boxes[4] - boxes[1], boxes[5] - boxes[2]).Length : 0.0;
-
-    // Padding far above rounding (of box and triangle arithmetic, also far from the origin), far below any
-    // feature: the two-box test may then only keep more boxes than an exact one, never fewer.
+    // The child-box padding lies far above rounding (of box and triangle arithmetic, also far from the
+    // origin) and far below any feature: the two-box test may then only keep more boxes, never fewer.
+    Aabb root = Aabb.Empty;
+    foreach (Aabb box in boxes)
+      root.Add(box);
+    Extent = n > 0 ? (root.Max - root.Min).Length : 0.0;
     double magnitude = 0.0;
-    for (int k = 0; k < 6 && n > 0; k++)
-      magnitude = Math.Max(magnitude, Math.Abs(boxes[k]));
-    double pad = 1e-9 * (Extent + magnitude);
-    childBoxes = new MeshChildBoxes[Math.Max(0, (nodeCount - 1) / 2)];
-    for (int node = 0; node < nodeCount; node++)
-      if (counts[node] == 0 && n > 0)
-        childBoxes[(firstOrLeft[node] - 1) / 2] = new MeshChildBoxes(boxes, firstOrLeft[node], pad);
+    for (int axis = 0; axis < 3 && n > 0; axis++)
+      magnitude = Math.Max(magnitude, Math.Max(Math.Abs(root.Min[axis]), Math.Abs(root.Max[axis])));
+    tree = Bvh.Build(boxes, centroids, order, BvhShape.Triangles, 1e-9 * (Extent + magnitude));
 
     tri = new double[9 * n];
-    triId = new int[n];
+    triId = order;
     for (int k = 0; k < n; k++)
     {
       int i = order[k];
-      triId[k] = i;
       MeshTriangles.Store(tri, 9 * k, a[i], b[i], c[i]);
     }
-  }
-
-  void SetBox(int node, Vector3d min, Vector3d max)
-  {
-    int o = 6 * node;
-    boxes[o] = min.X; boxes[o + 1] = min.Y; boxes[o + 2] = min.Z;
-    boxes[o + 3] = max.X; boxes[o + 4] = max.Y; boxes[o + 5] = max.Z;
-  }
-
-  static double HalfArea(Vector3d min, Vector3d max)
-  {
-    Vector3d d = max - min;
-    return d.X * d.Y + d.Y * d.Z + d.Z * d.X;
-  }
-
-  void Build(int node, int first, int count, int[] order, Vector3d[] lo, Vector3d[] hi, Vector3d[] centroid)
-  {
-    Vector3d bMin = Vector3d.PositiveInfinity, bMax = Vector3d.NegativeInfinity;
-    Vector3d cMin = Vector3d.PositiveInfinity, cMax = Vector3d.NegativeInfinity;
-    for (int k = first; k < first + count; k++)
-    {
-      int i = order[k];
-      bMin = Vector3d.ComponentMin(bMin, lo[i]);
-      bMax = Vector3d.ComponentMax(bMax, hi[i]);
-      cMin = Vector3d.ComponentMin(cMin, centroid[i]);
-      cMax = Vector3d.ComponentMax(cMax, centroid[i]);
-    }
-    SetBox(node, bMin, bMax);
-    firstOrLeft[node] = first;
-    counts[node] = count;
-    if (count <= MaxLeafSize)
-      return;
-
-    // Binned SAH over all three axes of the centroid box.
-    Span<int> binCount = stackalloc int[Bins];
-    Span<Vector3d> binLo = stackalloc Vector3d[Bins];
-    Span<Vector3d> binHi = stackalloc Vector3d[Bins];
-    Span<double> rightArea = stackalloc double[Bins];
-    Span<int> rightCount = stackalloc int[Bins];
-    double bestCost = double.PositiveInfinity;
-    int bestAxis = -1, bestSplit = 0;
-    for (int axis = 0; axis < 3; axis++)
-    {
-      double extent = cMax[axis] - cMin[axis];
-      if (!(extent > 0.0))
-        continue;
-      double scale = Bins / extent;
-      binCount.Clear();
-      binLo.Fill(Vector3d.PositiveInfinity);
-      binHi.Fill(Vector3d.NegativeInfinity);
-      for (int k = first; k < first + count; k++)
-      {
-        int i = order[k];
-        int bin = Math.Min(Bins - 1, (int)((centroid[i][axis] - cMin[axis]) * scale));
-        binCount[bin]++;
-        binLo[bin] = Vector3d.ComponentMin(binLo[bin], lo[i]);
-        binHi[bin] = Vector3d.ComponentMax(binHi[bin], hi[i]);
-      }
-      // Sweep from the right, then from the left evaluating each split plane.
-      Vector3d rl = Vector3d.PositiveInfinity, rh = Vector3d.NegativeInfinity;
-      int rc = 0;
-      for (int s = Bins - 1; s > 0; s--)
-      {
-        rc += binCount[s];
-        rl = Vector3d.ComponentMin(rl, binLo[s]);
-        rh = Vector3d.ComponentMax(rh, binHi[s]);
-        rightCount[s] = rc;
-        rightArea[s] = rc > 0 ? HalfArea(rl, rh) : 0.0;
-      }
-      Vector3d ll = Vector3d.PositiveInfinity, lh = Vector3d.NegativeInfinity;
-      int lc = 0;
-      for (int s = 1; s < Bins; s++)
-      {
-        lc += binCount[s - 1];
-        ll = Vector3d.ComponentMin(ll, binLo[s - 1]);
-        lh = Vector3d.ComponentMax(lh, binHi[s - 1]);
-        if (lc == 0 || rightCount[s] == 0)
-          continue;
-        double cost = lc * HalfArea(ll, lh) + rightCount[s] * rightArea[s];
-        if (cost < bestCost)
-        {
-          bestCost = cost;
-          bestAxis = axis;
-          bestSplit = s;
-        }
-      }
-    }
-
-    double leafCost = count * TriangleCost;
-    double parentArea = HalfArea(bMin, bMax);
-    double splitCost = parentArea > 0.0 ? TraversalCost + TriangleCost * bestCost / parentArea : double.PositiveInfinity;
-    int mid;
-    if (bestAxis >= 0 && splitCost < leafCost)
-    {
-      double scale = Bins / (cMax[bestAxis] - cMin[bestAxis]);
-      int i0 = first, i1 = first + count - 1;
-      while (i0 <= i1)
-      {
-        int bin = Math.Min(Bins - 1, (int)((centroid[order[i0]][bestAxis] - cMin[bestAxis]) * scale));
-        if (bin < bestSplit)
-          i0++;
-        else
-        {
-          (order[i0], order[i1]) = (order[i1], order[i0]);
-          i1--;
-        }
-      }
-      mid = i0;
-    }
-    else if (count > 4 * MaxLeafSize)
-    {
-      // SAH prefers a leaf but it is large: split in the middle of the order (median).
-      mid = first + count / 2;
-    }
-    else
-      return;
-
-    if (mid == first || mid == first + count)
-      mid = first + count / 2;
-    int left = nodeCount;
-    nodeCount += 2;
-    firstOrLeft[node] = left;
-    counts[node] = 0;
-    Build(left, first, mid - first, order, lo, hi, centroid);
-    Build(left + 1, mid, first + count - mid, order, lo, hi, centroid);
   }
 
   /// <summary>Original triangle handle of the k-th triangle in leaf order.</summary>
@@ -251,8 +87,8 @@ internal sealed class MeshBvh
       int node = stack[--sp];
       if (!LineBox(node, ox, oy, oz, dx, dy, dz, ix, iy, iz, out _, out _))
         continue;
-      int count = counts[node];
-      if (count == 0)
+      ref BvhNode n = ref tree.Nodes[node];
+      if (n.Count == 0)
       {
         if (sp + 2 > stack.Length)
         {
@@ -261,12 +97,12 @@ internal sealed class MeshBvh
           stack.CopyTo(bigger);
           stack = bigger;
         }
-        stack[sp++] = firstOrLeft[node];
-        stack[sp++] = firstOrLeft[node] + 1;
+        stack[sp++] = node + 1;
+        stack[sp++] = n.Index;
         continue;
       }
-      int end = firstOrLeft[node] + count;
-      for (int k = firstOrLeft[node]; k < end; k++)
+      int end = n.Index + n.Count;
+      for (int k = n.Index; k < end; k++)
         TestTriangle(k, ox, oy, oz, dx, dy, dz, hits);
     }
   }
@@ -332,11 +168,11 @@ internal sealed class MeshBvh
       if (accepted ? (e.Far <= 0.0 || e.Near > bestT) : (e.Near > limit || e.Far < bestT))
         continue;
       int node = e.Node;
-      int count = counts[node];
-      if (count == 0)
+      ref BvhNode n = ref tree.Nodes[node];
+      if (n.Count == 0)
       {
-        int left = firstOrLeft[node];
-        int mask = childBoxes[(left - 1) >> 1].Cross(vox, voy, voz, vix, viy, viz, out Vector128<double> near, out Vector128<double> far);
+        int left = node + 1, right = n.Index;
+        int mask = tree.Children[node].Cross(vox, voy, voz, vix, viy, viz, out Vector128<double> near, out Vector128<double> far);
         if (mask == 0)
           continue;
         if (sp + 2 > stack.Length)
@@ -347,7 +183,7 @@ internal sealed class MeshBvh
           stack = bigger;
         }
         var l = new NodeSpan(left, near.GetElement(0), far.GetElement(0));
-        var r = new NodeSpan(left + 1, near.GetElement(1), far.GetElement(1));
+        var r = new NodeSpan(right, near.GetElement(1), far.GetElement(1));
         if (mask != 3)
         {
           stack[sp++] = mask == 1 ? l : r;
@@ -360,8 +196,8 @@ internal sealed class MeshBvh
         stack[sp++] = rightFirst ? r : l;
         continue;
       }
-      int end = firstOrLeft[node] + count;
-      for (int k = firstOrLeft[node]; k < end; k++)
+      int end = n.Index + n.Count;
+      for (int k = n.Index; k < end; k++)
       {
         if (!Triangle(k, ox, oy, oz, dx, dy, dz, out double t, out double u, out double v, out bool front))
           continue;
@@ -387,12 +223,12 @@ internal sealed class MeshBvh
   bool LineBox(int node, double ox, double oy, double oz, double dx, double dy, double dz, double ix, double iy, double iz,
                out double tMin, out double tMax)
   {
-    int o = 6 * node;
+    ref BvhNode n = ref tree.Nodes[node];
     tMin = double.NegativeInfinity;
     tMax = double.PositiveInfinity;
-    return Slab(boxes[o], boxes[o + 3], ox, dx, ix, ref tMin, ref tMax) &&
-           Slab(boxes[o + 1], boxes[o + 4], oy, dy, iy, ref tMin, ref tMax) &&
-           Slab(boxes[o + 2], boxes[o + 5], oz, dz, iz, ref tMin, ref tMax);
+    return Slab(n.MinX, n.MaxX, ox, dx, ix, ref tMin, ref tMax) &&
+           Slab(n.MinY, n.MaxY, oy, dy, iy, ref tMin, ref tMax) &&
+           Slab(n.MinZ, n.MaxZ, oz, dz, iz, ref tMin, ref tMax);
   }
 
   readonly record struct NodeSpan(int Node, double Near, double Far);
