@@ -22,7 +22,7 @@ public class KernelBenchmarks
   [Benchmark]
   public double RaySphere_fast()
   {
-    sphere.IntersectFirst(p0, p1, 1.0, out FastHit h, out _);
+    sphere.IntersectFirst(p0, p1, 1.0, out SolidRecord h, out _);
     return h.T;
   }
 
@@ -36,7 +36,7 @@ public class KernelBenchmarks
   [Benchmark]
   public double RayBox_fast()
   {
-    cube.IntersectFirst(c0, c1, 1.0, out FastHit h, out _);
+    cube.IntersectFirst(c0, c1, 1.0, out SolidRecord h, out _);
     return h.T;
   }
 
@@ -51,7 +51,7 @@ public class KernelBenchmarks
   [Benchmark]
   public double RayMesh10k_fast()
   {
-    torus.IntersectFirst(m0, m1, 1.0, out FastHit h, out _);
+    torus.IntersectFirst(m0, m1, 1.0, out SolidRecord h, out _);
     return h.T;
   }
 

@@ -7,7 +7,7 @@ namespace Rendering.Accel;
 
 /// <summary>
 /// Allocation-free evaluation of a CSG subtree (any operations, nested) whose leaves are all solids with
-/// <see cref="IFastSolid.IntersectAll"/>: the same records, merged by the same rule, as
+/// <see cref="IRecordSolid.IntersectAll"/>: the same records, merged by the same rule, as
 /// <see cref="CSGInnerNode.Intersect"/>, held in stack buffers instead of linked lists.
 /// </summary>
 /// <remarks>
@@ -21,7 +21,7 @@ namespace Rendering.Accel;
 /// </remarks>
 internal sealed class CsgKernel
 {
-  /// <summary>Largest record count (sum of the leaves' <see cref="IFastSolid.MaxRecords"/>) the kernel takes.</summary>
+  /// <summary>Largest record count (sum of the leaves' <see cref="IRecordSolid.MaxRecords"/>) the kernel takes.</summary>
   public const int MaxTotalRecords = 64;
 
   /// <summary>Largest index workspace (bytes); deeper trees stay on the list path.</summary>
@@ -69,7 +69,7 @@ internal sealed class CsgKernel
 
   /// <summary>
   /// True when the list path must answer for <paramref name="root"/>: not a library CSG node, a bounding
-  /// volume, a leaf without <see cref="IFastSolid.IntersectAll"/> (meshes, script solids, Bézier patches,
+  /// volume, a leaf without <see cref="IRecordSolid.IntersectAll"/> (meshes, script solids, Bézier patches,
   /// animated nodes), or more than <see cref="MaxTotalRecords"/> records.
   /// </summary>
   public static CsgKernel? TryCompile(ISceneNode root)
@@ -78,7 +78,7 @@ internal sealed class CsgKernel
       return null;
     var nodes = new List<Node>();
     var steps = new List<Matrix4d>();
-    var solids = new List<IFastSolid>();
+    var solids = new List<IRecordSolid>();
     if (Add(root, -1, nodes, steps, solids) < 0 || nodes[0].Max > MaxTotalRecords || nodes[0].Work > MaxWork)
       return null;
 
@@ -92,15 +92,15 @@ internal sealed class CsgKernel
   }
 
   static bool IsLibraryCsg(ISceneNode node) =>
-    node.GetType() == typeof(CSGInnerNode) && ((CSGInnerNode)node).BoundingVolume == null;
+    SubclassCheck.OverridesNothing(node, typeof(CSGInnerNode)) && ((CSGInnerNode)node).BoundingVolume == null;
 
   /// <summary>Appends <paramref name="node"/>'s subtree in depth-first order; its index, or -1 when it cannot be compiled.</summary>
-  static int Add(ISceneNode node, int step, List<Node> nodes, List<Matrix4d> steps, List<IFastSolid> solids)
+  static int Add(ISceneNode node, int step, List<Node> nodes, List<Matrix4d> steps, List<IRecordSolid> solids)
   {
     int index = nodes.Count;
-    if (node is IFastSolid f)
+    if (node is IRecordSolid f)
     {
-      int max = f.SupportsFastPath ? f.MaxRecords : -1;
+      int max = f.RecordsMatchIntersect ? f.MaxRecords : -1;
       if (max <= 0)
         return -1;
       nodes.Add(new Node { Leaf = solids.Count, Step = step, Next = -1, Max = max });
@@ -156,18 +156,18 @@ internal sealed class CsgKernel
 
   /// <summary>
   /// The first record <see cref="Intersection.FirstIntersection"/> accepts from the subtree's list (local ray of
-  /// the subtree's root), its leaf, and the CSG inside state before it (as <see cref="IFastSolid.IntersectFirst"/>).
+  /// the subtree's root), its leaf, and the CSG inside state before it (as <see cref="IRecordSolid.IntersectFirst"/>).
   /// Returns 1 (a record), 0 (none), or -1 when the list path must answer (a list it would not merge: NaN or
   /// infinite T).
   /// </summary>
   [SkipLocalsInit]
-  public int IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out int leaf, out bool insideBefore)
+  public int IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out int leaf, out bool insideBefore)
   {
     hit = default;
     leaf = -1;
     insideBefore = false;
     int max = MaxRecords;
-    Span<FastHit> arena = stackalloc FastHit[max];
+    Span<SolidRecord> arena = stackalloc SolidRecord[max];
     Span<byte> leafOf = stackalloc byte[max];
     Span<byte> list = stackalloc byte[max];
     Span<byte> work = stackalloc byte[nodes[0].Work];
@@ -180,7 +180,7 @@ internal sealed class CsgKernel
     bool state = !arena[list[0]].Enter;
     for (int k = 0; k < n; k++)
     {
-      ref FastHit r = ref arena[list[k]];
+      ref SolidRecord r = ref arena[list[k]];
       if (r.T > 0.0 && r.T * r.T * len2 > Intersection.RAY_EPSILON2)
       {
         hit = r;
@@ -199,10 +199,10 @@ internal sealed class CsgKernel
   /// the count, or -1 when the list path must answer. <paramref name="hits"/> and <paramref name="leaves"/>
   /// must hold <see cref="MaxRecords"/>.
   /// </summary>
-  public int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> hits, Span<int> leaves)
+  public int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> hits, Span<int> leaves)
   {
     int max = MaxRecords;
-    Span<FastHit> arena = stackalloc FastHit[max];
+    Span<SolidRecord> arena = stackalloc SolidRecord[max];
     Span<byte> leafOf = stackalloc byte[max];
     Span<byte> list = stackalloc byte[max];
     Span<byte> work = stackalloc byte[nodes[0].Work];
@@ -217,13 +217,13 @@ internal sealed class CsgKernel
   }
 
   /// <summary>Evaluates node <paramref name="ni"/> into <paramref name="dst"/> (arena indices); the count or -1.</summary>
-  int Eval(int ni, in Vector3d p0, in Vector3d p1, Span<FastHit> arena, Span<byte> leafOf, ref int used,
+  int Eval(int ni, in Vector3d p0, in Vector3d p1, Span<SolidRecord> arena, Span<byte> leafOf, ref int used,
            Span<byte> dst, Span<byte> work)
   {
     ref Node node = ref nodes[ni];
     if (node.Leaf >= 0)
     {
-      int n = Leaves[node.Leaf].Fast!.IntersectAll(p0, p1, arena.Slice(used, node.Max));
+      int n = Leaves[node.Leaf].RecordSolid!.IntersectAll(p0, p1, arena.Slice(used, node.Max));
       if (n < 0 || n > node.Max)
         return -1;
       for (int k = 0; k < n; k++)
@@ -276,7 +276,7 @@ internal sealed class CsgKernel
   }
 
   /// <summary>One binary step of <see cref="CSGInnerNode"/>: boundaries of (left # right); -1 where that step would not finish.</summary>
-  static int Merge(int table, Span<FastHit> arena, ReadOnlySpan<byte> left, ReadOnlySpan<byte> right, Span<byte> result)
+  static int Merge(int table, Span<SolidRecord> arena, ReadOnlySpan<byte> left, ReadOnlySpan<byte> right, Span<byte> result)
   {
     int l = 0, r = 0, n = 0;
     bool insideLeft = left.Length > 0 && !arena[left[0]].Enter;

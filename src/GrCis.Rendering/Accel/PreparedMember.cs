@@ -3,7 +3,7 @@ using OpenTK.Mathematics;
 namespace Rendering.Accel;
 
 /// <summary>
-/// One leaf of a flattened scene: a known solid answered by its <see cref="IFastSolid"/> kernel, or any
+/// One leaf of a flattened scene: a known solid answered by its <see cref="IRecordSolid"/> kernel, or any
 /// non-union CSG subtree over such solids (<see cref="Csg"/>), or any other intersectable (CSG over meshes,
 /// script solids) answered through its LinkedList API.
 /// </summary>
@@ -12,9 +12,9 @@ internal struct PreparedMember
   public IIntersectable Node;
 
   /// <summary>Non-null when the allocation-free kernel answers for this member.</summary>
-  public IFastSolid? Fast;
+  public IRecordSolid? RecordSolid;
 
-  /// <summary>Non-null for a non-union CSG subtree evaluated by its allocation-free kernel (then <see cref="Fast"/> is null).</summary>
+  /// <summary>Non-null for a non-union CSG subtree evaluated by its allocation-free kernel (then <see cref="RecordSolid"/> is null).</summary>
   public CsgKernel? Csg;
 
   /// <summary>FromParent matrices from the scene root down to this member (identities left out), in order.</summary>
@@ -43,8 +43,8 @@ internal struct PreparedMember
   public System.Collections.Generic.LinkedList<ITexture>? Textures;
   public object? Recursion;
 
-  /// <summary>What a lean completion may leave out for this member (when the caller allows it).</summary>
-  public LeanCompletion Lean;
+  /// <summary>What a surface-only completion may leave out for this member (when the caller allows it).</summary>
+  public HitCompletion Completion;
 
   // What Intersection.Complete() would compute (Solid.ToWorld(), its inverse, Solid.ToObject()).
   public Matrix4d LocalToWorld, WorldToLocal, LocalToObject;

@@ -22,7 +22,7 @@ public sealed partial class PreparedScene
   // ---------------------------------------------------------------- preparation
 
   static bool IsPureUnion(ISceneNode node) =>
-    node.GetType() == typeof(CSGInnerNode) &&
+    SubclassCheck.OverridesNothing(node, typeof(CSGInnerNode)) &&
     node is CSGInnerNode c && c.Operation == SetOperation.Union && c.BoundingVolume == null;
 
   /// <summary>Top level: returns true for union semantics, false for a single member's raw list.</summary>
@@ -83,7 +83,7 @@ public sealed partial class PreparedScene
     };
     chain.AddRange(path);
 
-    if (node is IFastSolid f && f.SupportsFastPath)
+    if (node is IRecordSolid f && f.RecordsMatchIntersect)
       BindSolid(ref m, f);
     else if (node is ISceneNode csg && CsgKernel.TryCompile(csg) is CsgKernel kernel)
     {
@@ -93,7 +93,7 @@ public sealed partial class PreparedScene
         m.NoShadow |= leaf.NoShadow;
     }
 
-    if (node is Sphere && m.Fast != null && TrySimilarity(path, out Vector3d center, out double radius))
+    if (node is Sphere && m.RecordSolid != null && TrySimilarity(path, out Vector3d center, out double radius))
     {
       // 1e-6 relative slack covers the rounding of the chain and of this estimate by a wide margin.
       double r = radius * (1.0 + 1.0e-6) + 1.0e-12;
@@ -118,9 +118,9 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>Binds a known solid: its kernel, completion matrices and the attributes resolved once.</summary>
-  internal static void BindSolid(ref PreparedMember m, IFastSolid f)
+  internal static void BindSolid(ref PreparedMember m, IRecordSolid f)
   {
-    m.Fast = f;
+    m.RecordSolid = f;
     m.LocalToWorld = f.ToWorld();
     m.WorldToLocal = m.LocalToWorld.Inverted();
     m.LocalToObject = f.ToObject();
@@ -136,7 +136,7 @@ public sealed partial class PreparedScene
       m.Color = f.GetAttribute(PropertyName.COLOR) as double[] ?? material.Color;
       m.Textures = f.GetTextures();
       m.Recursion = f.GetAttribute(PropertyName.RECURSION);
-      m.Lean = LeanKind(f, model, material, m.Textures, m.Recursion);
+      m.Completion = CompletionFor(f, model, material, m.Textures, m.Recursion);
     }
   }
 
@@ -164,15 +164,15 @@ public sealed partial class PreparedScene
   static bool TryClosedBox(ISceneNode node, out Aabb box)
   {
     box = Aabb.Empty;
-    if (node is IFastSolid f)
+    if (node is IRecordSolid f)
     {
-      if (!f.SupportsFastPath || !f.IsClosed)
+      if (!f.RecordsMatchIntersect || !f.IsClosed)
         return false;
       f.GetBoundingBox(out Vector3d c1, out Vector3d c2);
       box = new Aabb(c1, c2);
       return true;
     }
-    if (node.GetType() != typeof(CSGInnerNode))
+    if (!SubclassCheck.OverridesNothing(node, typeof(CSGInnerNode)))
       return false;
 
     var csg = (CSGInnerNode)node;
@@ -203,28 +203,27 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>
-  /// The lean completion a member allows: an exact library Sphere, Plane or Cube, shaded by the library's Phong
+  /// The surface-only completion a member allows: an exact library Sphere, Plane or Cube, shaded by the library's Phong
   /// model and material, with no RECURSION function and no texture but checkers (which read only TextureCoord).
   /// </summary>
-  static LeanCompletion LeanKind(IFastSolid f, IReflectanceModel model, IMaterial material, LinkedList<ITexture>? textures, object? recursion)
+  static HitCompletion CompletionFor(IRecordSolid f, IReflectanceModel model, IMaterial material, LinkedList<ITexture>? textures, object? recursion)
   {
-    if (recursion != null || model.GetType() != typeof(PhongModel) || material.GetType() != typeof(PhongMaterial))
-      return LeanCompletion.None;
+    if (recursion != null || !SubclassCheck.OverridesNothing(model, typeof(PhongModel)) || !SubclassCheck.OverridesNothing(material, typeof(PhongMaterial)))
+      return HitCompletion.Full;
     bool textured = false;
     if (textures != null)
       foreach (ITexture t in textures)
       {
-        if (t.GetType() != typeof(CheckerTexture))
-          return LeanCompletion.None;
+        if (!SubclassCheck.OverridesNothing(t, typeof(CheckerTexture)))
+          return HitCompletion.Full;
         textured = true;
       }
-    Type type = f.GetType();
-    if (type == typeof(Sphere))
-      return textured ? LeanCompletion.SphereTextured : LeanCompletion.Sphere;
-    if (type == typeof(Plane))
-      return LeanCompletion.Plane;
-    if (type == typeof(Cube))
-      return LeanCompletion.Cube;
-    return LeanCompletion.None;
+    if (SubclassCheck.OverridesNothing(f, typeof(Sphere)))
+      return textured ? HitCompletion.SphereTextured : HitCompletion.Sphere;
+    if (SubclassCheck.OverridesNothing(f, typeof(Plane)))
+      return HitCompletion.Plane;
+    if (SubclassCheck.OverridesNothing(f, typeof(Cube)))
+      return HitCompletion.Cube;
+    return HitCompletion.Full;
   }
 }

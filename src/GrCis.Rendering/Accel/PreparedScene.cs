@@ -16,7 +16,7 @@ namespace Rendering.Accel;
 /// <para><b>When is a union a pure container?</b> GrCis merges a union's children left to right and keeps
 /// a record only where the union's inside state changes; <see cref="Intersection.FirstIntersection"/> then
 /// takes the first record with T &gt; 0 and T²|p1|² &gt; RAY_EPSILON2 ("valid"). Let every member report its
-/// first valid record and its inside state just before it (<see cref="IFastSolid.IntersectFirst"/>). If no
+/// first valid record and its inside state just before it (<see cref="IRecordSolid.IntersectFirst"/>). If no
 /// member is inside there and every member's first valid record is an entry, the union is outside until
 /// the first entry, so its first valid record is the smallest first valid record over the members (ties:
 /// the member first in depth-first order, as the merge keeps the left operand's record). Otherwise — the
@@ -83,7 +83,7 @@ public sealed partial class PreparedScene : ISceneQuery
     {
       if (members[i].Csg != null)
         csgMembers++;
-      else if (members[i].Fast == null)
+      else if (members[i].RecordSolid == null)
         listMembers++;
       boxes[i] = members[i].WorldBox;
       if (!members[i].Closed)
@@ -120,14 +120,14 @@ public sealed partial class PreparedScene : ISceneQuery
     public int BestIndex;
     /// <summary>Leaf of a CSG member's record (-1: the member's own solid).</summary>
     public int BestLeaf;
-    public FastHit BestHit;
+    public SolidRecord BestHit;
     public Intersection? BestList;
 
     // The one member the ray starts inside (-1: none) and its first valid record, an exit.
     public int InsideIndex;
     public int InsideLeaf;
     public double InsideT;
-    public FastHit InsideHit;
+    public SolidRecord InsideHit;
   }
 
   /// <summary>
@@ -144,7 +144,7 @@ public sealed partial class PreparedScene : ISceneQuery
 
   /// <inheritdoc/>
   /// <remarks>With <paramref name="needs"/> = <see cref="HitData.Surface"/>, members whose attributes allow it
-  /// are completed without their local frame (<see cref="LeanCompletion"/>); the computed fields are the same bits.</remarks>
+  /// are completed without their local frame (<see cref="HitCompletion"/>); the computed fields are the same bits.</remarks>
   public Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse = null, HitData needs = HitData.All) =>
     FirstHit(p0, p1, reuse, (needs & HitData.LocalFrame) == 0);
 
@@ -152,31 +152,31 @@ public sealed partial class PreparedScene : ISceneQuery
   public bool AnyHit(Vector3d p0, Vector3d dir) => Occluded(p0, dir);
 
   /// <summary>
-  /// <see cref="FirstHit(Vector3d, Vector3d, Intersection?)"/>; with <paramref name="lean"/> (only the library's own
-  /// shading will read the hit) members that allow it are completed leanly (<see cref="LeanCompletion"/>).
+  /// <see cref="FirstHit(Vector3d, Vector3d, Intersection?)"/>; with <paramref name="surfaceOnly"/> (only the library's own
+  /// shading will read the hit) members that allow it are completed leanly (<see cref="HitCompletion"/>).
   /// </summary>
-  internal Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse, bool lean)
+  internal Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse, bool surfaceOnly)
   {
     if (members.Length == 0)
       return null;
     double len2 = p1.LengthSquared;
     if (!union)
-      return FirstHitSingle(p0, p1, len2, reuse, lean);
+      return FirstHitSingle(p0, p1, len2, reuse, surfaceOnly);
 
     var q = NewQuery(len2, double.PositiveInfinity);
     if (!Closest(ref q, p0, p1))
-      return FaithfulFirstHit(p0, p1);
+      return ListFirstHit(p0, p1);
     if (q.InsideIndex >= 0)
     {
       // Starting inside one member: the union's first record is that member's exit, unless another
       // member is entered first (or at the same T): then the faithful path decides.
       if (q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT)
-        return FaithfulFirstHit(p0, p1);
-      return Complete(ref Solid(q.InsideIndex, q.InsideLeaf), q.InsideHit, reuse, lean);
+        return ListFirstHit(p0, p1);
+      return Complete(ref Solid(q.InsideIndex, q.InsideLeaf), q.InsideHit, reuse, surfaceOnly);
     }
     if (q.BestIndex == int.MaxValue)
       return null;
-    return q.BestList ?? Complete(ref Solid(q.BestIndex, q.BestLeaf), q.BestHit, reuse, lean);
+    return q.BestList ?? Complete(ref Solid(q.BestIndex, q.BestLeaf), q.BestHit, reuse, surfaceOnly);
   }
 
   /// <summary>The solid a record belongs to: the member itself, or leaf <paramref name="leaf"/> of its CSG kernel.</summary>
@@ -188,9 +188,9 @@ public sealed partial class PreparedScene : ISceneQuery
   }
 
   /// <summary>The record as an <see cref="Intersection"/>, completed from the member's cached matrices and attributes.</summary>
-  static Intersection Complete(ref PreparedMember m, in FastHit hit, Intersection? reuse, bool lean)
+  static Intersection Complete(ref PreparedMember m, in SolidRecord hit, Intersection? reuse, bool surfaceOnly)
   {
-    IFastSolid f = m.Fast!;
+    IRecordSolid f = m.RecordSolid!;
     Intersection i;
     if (reuse != null)
     {
@@ -200,8 +200,8 @@ public sealed partial class PreparedScene : ISceneQuery
     else
       i = new Intersection(f);
     f.InitIntersection(hit, i);
-    if (lean && m.Lean != LeanCompletion.None)
-      i.CompleteLean(m.LocalToWorld, m.WorldToLocal, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion, m.Lean);
+    if (surfaceOnly && m.Completion != HitCompletion.Full)
+      i.CompleteSurface(m.LocalToWorld, m.WorldToLocal, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion, m.Completion);
     else if (m.AttributesCached)
       i.CompleteCached(m.LocalToWorld, m.WorldToLocal, m.LocalToObject, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion);
     else
@@ -226,11 +226,11 @@ public sealed partial class PreparedScene : ISceneQuery
     bound += bound * 1.0e-12;
     var q = NewQuery(len2, bound);
     if (!Closest(ref q, p0, dir))
-      return FaithfulOccluded(p0, dir);
+      return ListOccluded(p0, dir);
     if (q.InsideIndex >= 0)
     {
       if ((q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT) || Solid(q.InsideIndex, q.InsideLeaf).NoShadow)
-        return FaithfulOccluded(p0, dir);
+        return ListOccluded(p0, dir);
       return NotFar(q.InsideT, len2);
     }
     if (q.BestIndex == int.MaxValue)
@@ -240,7 +240,7 @@ public sealed partial class PreparedScene : ISceneQuery
       ? q.BestList.Solid != null && q.BestList.Solid.GetLocalAttribute(PropertyName.NO_SHADOW) != null
       : Solid(q.BestIndex, q.BestLeaf).NoShadow;
     if (noShadow)
-      return FaithfulOccluded(p0, dir);
+      return ListOccluded(p0, dir);
     return NotFar(q.EntryT, len2);
   }
 
@@ -263,13 +263,13 @@ public sealed partial class PreparedScene : ISceneQuery
     return !(d * d * len2 > Intersection.RAY_EPSILON2);
   }
 
-  Intersection? FaithfulFirstHit(Vector3d p0, Vector3d p1)
+  Intersection? ListFirstHit(Vector3d p0, Vector3d p1)
   {
     Interlocked.Increment(ref fallbacks);
     return Intersection.FirstIntersection(Source!.Intersect(p0, p1), ref p1);
   }
 
-  bool FaithfulOccluded(Vector3d p0, Vector3d dir)
+  bool ListOccluded(Vector3d p0, Vector3d dir)
   {
     Interlocked.Increment(ref fallbacks);
     Intersection? si = Intersection.FirstRealIntersection(Source!.Intersect(p0, dir), ref dir);
@@ -286,24 +286,24 @@ public sealed partial class PreparedScene : ISceneQuery
       CsgKernel.Transform(ref chain[k], ref p0, ref p1);
   }
 
-  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2, Intersection? reuse, bool lean)
+  Intersection? FirstHitSingle(Vector3d p0, Vector3d p1, double len2, Intersection? reuse, bool surfaceOnly)
   {
     ref PreparedMember m = ref members[0];
     Vector3d lp0 = p0, lp1 = p1;
     ToLocal(m, ref lp0, ref lp1);
-    if (m.Fast != null)
+    if (m.RecordSolid != null)
     {
-      if (!m.Fast.IntersectFirst(lp0, lp1, len2, out FastHit h, out _))
+      if (!m.RecordSolid.IntersectFirst(lp0, lp1, len2, out SolidRecord h, out _))
         return null;
-      return Complete(ref m, h, reuse, lean);
+      return Complete(ref m, h, reuse, surfaceOnly);
     }
     if (m.Csg != null)
     {
-      int status = m.Csg.IntersectFirst(lp0, lp1, len2, out FastHit h, out int leaf, out _);
+      int status = m.Csg.IntersectFirst(lp0, lp1, len2, out SolidRecord h, out int leaf, out _);
       if (status == 0)
         return null;
       if (status > 0)
-        return Complete(ref m.Csg.Leaves[leaf], h, reuse, lean);
+        return Complete(ref m.Csg.Leaves[leaf], h, reuse, surfaceOnly);
     }
     return Intersection.FirstIntersection(m.Node.Intersect(lp0, lp1), ref p1);
   }
@@ -313,17 +313,17 @@ public sealed partial class PreparedScene : ISceneQuery
     ref PreparedMember m = ref members[0];
     Vector3d lp0 = p0, lp1 = dir;
     ToLocal(m, ref lp0, ref lp1);
-    if (m.Fast != null)
+    if (m.RecordSolid != null)
     {
       // Every record belongs to this solid, so NO_SHADOW hides them all.
-      if (m.NoShadow || !m.Fast.IntersectFirst(lp0, lp1, len2, out FastHit h, out _))
+      if (m.NoShadow || !m.RecordSolid.IntersectFirst(lp0, lp1, len2, out SolidRecord h, out _))
         return false;
       return NotFar(h.T, len2);
     }
     if (m.Csg != null)
     {
       // FirstRealIntersection skips NO_SHADOW records: the list decides when the first one is such.
-      int status = m.Csg.IntersectFirst(lp0, lp1, len2, out FastHit h, out int leaf, out _);
+      int status = m.Csg.IntersectFirst(lp0, lp1, len2, out SolidRecord h, out int leaf, out _);
       if (status == 0)
         return false;
       if (status > 0 && !m.Csg.Leaves[leaf].NoShadow)
@@ -434,14 +434,14 @@ public sealed partial class PreparedScene : ISceneQuery
     Vector3d lp0 = p0, lp1 = p1;
     ToLocal(m, ref lp0, ref lp1);
 
-    if (m.Fast != null || m.Csg != null)
+    if (m.RecordSolid != null || m.Csg != null)
     {
       bool has;
-      FastHit h;
+      SolidRecord h;
       bool inside;
       int leaf = -1;
-      if (m.Fast != null)
-        has = m.Fast.IntersectFirst(lp0, lp1, q.Len2, out h, out inside);
+      if (m.RecordSolid != null)
+        has = m.RecordSolid.IntersectFirst(lp0, lp1, q.Len2, out h, out inside);
       else
       {
         int status = m.Csg!.IntersectFirst(lp0, lp1, q.Len2, out h, out leaf, out inside);

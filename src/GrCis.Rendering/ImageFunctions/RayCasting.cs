@@ -37,7 +37,7 @@ public class RayCasting : IImageFunction
   public RayCasting(IRayScene? sc = null)
   {
     scene = sc;
-    firstHitOverridden = Overrides(nameof(FirstHit), typeof(RayCasting));
+    firstHitOverridden = SubclassCheck.OverridesAny(GetType(), new[] { nameof(FirstHit) });
   }
 
   /// <summary>
@@ -51,17 +51,6 @@ public class RayCasting : IImageFunction
     Accel = source.Accel;
     ReuseIntersections = source.ReuseIntersections;
   }
-
-  static readonly System.Collections.Concurrent.ConcurrentDictionary<(Type, string, Type), bool> overrides = new();
-
-  /// <summary>
-  /// Whether this object's class overrides the protected <c>(Vector3d, Vector3d)</c> method <paramref name="method"/>
-  /// that <paramref name="declaring"/> declares (a script's subclass): cached per class.
-  /// </summary>
-  private protected bool Overrides(string method, Type declaring) =>
-    overrides.GetOrAdd((GetType(), method, declaring), static k =>
-      k.Item1.GetMethod(k.Item2, System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.NonPublic,
-        new[] { typeof(Vector3d), typeof(Vector3d) })?.DeclaringType != k.Item3);
 
   /// <summary>
   /// First hit of a ray traced at recursion <paramref name="depth"/>: <see cref="FirstHit(Vector3d, Vector3d)"/>,
@@ -92,32 +81,17 @@ public class RayCasting : IImageFunction
   /// (<see cref="HitReaders"/>); <see cref="HitData.All"/> for one that does. A subclass that overrides them
   /// but reads only the surface may say so here and keep the cheaper hits.
   /// </summary>
-  protected virtual HitData HitDataRead => OverridesAHitReader(GetType()) ? HitData.All : HitData.Surface;
+  protected virtual HitData HitDataRead => SubclassCheck.OverridesAny(GetType(), HitReaders) ? HitData.All : HitData.Surface;
 
   /// <summary>The virtual methods of RayCasting and RayTracing that see a hit: a subclass overriding one may read anything.</summary>
   public static readonly System.Collections.Generic.IReadOnlyList<string> HitReaders =
     new[] { nameof(GetSample), nameof(FirstHit), "shade", "Occluded", "ShadowTransmittance" };
 
-  static readonly System.Collections.Concurrent.ConcurrentDictionary<Type, bool> hitReaderOverrides = new();
-
-  /// <summary>Whether a class between <paramref name="type"/> and the library's RayCasting/RayTracing overrides a <see cref="HitReaders"/> method (cached per class).</summary>
-  static bool OverridesAHitReader(Type type) => hitReaderOverrides.GetOrAdd(type, static t =>
-  {
-    const System.Reflection.BindingFlags declared = System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.Public |
-                                                    System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.DeclaredOnly;
-    for (Type? c = t; c != null && c != typeof(RayTracing) && c != typeof(RayCasting); c = c.BaseType)
-      foreach (System.Reflection.MethodInfo m in c.GetMethods(declared))
-        if (m.IsVirtual && m.GetBaseDefinition().DeclaringType is Type d && (d == typeof(RayCasting) || d == typeof(RayTracing)) &&
-            ((System.Collections.Generic.IList<string>)HitReaders).Contains(m.Name))
-          return true;
-    return false;
-  });
-
   /// <summary>
   /// True when nothing but the library's own code reads a shaded hit, decided once per prepared scene: the
   /// function reads only <see cref="HitData.Surface"/>, no ray registerer receives hits, and every light is a
   /// library light (they read only the world point and normal). Materials, reflectance models and textures are
-  /// checked per member (<see cref="LeanCompletion"/>).
+  /// checked per member (<see cref="HitCompletion"/>).
   /// </summary>
   bool LibraryShadingOnly(IRayScene sc)
   {
@@ -126,8 +100,8 @@ public class RayCasting : IImageFunction
     if (sc.Sources != null)
       foreach (ILightSource light in sc.Sources)
       {
-        Type lt = light.GetType();
-        if (lt != typeof(PointLightSource) && lt != typeof(AmbientLightSource) && lt != typeof(RectangleLightSource))
+        if (!SubclassCheck.OverridesNothing(light, typeof(PointLightSource)) && !SubclassCheck.OverridesNothing(light, typeof(AmbientLightSource)) &&
+            !SubclassCheck.OverridesNothing(light, typeof(RectangleLightSource)))
           return false;
       }
     return true;

@@ -36,8 +36,8 @@ internal sealed class ShadingScratch
   /// <summary>The snapshot this thread used last (checked first: the scene rarely changes between rays).</summary>
   public Accel.PreparedScene? LastPrepared;
 
-  /// <summary>True while a faithful (GrCis-style, no search structure) query runs on this thread (<see cref="Accel.FaithfulQuery"/>).</summary>
-  public bool FaithfulQuery;
+  /// <summary>True while a faithful (GrCis-style, no search structure) query runs on this thread (<see cref="Accel.ExhaustiveSearch"/>).</summary>
+  public bool ExhaustiveSearch;
 
   /// <summary>Kind of the next shaded ray, set by its caller for the observer; read once, then back to Secondary.</summary>
   public Observation.RayKind NextKind = Observation.RayKind.Secondary;

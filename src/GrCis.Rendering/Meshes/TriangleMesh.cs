@@ -15,7 +15,7 @@ namespace Rendering;
 /// coordinates are interpolated when the mesh has them (GrCis leaves them zero). The search
 /// structure (<see cref="MeshBvh"/>) is built on first use; change the mesh before rendering.
 /// </summary>
-public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
+public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
 {
   /// <summary>The mesh (GrCis keeps it reachable for subclasses).</summary>
   protected SceneBrep mesh;
@@ -76,7 +76,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
     List<MeshHit> hits = hitBuffer ??= new List<MeshHit>(16);
     hits.Clear();
     double eps;
-    if (FaithfulQuery.Active)
+    if (ExhaustiveSearch.Active)
     {
       // --accel none: every triangle, as GrCis searched it.
       Triangles.IntersectAll(p0, p1, hits);
@@ -120,7 +120,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
   // ---------------------------------------------------------------- fast path (same triangle test, same list)
 
   /// <summary>Shell mode lists overlapping entry/exit pairs: answered through the list API.</summary>
-  public virtual bool SupportsFastPath => !ShellMode && SolidSupport.UsesGeometryOf(this, typeof(TriangleMesh));
+  public virtual bool RecordsMatchIntersect => !ShellMode && Accel.SubclassCheck.KeepsGeometry(this, typeof(TriangleMesh));
 
   /// <summary>An open mesh's list may start "inside" (a back face first): tested for every ray.</summary>
   public virtual bool IsClosed => false;
@@ -131,7 +131,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
   /// <see cref="Intersect"/> share their predecessor's Enter). In the rare case that the list would drop
   /// the first accepted hit as a duplicate of a rejected one, the list itself answers.
   /// </summary>
-  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     MeshBvh b = Bvh;
@@ -150,7 +150,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
     return true;
   }
 
-  bool FirstFromList(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  bool FirstFromList(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -163,7 +163,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
       if (SolidSupport.Accepted(i.T, len2))
       {
         var d = (HitData)i.SolidData!;
-        hit = new FastHit { T = i.T, CoordLocal = i.CoordLocal, Data = d.Face, Aux = new Vector3d(d.U, d.V, 0.0), Enter = i.Enter, Front = i.Front };
+        hit = new SolidRecord { T = i.T, CoordLocal = i.CoordLocal, Data = d.Face, Aux = new Vector3d(d.U, d.V, 0.0), Enter = i.Enter, Front = i.Front };
         return true;
       }
       insideBefore = i.Enter;
@@ -171,7 +171,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IFastSolid
     return false;
   }
 
-  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.SolidData = new HitData(hit.Data, hit.Aux.X, hit.Aux.Y);

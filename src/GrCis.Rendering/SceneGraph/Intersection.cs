@@ -213,7 +213,7 @@ public class Intersection : IComparable<Intersection>
   }
 
   /// <summary>The part of a fast-path record every solid lists the same way (T, Enter, Front, local coordinates).</summary>
-  internal void SetRecord(in Accel.FastHit hit)
+  internal void SetRecord(in Accel.SolidRecord hit)
   {
     T = hit.T;
     Enter = hit.Enter;
@@ -222,12 +222,12 @@ public class Intersection : IComparable<Intersection>
   }
 
   /// <summary>
-  /// <see cref="CompleteCached"/> for a hit only the library's own shading reads (see <see cref="Accel.LeanCompletion"/>):
+  /// <see cref="CompleteCached"/> for a hit only the library's own shading reads (see <see cref="Accel.HitCompletion"/>):
   /// the world point, normal, attributes and (when a checker reads them) texture coordinates, computed as the full
   /// completion computes them; tangents, object coordinates and the three matrices are left as they are.
   /// </summary>
-  internal void CompleteLean(in Matrix4d localToWorld, in Matrix4d worldToLocal, IReflectanceModel model, IMaterial material,
-                             double[]? color, LinkedList<ITexture>? textures, object? recursion, Accel.LeanCompletion lean)
+  internal void CompleteSurface(in Matrix4d localToWorld, in Matrix4d worldToLocal, IReflectanceModel model, IMaterial material,
+                             double[]? color, LinkedList<ITexture>? textures, object? recursion, Accel.HitCompletion completion)
   {
     CachedRecursion = recursion;
     RecursionCached = true;
@@ -239,12 +239,12 @@ public class Intersection : IComparable<Intersection>
     CopyCachedColor(color);
     Textures = textures;
 
-    if (lean == Accel.LeanCompletion.Plane)
-      ((Plane)Solid!).CompleteLean(this, worldToLocal);
-    else if (lean == Accel.LeanCompletion.Cube)
-      Cube.CompleteLean(this, worldToLocal);
+    if (completion == Accel.HitCompletion.Plane)
+      ((Plane)Solid!).CompleteSurface(this, worldToLocal);
+    else if (completion == Accel.HitCompletion.Cube)
+      Cube.CompleteSurface(this, worldToLocal);
     else
-      Sphere.CompleteLean(this, worldToLocal, lean == Accel.LeanCompletion.SphereTextured);
+      Sphere.CompleteSurface(this, worldToLocal, completion == Accel.HitCompletion.SphereTextured);
     Normal.Normalize();
     if (Enter != Front)
       Normal = -Normal;

@@ -15,7 +15,7 @@ namespace Rendering;
 /// runs against the normal ∂S/∂u × ∂S/∂v. Both APIs (the list and the fast path's first record) share one
 /// search, <see cref="Collect"/>, so they give the same records.
 /// </summary>
-public class BezierSurface : DefaultSceneNode, ISolid, IFastSolid
+public class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
 {
   /// <summary>Exact surface normals (otherwise the flat normal of the piece that was hit).</summary>
   public bool PreciseNormals { get; set; }
@@ -305,12 +305,12 @@ public class BezierSurface : DefaultSceneNode, ISolid, IFastSolid
   Hit NewHit(int piece, double u, double v) =>
     new() { Patch = pieces[piece].Patch, U = u, V = v, FlatNormal = pieces[piece].FlatNormal };
 
-  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(BezierSurface));
+  public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(BezierSurface));
 
   /// <summary>An open surface: a list may start "inside" (a back face first), so it is tested for every ray.</summary>
   public virtual bool IsClosed => false;
 
-  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -335,7 +335,7 @@ public class BezierSurface : DefaultSceneNode, ISolid, IFastSolid
     return false;
   }
 
-  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.SolidData = NewHit(hit.Data, hit.Aux.X, hit.Aux.Y);

@@ -9,7 +9,7 @@ namespace Rendering;
 /// The unit cube [0,1]³ (not centred). Texture coordinates are the two local coordinates
 /// spanning the face that was hit: (y, z) on ±x faces, (x, z) on ±y faces, (x, y) on ±z faces.
 /// </summary>
-public class Cube : DefaultSceneNode, ISolid, IFastSolid
+public class Cube : DefaultSceneNode, ISolid, IRecordSolid
 {
   /// <summary>Outward face normals in GrCis's order: +x, −x, +y, −y, +z, −z.</summary>
   protected static readonly Vector3d[] Normals =
@@ -72,11 +72,11 @@ public class Cube : DefaultSceneNode, ISolid, IFastSolid
 
   // ---------------------------------------------------------------- fast path (same slabs, same records)
 
-  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(Cube));
+  public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(Cube));
 
   public virtual bool IsClosed => true;
 
-  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -93,16 +93,16 @@ public class Cube : DefaultSceneNode, ISolid, IFastSolid
 
   public virtual int MaxRecords => 2;
 
-  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Slabs(p0, p1, out double tMin, out int faceMin, out double tMax, out int faceMax))
       return 0;
-    dst[0] = new FastHit { T = tMin, CoordLocal = p0 + tMin * p1, Data = faceMin, Enter = true, Front = true };
-    dst[1] = new FastHit { T = tMax, CoordLocal = p0 + tMax * p1, Data = faceMax };
+    dst[0] = new SolidRecord { T = tMin, CoordLocal = p0 + tMin * p1, Data = faceMin, Enter = true, Front = true };
+    dst[1] = new SolidRecord { T = tMax, CoordLocal = p0 + tMax * p1, Data = faceMax };
     return 2;
   }
 
-  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.NormalLocal = FaceNormal(hit.Data);
@@ -133,7 +133,7 @@ public class Cube : DefaultSceneNode, ISolid, IFastSolid
     n.X != 0.0 ? new Vector2d(p.Y, p.Z) : n.Y != 0.0 ? new Vector2d(p.X, p.Z) : new Vector2d(p.X, p.Y);
 
   /// <summary>The part of <see cref="CompleteIntersection"/> the library's shading reads (same arithmetic): no tangents.</summary>
-  internal static void CompleteLean(Intersection inter, in Matrix4d worldToLocal)
+  internal static void CompleteSurface(Intersection inter, in Matrix4d worldToLocal)
   {
     Vector3d n = inter.NormalLocal;
     inter.TextureCoord = TextureCoordAt(inter.CoordLocal, n);

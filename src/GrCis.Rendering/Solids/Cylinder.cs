@@ -10,7 +10,7 @@ namespace Rendering;
 /// at z = <see cref="ZMin"/> and z = <see cref="ZMax"/>. Texture coordinates: u = longitude
 /// about z in [0, 1) on the side and 0 on the caps, v = local z.
 /// </summary>
-public class Cylinder : DefaultSceneNode, ISolid, IFastSolid
+public class Cylinder : DefaultSceneNode, ISolid, IRecordSolid
 {
   /// <summary>Lower cap (−∞: none).</summary>
   public double ZMin { get; set; }
@@ -133,12 +133,12 @@ public class Cylinder : DefaultSceneNode, ISolid, IFastSolid
 
   // ---------------------------------------------------------------- fast path (same Span, same records)
 
-  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(Cylinder));
+  public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(Cylinder));
 
   /// <summary>Capped cylinders are closed; an open-ended tube's records may lie beyond any box.</summary>
   public virtual bool IsClosed => double.IsFinite(ZMin) && double.IsFinite(ZMax);
 
-  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -154,16 +154,16 @@ public class Cylinder : DefaultSceneNode, ISolid, IFastSolid
 
   public virtual int MaxRecords => 2;
 
-  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Span(p0, p1, out double tIn, out int capIn, out double tOut, out int capOut))
       return 0;
-    dst[0] = new FastHit { T = tIn, CoordLocal = RecordPoint(p0, p1, tIn, capIn), Data = capIn, Enter = true, Front = true };
-    dst[1] = new FastHit { T = tOut, CoordLocal = RecordPoint(p0, p1, tOut, capOut), Data = capOut };
+    dst[0] = new SolidRecord { T = tIn, CoordLocal = RecordPoint(p0, p1, tIn, capIn), Data = capIn, Enter = true, Front = true };
+    dst[1] = new SolidRecord { T = tOut, CoordLocal = RecordPoint(p0, p1, tOut, capOut), Data = capOut };
     return 2;
   }
 
-  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.NormalLocal = RecordNormal(hit.CoordLocal, hit.Data);

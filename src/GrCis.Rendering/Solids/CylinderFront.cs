@@ -43,12 +43,12 @@ public class CylinderFront : Cylinder
 
   // ---------------------------------------------------------------- fast path (same Span, same records)
 
-  public override bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(CylinderFront));
+  public override bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(CylinderFront));
 
   /// <summary>Without the shell the list ends inside; the shell's exit may lie just outside the box: open.</summary>
   public override bool IsClosed => false;
 
-  public override bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public override bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -59,14 +59,14 @@ public class CylinderFront : Cylinder
 
   public override int MaxRecords => 2;
 
-  public override int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  public override int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Span(p0, p1, out double t, out int capIn, out _, out _) || capIn != 0)
       return 0;
     return SolidSupport.FrontAndShell(t, p0, p1, shell, dst);
   }
 
-  public override void InitIntersection(in FastHit hit, Intersection target)
+  public override void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.NormalLocal = new Vector3d(hit.CoordLocal.X, hit.CoordLocal.Y, 0.0);

@@ -11,7 +11,7 @@ namespace Rendering;
 /// (x, y) along infinite directions, normalised to [0, 1] along bounded ones; on the
 /// triangle the two barycentric-like coordinates x/xMax, y/yMax.
 /// </summary>
-public class Plane : DefaultSceneNode, ISolid, IFastSolid
+public class Plane : DefaultSceneNode, ISolid, IRecordSolid
 {
   /// <summary>Lower bound of x.</summary>
   public double XMin { get; set; }
@@ -109,12 +109,12 @@ public class Plane : DefaultSceneNode, ISolid, IFastSolid
 
   // ---------------------------------------------------------------- fast path (same Hit, same record)
 
-  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(Plane));
+  public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(Plane));
 
   /// <summary>One record (an exit from below): the list may start inside, so the plane is tested for every ray.</summary>
   public virtual bool IsClosed => false;
 
-  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -135,16 +135,16 @@ public class Plane : DefaultSceneNode, ISolid, IFastSolid
 
   public virtual int MaxRecords => 1;
 
-  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Hit(p0, p1, out double t, out double x, out double y))
       return 0;
     bool front = p1.Z < 0.0;
-    dst[0] = new FastHit { T = t, CoordLocal = new Vector3d(x, y, 0.0), Enter = front, Front = front };
+    dst[0] = new SolidRecord { T = t, CoordLocal = new Vector3d(x, y, 0.0), Enter = front, Front = front };
     return 1;
   }
 
-  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.NormalLocal = Vector3d.UnitZ;
@@ -172,7 +172,7 @@ public class Plane : DefaultSceneNode, ISolid, IFastSolid
       : new Vector2d(CanonicU ? p.X : (p.X - XMin) * ScaleU, CanonicV ? p.Y : (p.Y - YMin) * ScaleV);
 
   /// <summary>The part of <see cref="CompleteIntersection"/> the library's shading reads (same arithmetic): no tangents.</summary>
-  internal void CompleteLean(Intersection inter, in Matrix4d worldToLocal)
+  internal void CompleteSurface(Intersection inter, in Matrix4d worldToLocal)
   {
     inter.TextureCoord = TextureCoordAt(inter.CoordLocal);
     inter.NormalLocal = Vector3d.UnitZ;

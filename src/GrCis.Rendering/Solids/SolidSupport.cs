@@ -1,6 +1,4 @@
 using System;
-using System.Collections.Concurrent;
-using System.Reflection;
 using OpenTK.Mathematics;
 using Rendering.Accel;
 
@@ -66,23 +64,7 @@ internal static class SolidSupport
   public static double Longitude(double x, double y) =>
     x == 0.0 && y == 0.0 ? 0.0 : Math.Atan2(y, x) / (2.0 * Math.PI) + 0.5;
 
-  // ---------------------------------------------------------------- fast path (IFastSolid) support
-
-  static readonly ConcurrentDictionary<(Type Actual, Type Declaring), bool> ownGeometry = new();
-
-  /// <summary>
-  /// True when <paramref name="solid"/>'s <c>Intersect</c> is the one declared by <paramref name="declaring"/>
-  /// and its <c>GetBoundingBox</c> is not overridden below it: only then may the allocation-free kernel
-  /// of <paramref name="declaring"/> answer for it (a script subclass may change the records). Cached per type.
-  /// </summary>
-  public static bool UsesGeometryOf(object solid, Type declaring) =>
-    ownGeometry.GetOrAdd((solid.GetType(), declaring), static k =>
-    {
-      MethodInfo? intersect = k.Actual.GetMethod(nameof(IIntersectable.Intersect), new[] { typeof(Vector3d), typeof(Vector3d) });
-      Type byRef = typeof(Vector3d).MakeByRefType();
-      MethodInfo? box = k.Actual.GetMethod(nameof(ISolid.GetBoundingBox), new[] { byRef, byRef });
-      return intersect?.DeclaringType == k.Declaring && box?.DeclaringType != null && box.DeclaringType.IsAssignableFrom(k.Declaring);
-    });
+  // ---------------------------------------------------------------- fast path (IRecordSolid) support
 
   /// <summary>The test <see cref="Intersection.FirstIntersection"/> applies (with the world ray's |p1|²).</summary>
   public static bool Accepted(double t, double len2) => t > 0.0 && t * t * len2 > Intersection.RAY_EPSILON2;
@@ -90,15 +72,15 @@ internal static class SolidSupport
   /// <summary>
   /// First accepted record of a one-sided "front" solid's list: the front hit at <paramref name="t"/>
   /// (an entry), else — with a <paramref name="shell"/> — the exit <see cref="Intersection.SHELL_THICKNESS"/>
-  /// behind it. <see cref="FastHit.Aux"/> keeps the ray direction for texture coordinates.
+  /// behind it. <see cref="SolidRecord.Aux"/> keeps the ray direction for texture coordinates.
   /// </summary>
-  public static bool FrontOrShell(double t, in Vector3d p0, in Vector3d p1, double len2, bool shell, out FastHit hit, out bool insideBefore)
+  public static bool FrontOrShell(double t, in Vector3d p0, in Vector3d p1, double len2, bool shell, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
     if (Accepted(t, len2))
     {
-      hit = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
+      hit = new SolidRecord { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
       return true;
     }
     if (!shell)
@@ -110,7 +92,7 @@ internal static class SolidSupport
     if (!Accepted(t2, len2))
       return false;
     insideBefore = true;
-    hit = new FastHit { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
+    hit = new SolidRecord { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
     return true;
   }
 
@@ -118,13 +100,13 @@ internal static class SolidSupport
   /// The whole list of a one-sided "front" solid hit at <paramref name="t"/> (see <see cref="FrontOrShell"/>):
   /// the front entry, and with a <paramref name="shell"/> the exit behind it. Returns the count.
   /// </summary>
-  public static int FrontAndShell(double t, in Vector3d p0, in Vector3d p1, bool shell, Span<FastHit> dst)
+  public static int FrontAndShell(double t, in Vector3d p0, in Vector3d p1, bool shell, Span<SolidRecord> dst)
   {
-    dst[0] = new FastHit { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
+    dst[0] = new SolidRecord { T = t, CoordLocal = p0 + t * p1, Aux = p1, Enter = true, Front = true };
     if (!shell)
       return 1;
     double t2 = t + Intersection.SHELL_THICKNESS;
-    dst[1] = new FastHit { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
+    dst[1] = new SolidRecord { T = t2, CoordLocal = p0 + t2 * p1, Aux = p1 };
     return 2;
   }
 

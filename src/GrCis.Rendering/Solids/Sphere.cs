@@ -9,7 +9,7 @@ namespace Rendering;
 /// The unit sphere centred at the local origin. Texture coordinates: u = longitude about
 /// the z axis in [0, 1), v = polar angle / π (0 at the +z pole, 1 at the −z pole).
 /// </summary>
-public class Sphere : DefaultSceneNode, ISolid, IFastSolid
+public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
 {
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
@@ -41,11 +41,11 @@ public class Sphere : DefaultSceneNode, ISolid, IFastSolid
 
   // ---------------------------------------------------------------- fast path (same Roots, same records)
 
-  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(Sphere));
+  public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(Sphere));
 
   public virtual bool IsClosed => true;
 
-  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -61,16 +61,16 @@ public class Sphere : DefaultSceneNode, ISolid, IFastSolid
 
   public virtual int MaxRecords => 2;
 
-  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Roots(p0, p1, out double t0, out double t1))
       return 0;
-    dst[0] = new FastHit { T = t0, CoordLocal = p0 + t0 * p1, Enter = true, Front = true };
-    dst[1] = new FastHit { T = t1, CoordLocal = p0 + t1 * p1 };
+    dst[0] = new SolidRecord { T = t0, CoordLocal = p0 + t0 * p1, Enter = true, Front = true };
+    dst[1] = new SolidRecord { T = t1, CoordLocal = p0 + t1 * p1 };
     return 2;
   }
 
-  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.NormalLocal = hit.CoordLocal;
@@ -97,7 +97,7 @@ public class Sphere : DefaultSceneNode, ISolid, IFastSolid
   /// The part of <see cref="CompleteIntersection"/> the library's shading reads (same arithmetic): the normal,
   /// and the texture coordinates only when a texture reads them. No tangents.
   /// </summary>
-  internal static void CompleteLean(Intersection inter, in Matrix4d worldToLocal, bool textureCoord)
+  internal static void CompleteSurface(Intersection inter, in Matrix4d worldToLocal, bool textureCoord)
   {
     Vector3d p = inter.CoordLocal;
     if (textureCoord)

@@ -37,12 +37,12 @@ public class SphereFront : Sphere
 
   // ---------------------------------------------------------------- fast path (same Roots, same records)
 
-  public override bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(SphereFront));
+  public override bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(SphereFront));
 
   /// <summary>Without the shell the list ends inside; the shell's exit may lie just outside the box: open.</summary>
   public override bool IsClosed => false;
 
-  public override bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public override bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -53,14 +53,14 @@ public class SphereFront : Sphere
 
   public override int MaxRecords => 2;
 
-  public override int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  public override int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Roots(p0, p1, out double t0, out _))
       return 0;
     return SolidSupport.FrontAndShell(t0, p0, p1, shell, dst);
   }
 
-  public override void InitIntersection(in FastHit hit, Intersection target)
+  public override void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.NormalLocal = hit.CoordLocal;

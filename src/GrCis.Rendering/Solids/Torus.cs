@@ -15,7 +15,7 @@ namespace Rendering;
 /// bounded interval (<see cref="QuarticRoots"/>). All hits are returned, sorted, negative T included.
 /// Texture coordinates: u = longitude about z, v = angle around the tube / 2π (+0.5).
 /// </summary>
-public class Torus : DefaultSceneNode, ISolid, IFastSolid
+public class Torus : DefaultSceneNode, ISolid, IRecordSolid
 {
   /// <summary>Distance of the tube's centre line from the axis (R).</summary>
   public double bigRadius = 1.0;
@@ -67,12 +67,12 @@ public class Torus : DefaultSceneNode, ISolid, IFastSolid
 
   // ---------------------------------------------------------------- fast path (same Solve, same records)
 
-  public virtual bool SupportsFastPath => SolidSupport.UsesGeometryOf(this, typeof(Torus));
+  public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(Torus));
 
   /// <summary>Roots lie inside the (enlarged) bounding sphere and alternate from an entry: closed.</summary>
   public virtual bool IsClosed => true;
 
-  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -101,7 +101,7 @@ public class Torus : DefaultSceneNode, ISolid, IFastSolid
 
   public virtual int MaxRecords => 4;
 
-  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst)
+  public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!SelfHits && StartsOnSurface(p0))
       return 0;
@@ -109,11 +109,11 @@ public class Torus : DefaultSceneNode, ISolid, IFastSolid
     Span<bool> enter = stackalloc bool[4];
     int n = Solve(p0, p1, u, enter, out Vector3d center, out Vector3d dir, out double sMid, out double length);
     for (int i = 0; i < n; i++)
-      dst[i] = new FastHit { T = (sMid + u[i]) / length, CoordLocal = center + u[i] * dir, Enter = enter[i], Front = enter[i] };
+      dst[i] = new SolidRecord { T = (sMid + u[i]) / length, CoordLocal = center + u[i] * dir, Enter = enter[i], Front = enter[i] };
     return n;
   }
 
-  public virtual void InitIntersection(in FastHit hit, Intersection target)
+  public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
   }

@@ -38,7 +38,7 @@ public class CsgKernelTests
     }
   }
 
-  /// <summary>Every kind of solid with an <see cref="IFastSolid.IntersectAll"/>, open and closed, one- and two-sided.</summary>
+  /// <summary>Every kind of solid with an <see cref="IRecordSolid.IntersectAll"/>, open and closed, one- and two-sided.</summary>
   static ISceneNode RandomSolid(Random rnd)
   {
     switch (rnd.Next(11))
@@ -127,7 +127,7 @@ public class CsgKernelTests
         continue;
       }
       trees++;
-      var got = new FastHit[kernel.MaxRecords];
+      var got = new SolidRecord[kernel.MaxRecords];
       var leaves = new int[kernel.MaxRecords];
       for (int ray = 0; ray < 300; ray++)
       {
@@ -143,7 +143,7 @@ public class CsgKernelTests
         int k = 0;
         foreach (Intersection expected in list)
         {
-          AssertSameRecord(expected, kernel.Leaves[leaves[k]].Fast!, got[k]);
+          AssertSameRecord(expected, kernel.Leaves[leaves[k]].RecordSolid!, got[k]);
           k++;
         }
 
@@ -160,13 +160,13 @@ public class CsgKernelTests
           }
           state = i.Enter;
         }
-        int status = kernel.IntersectFirst(p0, p1, len2, out FastHit h, out int leaf, out bool inside);
+        int status = kernel.IntersectFirst(p0, p1, len2, out SolidRecord h, out int leaf, out bool inside);
         Assert.Equal(first != null ? 1 : 0, status);
         Assert.Equal(state, inside);
         if (first != null)
         {
           hits++;
-          AssertSameRecord(first, kernel.Leaves[leaf].Fast!, h);
+          AssertSameRecord(first, kernel.Leaves[leaf].RecordSolid!, h);
         }
       }
     }
@@ -178,7 +178,7 @@ public class CsgKernelTests
 
   static int MaxRecords(ISceneNode node)
   {
-    if (node is IFastSolid f)
+    if (node is IRecordSolid f)
       return f.MaxRecords;
     int sum = 0;
     foreach (ISceneNode c in node.Children)
@@ -186,7 +186,7 @@ public class CsgKernelTests
     return sum;
   }
 
-  static void AssertSameRecord(Intersection expected, IFastSolid solid, in FastHit hit)
+  static void AssertSameRecord(Intersection expected, IRecordSolid solid, in SolidRecord hit)
   {
     Assert.Same(expected.Solid, solid);
     var actual = new Intersection(solid);
@@ -210,11 +210,11 @@ public class CsgKernelTests
   public void Every_solid_lists_the_same_records_through_IntersectAll()
   {
     var rnd = new Random(5);
-    var buffer = new FastHit[4];
+    var buffer = new SolidRecord[4];
     int records = 0;
     for (int s = 0; s < 200; s++)
     {
-      var solid = (IFastSolid)RandomSolid(rnd);
+      var solid = (IRecordSolid)RandomSolid(rnd);
       Assert.True(solid.MaxRecords > 0);
       for (int ray = 0; ray < 100; ray++)
       {

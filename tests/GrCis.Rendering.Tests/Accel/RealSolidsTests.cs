@@ -61,10 +61,10 @@ public class RealSolidsTests
   [Fact]
   public void A_subclass_that_overrides_Intersect_is_answered_through_its_list()
   {
-    Assert.False(new BiggerSphere().SupportsFastPath);
-    Assert.True(new TintedSphere().SupportsFastPath);
-    Assert.True(new SphereFront().SupportsFastPath);
-    Assert.False(new TriangleMesh(ProceduralMesh.Torus(8, 4)) { ShellMode = true }.SupportsFastPath);
+    Assert.False(new BiggerSphere().RecordsMatchIntersect);
+    Assert.True(new TintedSphere().RecordsMatchIntersect);
+    Assert.True(new SphereFront().RecordsMatchIntersect);
+    Assert.False(new TriangleMesh(ProceduralMesh.Torus(8, 4)) { ShellMode = true }.RecordsMatchIntersect);
   }
 
   [Fact]
@@ -137,7 +137,7 @@ public class RealSolidsTests
     {
       var p0 = new Vector3d(rnd.NextDouble() * 6 - 3, rnd.NextDouble() * 6 - 3, rnd.NextDouble() * 6 - 3);
       var p1 = new Vector3d(rnd.NextDouble() * 2 - 1, rnd.NextDouble() * 2 - 1, rnd.NextDouble() * 2 - 1) - 0.1 * p0;
-      var brute = FaithfulQuery.Intersect(mesh, p0, p1);
+      var brute = ExhaustiveSearch.Intersect(mesh, p0, p1);
       var tree = mesh.Intersect(p0, p1);
       Assert.Equal(tree?.Count ?? 0, brute?.Count ?? 0);
       if (tree == null)
@@ -175,7 +175,7 @@ public class RealSolidsTests
     Assert.Equal(10_000, m.Triangles);
     // A ray from outside along -x hits the outer wall first, from the front.
     var mesh = new TriangleMesh(m);
-    Assert.True(mesh.IntersectFirst(new Vector3d(5, 0.01, 0.01), new Vector3d(-1, 0, 0), 1.0, out FastHit h, out bool inside));
+    Assert.True(mesh.IntersectFirst(new Vector3d(5, 0.01, 0.01), new Vector3d(-1, 0, 0), 1.0, out SolidRecord h, out bool inside));
     Assert.False(inside);
     Assert.True(h.Enter);
     Assert.Equal(5.0 - 1.4, h.T, 2);

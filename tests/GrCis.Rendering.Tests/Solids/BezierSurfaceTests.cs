@@ -189,7 +189,7 @@ public class BezierSurfaceTests
   public void Bezier_fast_first_record_equals_the_list_scan_on_random_rays()
   {
     var b = new BezierSurface(1, 2, SceneNet);
-    Assert.True(b.SupportsFastPath);
+    Assert.True(b.RecordsMatchIntersect);
     var rnd = new Random(77);
     int accepted = 0, startInside = 0;
     for (int r = 0; r < 5_000; r++)
@@ -201,7 +201,7 @@ public class BezierSurfaceTests
         p0 += onto.First.Value.T * p1;
       double len2 = p1.LengthSquared * (r % 2 == 0 ? 1.0 : 0.25);   // the world ray's length may differ
 
-      // The list scan IFastSolid.IntersectFirst promises.
+      // The list scan IRecordSolid.IntersectFirst promises.
       LinkedList<Intersection>? list = b.Intersect(p0, p1);
       Intersection? want = null;
       bool wantInside = false;
@@ -219,14 +219,14 @@ public class BezierSurfaceTests
         }
       }
 
-      bool got = b.IntersectFirst(p0, p1, len2, out global::Rendering.Accel.FastHit h, out bool inside);
+      bool got = b.IntersectFirst(p0, p1, len2, out global::Rendering.Accel.SolidRecord h, out bool inside);
       Assert.Equal(want != null, got);
       Assert.Equal(wantInside, inside);
       startInside += inside ? 1 : 0;
       if (want == null)
         continue;
       accepted++;
-      Intersection mine = ((global::Rendering.Accel.IFastSolid)b).CreateIntersection(h);
+      Intersection mine = ((global::Rendering.Accel.IRecordSolid)b).CreateIntersection(h);
       Assert.Equal(want.T, mine.T);
       Assert.Equal(want.Enter, mine.Enter);
       Assert.Equal(want.Front, mine.Front);

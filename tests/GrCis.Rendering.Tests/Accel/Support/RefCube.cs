@@ -6,7 +6,7 @@ using Rendering.Accel;
 namespace GrCis.Testing;
 
 /// <summary>Stand-in for the solids branch's Cube: the unit cube [0,1]³ (fact sheet §3.4).</summary>
-public sealed class RefCube : DefaultSceneNode, IFastSolid
+public sealed class RefCube : DefaultSceneNode, IRecordSolid
 {
   // Faces: +X, −X, +Y, −Y, +Z, −Z.
   static readonly Vector3d[] Normals =
@@ -59,11 +59,11 @@ public sealed class RefCube : DefaultSceneNode, IFastSolid
     return list;
   }
 
-  public bool SupportsFastPath => true;
+  public bool RecordsMatchIntersect => true;
 
   public bool IsClosed => true;
 
-  public bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -71,13 +71,13 @@ public sealed class RefCube : DefaultSceneNode, IFastSolid
       return false;
     if (t1 > 0.0 && t1 * t1 * len2 > Intersection.RAY_EPSILON2)
     {
-      hit = new FastHit { T = t1, Enter = true, Front = true, CoordLocal = p0 + t1 * p1, Data = f1 };
+      hit = new SolidRecord { T = t1, Enter = true, Front = true, CoordLocal = p0 + t1 * p1, Data = f1 };
       return true;
     }
     insideBefore = true;
     if (t2 > 0.0 && t2 * t2 * len2 > Intersection.RAY_EPSILON2)
     {
-      hit = new FastHit { T = t2, Enter = false, Front = false, CoordLocal = p0 + t2 * p1, Data = f2 };
+      hit = new SolidRecord { T = t2, Enter = false, Front = false, CoordLocal = p0 + t2 * p1, Data = f2 };
       return true;
     }
     insideBefore = false;
@@ -85,7 +85,7 @@ public sealed class RefCube : DefaultSceneNode, IFastSolid
   }
 
   // The boxed face index is allocated only for the winning hit.
-  public void InitIntersection(in FastHit hit, Intersection target)
+  public void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.T = hit.T;
     target.Enter = hit.Enter;

@@ -6,7 +6,7 @@ using Rendering.Accel;
 namespace GrCis.Testing;
 
 /// <summary>Stand-in for the solids branch's infinite Plane z = 0 (fact sheet §3.5): one record, open.</summary>
-public sealed class RefPlane : DefaultSceneNode, IFastSolid
+public sealed class RefPlane : DefaultSceneNode, IRecordSolid
 {
   static bool Hit(in Vector3d p0, in Vector3d p1, out double t, out Vector3d local)
   {
@@ -29,12 +29,12 @@ public sealed class RefPlane : DefaultSceneNode, IFastSolid
     return list;
   }
 
-  public bool SupportsFastPath => true;
+  public bool RecordsMatchIntersect => true;
 
   // A half-space whose record may lie behind the origin and still leave the ray "inside".
   public bool IsClosed => false;
 
-  public bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -44,14 +44,14 @@ public sealed class RefPlane : DefaultSceneNode, IFastSolid
     if (t > 0.0 && t * t * len2 > Intersection.RAY_EPSILON2)
     {
       insideBefore = !front;
-      hit = new FastHit { T = t, Enter = front, Front = front, CoordLocal = local };
+      hit = new SolidRecord { T = t, Enter = front, Front = front, CoordLocal = local };
       return true;
     }
     insideBefore = front;
     return false;
   }
 
-  public void InitIntersection(in FastHit hit, Intersection target)
+  public void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.T = hit.T;
     target.Enter = hit.Enter;

@@ -10,7 +10,7 @@ namespace GrCis.Testing;
 /// Stand-in for the solids branch's Sphere (GrCis unit sphere, fact sheet §3.1) with both APIs sharing
 /// one root computation, as the real solids are expected to. Used until the solids land.
 /// </summary>
-public sealed class RefSphere : DefaultSceneNode, IFastSolid
+public sealed class RefSphere : DefaultSceneNode, IRecordSolid
 {
   static bool Roots(in Vector3d p0, in Vector3d p1, out double t1, out double t2)
   {
@@ -37,11 +37,11 @@ public sealed class RefSphere : DefaultSceneNode, IFastSolid
     return list;
   }
 
-  public bool SupportsFastPath => true;
+  public bool RecordsMatchIntersect => true;
 
   public bool IsClosed => true;
 
-  public bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore)
+  public bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -49,20 +49,20 @@ public sealed class RefSphere : DefaultSceneNode, IFastSolid
       return false;
     if (t1 > 0.0 && t1 * t1 * len2 > Intersection.RAY_EPSILON2)
     {
-      hit = new FastHit { T = t1, Enter = true, Front = true, CoordLocal = p0 + t1 * p1 };
+      hit = new SolidRecord { T = t1, Enter = true, Front = true, CoordLocal = p0 + t1 * p1 };
       return true;
     }
     insideBefore = true;
     if (t2 > 0.0 && t2 * t2 * len2 > Intersection.RAY_EPSILON2)
     {
-      hit = new FastHit { T = t2, Enter = false, Front = false, CoordLocal = p0 + t2 * p1 };
+      hit = new SolidRecord { T = t2, Enter = false, Front = false, CoordLocal = p0 + t2 * p1 };
       return true;
     }
     insideBefore = false;
     return false;
   }
 
-  public void InitIntersection(in FastHit hit, Intersection target)
+  public void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.T = hit.T;
     target.Enter = hit.Enter;

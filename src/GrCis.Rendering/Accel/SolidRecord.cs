@@ -3,10 +3,10 @@ using OpenTK.Mathematics;
 namespace Rendering.Accel;
 
 /// <summary>
-/// The cheap part of one ray–solid record, as a value: what <see cref="IFastSolid.CreateIntersection"/>
+/// The cheap part of one ray–solid record, as a value: what <see cref="IRecordSolid.CreateIntersection"/>
 /// needs to build the same <see cref="Intersection"/> the solid's <c>Intersect</c> would have listed.
 /// </summary>
-public struct FastHit
+public struct SolidRecord
 {
   /// <summary>Ray parameter (the same for local and world rays: transforms are affine).</summary>
   public double T;

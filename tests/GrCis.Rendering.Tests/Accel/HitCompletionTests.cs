@@ -9,10 +9,10 @@ using Rendering.Imaging;
 namespace GrCis.Rendering.Tests.Accel;
 
 /// <summary>
-/// Lean completion (plain spheres, planes and cubes shaded only by the library) computes just what the library's
+/// Surface completion (plain spheres, planes and cubes shaded only by the library) computes just what the library's
 /// shading reads, with the same bits; anything a script could read keeps the full completion.
 /// </summary>
-public class LeanCompletionTests
+public class HitCompletionTests
 {
   static DefaultRayScene Scene(params ILightSource[] lights)
   {
@@ -44,7 +44,7 @@ public class LeanCompletionTests
   }
 
   [Fact]
-  public void Lean_hits_have_the_same_point_normal_colour_and_read_texture_coordinates_as_full_ones()
+  public void Surface_completed_hits_have_the_same_point_normal_colour_and_read_texture_coordinates_as_full_ones()
   {
     PreparedScene ps = PreparedScene.Prepare(Scene().Intersectable);
     var r = new Random(5);
@@ -54,8 +54,8 @@ public class LeanCompletionTests
       var p0 = new Vector3d(r.NextDouble() * 8 - 4, r.NextDouble() * 4 - 1, -8 + r.NextDouble() * 12);
       var p1 = new Vector3d(r.NextDouble() * 2 - 1, r.NextDouble() * 2 - 1, r.NextDouble() * 2 - 1);
       long fallbacks = ps.FallbackCount;
-      Intersection? full = ps.FirstHit(p0, p1, new Intersection(), lean: false);
-      Intersection? lean = ps.FirstHit(p0, p1, new Intersection(), lean: true);
+      Intersection? full = ps.FirstHit(p0, p1, new Intersection(), surfaceOnly: false);
+      Intersection? lean = ps.FirstHit(p0, p1, new Intersection(), surfaceOnly: true);
       Assert.Equal(full == null, lean == null);
       // A fallback's hit comes from a list and is not completed here: it would prove nothing.
       if (full == null || lean == null || ps.FallbackCount != fallbacks)

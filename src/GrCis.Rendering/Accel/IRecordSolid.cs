@@ -6,12 +6,12 @@ namespace Rendering.Accel;
 /// <summary>
 /// Optional allocation-free twin of <see cref="IIntersectable.Intersect"/> for a solid the library knows.
 /// Both must describe the same sorted record list; the fast path then gives the same image as the
-/// faithful one. A subclass that overrides <c>Intersect</c> must report <see cref="SupportsFastPath"/> false.
+/// faithful one. A subclass that overrides <c>Intersect</c> must report <see cref="RecordsMatchIntersect"/> false.
 /// </summary>
-public interface IFastSolid : ISolid
+public interface IRecordSolid : ISolid
 {
   /// <summary>False when this instance's records may differ from <see cref="IntersectFirst"/> (e.g. a script subclass).</summary>
-  bool SupportsFastPath { get; }
+  bool RecordsMatchIntersect { get; }
 
   /// <summary>
   /// True when every record lies inside the bounding box and the list starts outside the solid
@@ -27,14 +27,14 @@ public interface IFastSolid : ISolid
   /// state just before that record: <c>!first.Enter</c> of the whole list, then each skipped record's Enter.
   /// Returns false (and still sets <paramref name="insideBefore"/>) when no record is accepted.
   /// </summary>
-  bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out FastHit hit, out bool insideBefore);
+  bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore);
 
   /// <summary>
   /// Fills the cheap part (T, Enter, Front, local coordinates and normal, solid data) of a fresh or reset
   /// <paramref name="target"/> whose <see cref="Intersection.Solid"/> is this solid, exactly as <c>Intersect</c>
   /// would have listed the record (not completed).
   /// </summary>
-  void InitIntersection(in FastHit hit, Intersection target);
+  void InitIntersection(in SolidRecord hit, Intersection target);
 
   /// <summary>
   /// Upper bound on the records <see cref="IntersectAll"/> writes for any ray; -1 when unknown (meshes),
@@ -48,10 +48,10 @@ public interface IFastSolid : ISolid
   /// (T, Enter, Front, local coordinates, solid data), without allocating; returns the count, or -1
   /// when this solid cannot (then <see cref="MaxRecords"/> is -1 too). For the CSG kernel (<see cref="CsgKernel"/>).
   /// </summary>
-  int IntersectAll(in Vector3d p0, in Vector3d p1, Span<FastHit> dst) => -1;
+  int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst) => -1;
 
   /// <summary>The <see cref="Intersection"/> that <c>Intersect</c> would have listed for this record (not completed).</summary>
-  Intersection CreateIntersection(in FastHit hit)
+  Intersection CreateIntersection(in SolidRecord hit)
   {
     var i = new Intersection(this);
     InitIntersection(hit, i);

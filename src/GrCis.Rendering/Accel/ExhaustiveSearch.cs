@@ -8,10 +8,10 @@ namespace Rendering.Accel;
 /// so while such a query runs on a thread a <see cref="TriangleMesh"/> tests every triangle, as GrCis
 /// did; the fast path, and the list members it asks, keep the mesh's BVH. Same hits either way.
 /// </summary>
-internal static class FaithfulQuery
+internal static class ExhaustiveSearch
 {
   /// <summary>True while a faithful query runs on this thread (kept in the thread's shading state).</summary>
-  public static bool Active => ShadingScratch.Current.FaithfulQuery;
+  public static bool Active => ShadingScratch.Current.ExhaustiveSearch;
 
   /// <summary>All records of <paramref name="node"/> along <c>p0 + t p1</c>, searched as GrCis did.</summary>
   public static LinkedList<Intersection>? Intersect(IIntersectable? node, in Vector3d p0, in Vector3d p1)
@@ -19,15 +19,15 @@ internal static class FaithfulQuery
     if (node == null)
       return null;
     ShadingScratch scratch = ShadingScratch.Current;
-    bool outer = scratch.FaithfulQuery;
-    scratch.FaithfulQuery = true;
+    bool outer = scratch.ExhaustiveSearch;
+    scratch.ExhaustiveSearch = true;
     try
     {
       return node.Intersect(p0, p1);
     }
     finally
     {
-      scratch.FaithfulQuery = outer;
+      scratch.ExhaustiveSearch = outer;
     }
   }
 }

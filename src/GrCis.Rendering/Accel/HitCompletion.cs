@@ -1,0 +1,25 @@
+namespace Rendering.Accel;
+
+/// <summary>
+/// How a prepared member's hit is completed. When only the library's own shading reads it (plain
+/// <see cref="RayTracing"/>/<see cref="RayCasting"/>, library lights, Phong, at most checker textures), the
+/// world point, normal, colour, material and — for a checker — the texture coordinates are all that is read,
+/// never the tangents or the object coordinates: a surface completion computes just those, with the same arithmetic.
+/// </summary>
+internal enum HitCompletion : byte
+{
+  /// <summary>Everything (<see cref="Intersection.CompleteCached"/>).</summary>
+  Full,
+
+  /// <summary>A plain <see cref="Sphere"/> without textures: no texture coordinates (two Atan2), no tangents.</summary>
+  Sphere,
+
+  /// <summary>A plain <see cref="Sphere"/> with checker textures: texture coordinates, no tangents.</summary>
+  SphereTextured,
+
+  /// <summary>A plain <see cref="Plane"/> (checker floor or none): texture coordinates, no tangents.</summary>
+  Plane,
+
+  /// <summary>A plain <see cref="Cube"/>: the face's texture coordinates (two copies), no tangents.</summary>
+  Cube,
+}
