@@ -6,6 +6,8 @@ using System.Linq;
 using System.Runtime.Loader;
 using GrCis.Interactive;
 
+using GrCis.Hosting;
+
 namespace GrCis.Bench;
 
 /// <summary>

@@ -29,5 +29,5 @@ public sealed class CliEnvironment
   public CancellationToken Cancel { get; init; }
 
   /// <summary>Scenes a test registers by name, tried before the resolver (the tests' animated scenes).</summary>
-  internal Func<string, SceneSources.ISceneSource?>? ExtraScenes { get; init; }
+  internal Func<string, GrCis.Hosting.ISceneSource?>? ExtraScenes { get; init; }
 }

@@ -146,7 +146,7 @@ public sealed class DemoController : IDisposable
       {
         using Interruption.Scope interruption = Interruption.Use(building.Token);
         BuiltScene b = Catalog.Build(entry, entry.ParameterText, settings);
-        return (b, RenderJob.Create(b, settings));
+        return (b, b.ToJob(settings));
       }, building.Token, TaskCreationOptions.LongRunning, TaskScheduler.Default);
       lock (sync)
         buildTask = task;
@@ -234,7 +234,7 @@ public sealed class DemoController : IDisposable
   {
     SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
     BuiltScene built = Catalog.Build(entry, entry.ParameterText, Settings with { Time = null });
-    return new AnimationRun(RenderJob.Create(built, Settings with { Time = null }), AnimationRun.TimelineFor(built.Overrides, start, end, fps));
+    return new AnimationRun(built.ToJob(Settings with { Time = null }), AnimationRun.TimelineFor(built.Overrides, start, end, fps));
   }
 
   void RestartWatcher()

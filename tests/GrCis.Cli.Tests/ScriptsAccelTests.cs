@@ -26,8 +26,8 @@ public class ScriptsAccelTests
   {
     var settings = new RenderSettings { Width = Width, Height = Height, Threads = 2, Accel = accel };
     using var source = new ScriptSceneSource(RepoPaths.Script(file), "", Array.Empty<string>());
-    SceneSetup setup = SceneSetup.Create(source, settings, GivenSettings.Size | GivenSettings.Accel, null);
-    return RenderJob.Run(setup.Scene, setup.Settings, setup.ImageFunction, setup.Synthesizer, null, default).Image;
+    PreparedRender setup = new RenderRequest(source, settings, GivenSettings.Size | GivenSettings.Accel).Prepare();
+    return setup.Render().Image;
   }
 
   [Theory]

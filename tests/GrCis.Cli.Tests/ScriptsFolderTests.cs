@@ -73,11 +73,11 @@ public class ScriptsFolderTests
     var settings = new RenderSettings { Width = Width, Height = Height, Threads = 2 };
 
     using var source = new ScriptSceneSource(RepoPaths.Script(file), param, Array.Empty<string>());
-    SceneSetup setup = SceneSetup.Create(source, settings, GivenSettings.Size, null);
+    PreparedRender setup = new RenderRequest(source, settings, GivenSettings.Size).Prepare();
     Assert.Empty(setup.Notes);
-    FloatImage fromScript = RenderJob.Run(setup.Scene, setup.Settings, setup.ImageFunction, setup.Synthesizer, null, default).Image;
+    FloatImage fromScript = setup.Render().Image;
 
-    FloatImage builtIn = RenderJob.Run(Scenes.Create(builtInName, param), settings, null, default).Image;
+    FloatImage builtIn = new RenderRequest(new BuiltInSceneSource(builtInName, param), settings).Prepare().Render().Image;
 
     AssertNotFlat(fromScript, file);
     int differing = 0;
@@ -93,8 +93,8 @@ public class ScriptsFolderTests
   {
     var settings = new RenderSettings { Width = Width, Height = Height, Threads = 2 };
     using var source = new ScriptSceneSource(RepoPaths.Script(file), "", Array.Empty<string>());
-    SceneSetup setup = SceneSetup.Create(source, settings, GivenSettings.Size, null);
-    FloatImage image = RenderJob.Run(setup.Scene, setup.Settings, setup.ImageFunction, setup.Synthesizer, null, default).Image;
+    PreparedRender setup = new RenderRequest(source, settings, GivenSettings.Size).Prepare();
+    FloatImage image = setup.Render().Image;
 
     Assert.Equal(Width, image.Width);
     Assert.Equal(Height, image.Height);

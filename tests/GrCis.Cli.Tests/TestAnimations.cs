@@ -1,6 +1,6 @@
 using System;
 using System.Collections.Generic;
-using GrCis.Cli.SceneSources;
+using GrCis.Hosting;
 using OpenTK.Mathematics;
 using Rendering;
 

@@ -100,7 +100,7 @@ public class SceneCatalogTests
     Assert.Contains("40x30", entry.Overrides.ToString());
     Assert.NotNull(entry.Source);
 
-    RenderJob job = RenderJob.Create(built, new RenderSettings { Width = 640, Height = 480 });
+    RenderJob job = built.ToJob(new RenderSettings { Width = 640, Height = 480 });
     Assert.Equal((40, 30), (job.Width, job.Height));
     var image = Rendering.Execution.TileRenderer.Render(job.Scene, job.ImageFunction, job.Renderer, job.Options);
     Assert.Equal(new[] { 0.25, 0.125, 0.75 }, image.GetPixel(20, 15));

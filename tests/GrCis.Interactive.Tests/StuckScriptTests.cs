@@ -5,6 +5,8 @@ using System.IO;
 using System.Threading;
 using System.Threading.Tasks;
 
+using GrCis.Hosting;
+
 namespace GrCis.Interactive.Tests;
 
 /// <summary>

@@ -4,6 +4,8 @@ using System.Globalization;
 using GrCis.Cli.SceneSources;
 using Rendering;
 
+using GrCis.Hosting;
+
 namespace GrCis.Cli.Animation;
 
 /// <summary>
@@ -68,11 +70,6 @@ public sealed class AnimationPlan
         list.Add(k);
     return new AnimationPlan(timeline, range, shard, list);
   }
-
-  /// <summary>The range a scene script put in its context (Start, End, Fps), as <see cref="ISceneTiming"/>.</summary>
-  public static ISceneTiming TimingOf(GrCis.Scripting.ScriptScene script) => new ScriptTiming(script.Start, script.End, script.Fps);
-
-  sealed record ScriptTiming(double? Start, double? End, double? Fps) : ISceneTiming;
 
   static string Num(double x) => x.ToString("0.###", CultureInfo.InvariantCulture);
 

@@ -53,7 +53,7 @@ public sealed class FrameParts
   public ImageSynthesizer CreateSynthesizer()
   {
     if (scriptSynthesizer == null)
-      return RenderJob.CreateSynthesizer(settings);
+      return settings.CreateSynthesizer();
     if (Sequential)
       return scriptSynthesizer;
     return (ImageSynthesizer)ShallowCopy(scriptSynthesizer);

@@ -144,8 +144,8 @@ public static class BenchSuite
   internal static FrameResult Render(IRayScene scene, ImageSize size, int spp, int threads, AccelMode accel, CancellationToken cancel, out long fallbacks)
   {
     var settings = new RenderSettings { Width = size.Width, Height = size.Height, SamplesPerPixel = spp, Threads = threads, Accel = accel }.Validate();
-    ImageSynthesizer renderer = RenderJob.CreateSynthesizer(settings);
-    RayTracing function = RenderJob.CreateImageFunction(scene, settings);
+    ImageSynthesizer renderer = settings.CreateSynthesizer();
+    RayTracing function = settings.CreateImageFunction(scene);
     FrameResult result = FrameRendering.Render(scene, function, renderer, new RenderOptions { Threads = threads, Seed = 0 }, null, cancel);
     fallbacks = function.LastPrepared?.FallbackCount ?? 0;
     return result;

@@ -116,13 +116,12 @@ public sealed class AnimateCommand
 
     // The script runs once (its preprocessing too); every frame renders a clone of its scene.
     // Command line, then the script's context values (size, spp, range, …), then the defaults.
-    SceneSetup setup = SceneSetup.Create(source, settings, render.Given(parse), null);
+    PreparedRender setup = RenderCommand.PrepareScene(new RenderRequest(source, settings, render.Given(parse)));
     settings = setup.Settings;
     MemoryBudget.Check(settings.Size);
     foreach (string note in setup.Notes)
       env.Error.WriteLine("grcis: note: " + note);
-    ISceneTiming? timing = setup.Script is { } run ? AnimationPlan.TimingOf(run) : source as ISceneTiming;
-    AnimationPlan plan = AnimationPlan.Create(parse.GetValue(from), parse.GetValue(to), parse.GetValue(fps), timing, setup.Scene, range, part);
+        AnimationPlan plan = AnimationPlan.Create(parse.GetValue(from), parse.GetValue(to), parse.GetValue(fps), setup.Timing, setup.Scene, range, part);
 
     if (setup.Synthesizer == null && settings.SamplesPerPixel > 1 && settings.EffectiveSamplesPerPixel != settings.SamplesPerPixel)
       env.Error.WriteLine($"grcis: note: --spp {settings.SamplesPerPixel} rounded up to {settings.EffectiveSamplesPerPixel} (a square grid)");

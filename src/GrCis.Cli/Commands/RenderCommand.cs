@@ -70,7 +70,7 @@ public sealed class RenderCommand
     target.CheckWritable();
 
     // Command line, then the script's context values, then the defaults.
-    SceneSetup setup = SceneSetup.Create(source, settings, render.Given(parse), scriptOptions.Time(parse));
+    PreparedRender setup = PrepareScene(new RenderRequest(source, settings, render.Given(parse), scriptOptions.Time(parse)));
     settings = setup.Settings;
     MemoryBudget.Check(settings.Size);
     foreach (string note in setup.Notes)
@@ -79,7 +79,6 @@ public sealed class RenderCommand
     if (setup.Synthesizer == null && settings.SamplesPerPixel > 1 && settings.EffectiveSamplesPerPixel != settings.SamplesPerPixel)
       env.Error.WriteLine($"grcis: note: --spp {settings.SamplesPerPixel} rounded up to {settings.EffectiveSamplesPerPixel} (a square grid)");
 
-    IRayScene sc = setup.Scene;
     IProgressView view = parse.GetValue(quiet) ? new SilentProgressView()
       : env.Interactive ? new SpectreProgressView(env.Error)
       : new PlainProgressView(env.Error);
@@ -87,7 +86,7 @@ public sealed class RenderCommand
     try
     {
       result = view.Run($"render {source.DisplayName}",
-        report => RenderJob.Run(sc, settings, setup.ImageFunction, setup.Synthesizer, report, env.Cancel,
+        report => setup.Render(report, env.Cancel,
           part is ShardSpec p ? PartLayout.Tiles(settings.Size.Width, settings.Size.Height, p.Index, p.Count) : null));
     }
     catch (Exception e) when (source is ScriptSceneSource script && script.WithScriptLine(e.InnerException ?? e) is ScriptRuntimeException located)
@@ -139,5 +138,21 @@ public sealed class RenderCommand
     if (r.Statistics.Elapsed.TotalSeconds > 1e-3 && r.Statistics.Rays > 0)
       line += string.Create(CultureInfo.InvariantCulture, $", {r.Statistics.RaysPerSecond / 1e6:0.00} Mrays/s");
     return line;
+  }
+
+  /// <summary>
+  /// Builds the scene and applies the precedence rule (command line, then the script's context values, then the
+  /// defaults); a script's choice out of range is a failure of the command, worded with the option names.
+  /// </summary>
+  internal static PreparedRender PrepareScene(RenderRequest request)
+  {
+    try
+    {
+      return request.Prepare(CliSettings.OptionName);
+    }
+    catch (ScriptChoiceException e)
+    {
+      throw new CliFailure(e.Message);
+    }
   }
 }

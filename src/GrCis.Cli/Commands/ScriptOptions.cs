@@ -2,6 +2,8 @@ using System;
 using System.CommandLine;
 using GrCis.Cli.SceneSources;
 
+using GrCis.Hosting;
+
 namespace GrCis.Cli.Commands;
 
 /// <summary>

@@ -20,7 +20,7 @@ namespace GrCis.Cli.Jobs;
 /// </summary>
 public static class StillPart
 {
-  public static PartHeader Header(ISceneSource source, SceneSetup setup, ShardSpec part, IEnumerable<string> modules, int samplesPerPixel)
+  public static PartHeader Header(ISceneSource source, PreparedRender setup, ShardSpec part, IEnumerable<string> modules, int samplesPerPixel)
   {
     RenderSettings s = setup.Settings;
     var id = new StringBuilder();

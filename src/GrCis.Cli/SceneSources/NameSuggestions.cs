@@ -2,6 +2,8 @@ using System;
 using System.Collections.Generic;
 using System.Linq;
 
+using GrCis.Hosting;
+
 namespace GrCis.Cli.SceneSources;
 
 /// <summary>"Did you mean …?" for a mistyped scene name: edit distance on names without case, spaces or punctuation.</summary>

@@ -3,6 +3,8 @@ using System.Collections.Generic;
 using System.IO;
 using Rendering;
 
+using GrCis.Hosting;
+
 namespace GrCis.Cli.SceneSources;
 
 /// <summary>

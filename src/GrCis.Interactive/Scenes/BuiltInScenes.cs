@@ -7,19 +7,11 @@ namespace GrCis.Interactive;
 /// <summary>The classic GrCis scenes of <see cref="Scenes"/> as catalog entries, with their parameter help.</summary>
 public static class BuiltInScenes
 {
-  // Parameter help of the scenes that take parameters (what their initializers parse).
-  static readonly Dictionary<string, string> tooltips = new(StringComparer.OrdinalIgnoreCase)
-  {
-    ["Two spheres"] = "n=<index of refraction of the glass sphere> (default 1.6)",
-    ["Sphere flake"] = "depth=<levels> (5), coef=<child scale> (0.4), mat=mirror|glass (else diffuse), n=<glass IOR> (1.6)",
-    ["Cubes"] = "mat=mirror|glass (else diffuse), n=<glass IOR> (1.6)",
-  };
-
   /// <summary>GrCis's default scene, selected when nothing else was asked for.</summary>
   public static string DefaultName => Scenes.DefaultSceneName;
 
   /// <summary>Parameter help of a built-in scene, or null when it takes no parameters.</summary>
-  public static string? Tooltip(string name) => tooltips.TryGetValue(name, out string? t) ? t : null;
+  public static string? Tooltip(string name) => GrCis.Hosting.BuiltInSceneSource.TooltipOf(name);
 
   /// <summary>Adds every scene of <see cref="Scenes.Names"/> in GrCis's order; returns how many were added.</summary>
   public static int AddTo(SceneCatalog catalog)

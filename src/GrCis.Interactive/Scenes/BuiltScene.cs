@@ -1,3 +1,4 @@
+using GrCis.Hosting;
 using Rendering;
 
 namespace GrCis.Interactive;
@@ -27,4 +28,25 @@ public sealed class BuiltScene
   public IRenderer? Renderer { get; init; }
 
   public string? Tooltip { get; init; }
+
+  /// <summary>A render job for this scene: the script's overrides and its chosen function/renderer, by the precedence rule.</summary>
+  /// <exception cref="SceneEvaluationException">The script asks for an image size or supersampling out of range.</exception>
+  public RenderJob ToJob(RenderSettings settings)
+  {
+    var choices = new ScriptChoices
+    {
+      Name = Entry.Name,
+      Width = Overrides.Width,
+      Height = Overrides.Height,
+      SamplesPerPixel = Overrides.Supersampling,
+    };
+    try
+    {
+      return RenderJob.Create(Scene, settings, ImageFunction, Renderer, Entry.Name, Param, choices);
+    }
+    catch (ScriptChoiceException e)
+    {
+      throw new SceneEvaluationException(e.Message);
+    }
+  }
 }

@@ -7,6 +7,8 @@ using Rendering;
 using Rendering.Execution;
 using Rendering.Imaging;
 
+using GrCis.Hosting;
+
 namespace GrCis.Interactive;
 
 /// <summary>

@@ -4,7 +4,7 @@ using System.IO;
 using GrCis.Scripting;
 using Rendering;
 
-namespace GrCis.Cli.SceneSources;
+namespace GrCis.Hosting;
 
 /// <summary>
 /// A GrCis scene script (<c>*.cs</c>): compiled once by a <see cref="ScriptHost"/> (with the modules

@@ -1,7 +1,7 @@
 using System;
 using System.Threading;
 
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
 /// <summary>
 /// Calls an action at a fixed interval on a thread of its own until disposed: previews keep coming while the

@@ -1,7 +1,7 @@
 using System.Collections.Generic;
 using Rendering;
 
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
 /// <summary>
 /// Sets the time of a scene. A scene that is itself <see cref="ITimeDependent"/> (AnimatedRayScene)

@@ -1,7 +1,7 @@
 using System;
 using Rendering.Execution;
 
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
 /// <summary>A tile finished.</summary>
 public sealed class RenderProgressEventArgs : EventArgs

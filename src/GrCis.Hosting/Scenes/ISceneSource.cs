@@ -1,8 +1,8 @@
 using Rendering;
 
-namespace GrCis.Cli.SceneSources;
+namespace GrCis.Hosting;
 
-/// <summary>Something <c>grcis render</c> can render: a built-in scene now, a scene script later.</summary>
+/// <summary>A scene a front end can render: a built-in scene (<see cref="BuiltInSceneSource"/>) or a scene script (<see cref="ScriptSceneSource"/>).</summary>
 public interface ISceneSource
 {
   /// <summary>Name shown to the user ("Sphere on the plane", "TwoSpheres.cs").</summary>

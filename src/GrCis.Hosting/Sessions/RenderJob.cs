@@ -1,9 +1,8 @@
 using System;
-using GrCis.Hosting;
 using Rendering;
 using Rendering.Execution;
 
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
 /// <summary>
 /// Everything one render needs, resolved: the scene, the image function and renderer configured
@@ -67,31 +66,22 @@ public sealed class RenderJob
   /// A job for <paramref name="scene"/>: the script's <paramref name="overrides"/>, <paramref name="function"/> and
   /// <paramref name="renderer"/> (null = not chosen) resolved against <paramref name="settings"/> by the shared precedence rule.
   /// </summary>
-  /// <exception cref="SceneEvaluationException">The script asks for an image size or supersampling out of range.</exception>
+  /// <param name="choices">What the script chose through its context (size, supersampling; its function and
+  /// renderer when <paramref name="function"/>/<paramref name="renderer"/> are null); null = nothing.</param>
+  /// <exception cref="ScriptChoiceException">The script asks for an image size or supersampling out of range.</exception>
   /// <exception cref="InvalidSettingException">A setting out of range.</exception>
   public static RenderJob Create(IRayScene scene, RenderSettings settings, IImageFunction? function = null, IRenderer? renderer = null,
-    string? sceneName = null, string param = "", SceneOverrides? overrides = null)
+    string? sceneName = null, string param = "", ScriptChoices? choices = null)
   {
     ArgumentNullException.ThrowIfNull(scene);
     ArgumentNullException.ThrowIfNull(settings);
-    var choices = new ScriptChoices
+    choices = (choices ?? new ScriptChoices()) with
     {
-      Name = sceneName ?? "the scene",
-      Width = overrides?.Width,
-      Height = overrides?.Height,
-      SamplesPerPixel = overrides?.Supersampling,
-      ImageFunction = function,
-      Renderer = renderer,
+      Name = sceneName ?? (choices != null ? choices.Name : "the scene"),
+      ImageFunction = function ?? choices?.ImageFunction,
+      Renderer = renderer ?? choices?.Renderer,
     };
-    RenderPlan plan;
-    try
-    {
-      plan = Precedence.Resolve(settings, Given, choices);
-    }
-    catch (ScriptChoiceException e)
-    {
-      throw new SceneEvaluationException(e.Message);
-    }
+    RenderPlan plan = Precedence.Resolve(settings, Given, choices);
     settings = plan.Settings;
 
     if (settings.Time is double t)
@@ -118,11 +108,4 @@ public sealed class RenderJob
 
   /// <summary>Things the user should know about how the script's choices were used (<see cref="RenderPlan.Notes"/>).</summary>
   public System.Collections.Generic.IReadOnlyList<string> Notes { get; private init; } = Array.Empty<string>();
-
-  /// <summary>A job for a built scene: the script's overrides and its chosen function/renderer, by the precedence rule.</summary>
-  public static RenderJob Create(BuiltScene built, RenderSettings settings)
-  {
-    ArgumentNullException.ThrowIfNull(built);
-    return Create(built.Scene, settings, built.ImageFunction, built.Renderer, built.Entry.Name, built.Param, built.Overrides);
-  }
 }

@@ -6,9 +6,8 @@ using System.Threading.Tasks;
 using Rendering;
 using Rendering.Execution;
 using Rendering.Imaging;
-using GrCis.Hosting;
 
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
 /// <summary>
 /// One render of a <see cref="RenderJob"/> as the demo shows it: a coarse preview first (every

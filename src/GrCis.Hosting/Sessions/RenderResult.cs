@@ -2,9 +2,8 @@ using System;
 using System.Collections.Generic;
 using Rendering.Execution;
 using Rendering.Imaging;
-using GrCis.Hosting;
 
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
 /// <summary>The outcome of a render session: the image (linear), statistics, and how it ended.</summary>
 public sealed class RenderResult

@@ -1,7 +1,7 @@
 using System;
 using Rendering.Imaging;
 
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
 /// <summary>A preview image: a snapshot the receiver owns (linear colours).</summary>
 public sealed class RenderPreviewEventArgs : EventArgs

@@ -1,4 +1,4 @@
-namespace GrCis.Cli.SceneSources;
+namespace GrCis.Hosting;
 
 /// <summary>
 /// A scene source that knows the animation range its scene asks for (a script's context

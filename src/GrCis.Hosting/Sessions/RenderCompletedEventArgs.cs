@@ -1,6 +1,6 @@
 using System;
 
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
 /// <summary>The render ended (finished, stopped or failed).</summary>
 public sealed class RenderCompletedEventArgs : EventArgs

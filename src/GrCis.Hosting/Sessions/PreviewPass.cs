@@ -1,4 +1,4 @@
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
 /// <summary>Which stage of the coarse-to-fine refinement a preview shows.</summary>
 public enum PreviewPass

@@ -1,6 +1,6 @@
 using System.Text;
 
-namespace GrCis.Cli.SceneSources;
+namespace GrCis.Hosting;
 
 /// <summary>File-name-safe form of a scene name: "Sphere on the plane" → "sphere-on-the-plane".</summary>
 public static class Slug

@@ -1,6 +1,6 @@
 using Rendering;
 
-namespace GrCis.Cli.SceneSources;
+namespace GrCis.Hosting;
 
 /// <summary>One of the classic GrCis scenes from <see cref="Scenes"/>.</summary>
 public sealed class BuiltInSceneSource : ISceneSource
@@ -19,11 +19,14 @@ public sealed class BuiltInSceneSource : ISceneSource
   public string OutputStem => Slug.Of(DisplayName);
 
   /// <summary>GrCis's parameter help for the scene, or null when it takes none.</summary>
-  public string? ToolTip => DisplayName switch
+  public string? ToolTip => TooltipOf(DisplayName);
+
+  /// <summary>Parameter help of the built-in scene <paramref name="name"/> (what its initializer parses), or null when it takes none.</summary>
+  public static string? TooltipOf(string name) => name switch
   {
     "Two spheres" => "n=<double> (index of refraction of the glass ball, default 1.6)",
-    "Sphere flake" => "depth=<int> (default 5), coef=<double> (default 0.4), n=<double> (default 1.6), mat={mirror|glass}",
-    "Cubes" => "n=<double> (default 1.6), mat={mirror|glass}",
+    "Sphere flake" => "depth=<int> (default 5), coef=<double> (default 0.4), n=<double> (default 1.6), mat=mirror|glass (else diffuse)",
+    "Cubes" => "n=<double> (default 1.6), mat=mirror|glass (else diffuse)",
     _ => null,
   };
 

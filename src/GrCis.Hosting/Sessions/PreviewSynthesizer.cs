@@ -1,7 +1,7 @@
 using Rendering;
 using Rendering.Imaging;
 
-namespace GrCis.Interactive;
+namespace GrCis.Hosting;
 
 /// <summary>
 /// Wraps the job's renderer for <see cref="Rendering.Execution.TileRenderer"/>: each pixel is computed
