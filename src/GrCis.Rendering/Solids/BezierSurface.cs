@@ -15,7 +15,7 @@ namespace Rendering;
 /// runs against the normal ∂S/∂u × ∂S/∂v. Both APIs (the list and the fast path's first record) share one
 /// search, <see cref="Collect"/>, so they give the same records.
 /// </summary>
-public class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
+public partial class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
 {
   /// <summary>Exact surface normals (otherwise the flat normal of the piece that was hit).</summary>
   public bool PreciseNormals { get; set; }
@@ -304,42 +304,6 @@ public class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
 
   Hit NewHit(int piece, double u, double v) =>
     new() { Patch = pieces[piece].Patch, U = u, V = v, FlatNormal = pieces[piece].FlatNormal };
-
-  public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(BezierSurface));
-
-  /// <summary>An open surface: a list may start "inside" (a back face first), so it is tested for every ray.</summary>
-  public virtual bool IsClosed => false;
-
-  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
-  {
-    hit = default;
-    insideBefore = false;
-    Span<Found> found = CollectAll(p0, p1, stackalloc Found[StackHits]);
-    for (int k = 0; k < found.Length; k++)
-    {
-      bool front = Front(found[k], p1);
-      if (k == 0)
-        insideBefore = !front;
-      if (SolidSupport.Accepted(found[k].T, len2))
-      {
-        Found f = found[k];
-        hit.T = f.T;
-        hit.CoordLocal = p0 + f.T * p1;
-        hit.Data = f.Piece;
-        hit.Aux = new Vector3d(f.U, f.V, 0.0);
-        hit.Enter = hit.Front = front;
-        return true;
-      }
-      insideBefore = front;
-    }
-    return false;
-  }
-
-  public virtual void InitIntersection(in SolidRecord hit, Intersection target)
-  {
-    target.SetRecord(hit);
-    target.SolidData = NewHit(hit.Data, hit.Aux.X, hit.Aux.Y);
-  }
 
   /// <summary>Newton iteration for (u, v) on the plane pair, started in the middle of the piece.</summary>
   bool Solve(Piece piece, Vector3d n1, Vector3d n2, double c1, double c2, double scale, out double u, out double v, out Vector3d point)

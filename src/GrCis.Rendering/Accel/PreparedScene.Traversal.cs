@@ -1,0 +1,182 @@
+using System;
+using System.Collections.Generic;
+using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
+using OpenTK.Mathematics;
+
+namespace Rendering.Accel;
+
+/// <summary>The closest-record search of a <see cref="PreparedScene"/>: the BVH walk and the test of one member.</summary>
+public sealed partial class PreparedScene
+{
+  /// <summary>Closest first-valid record over all members; false when the fast rule does not apply.</summary>
+  bool Closest(ref Query q, in Vector3d p0, in Vector3d p1)
+  {
+    for (int k = 0; k < always.Length; k++)
+      if (!TestMember(always[k], ref q, p0, p1))
+        return false;
+    if (bvh == null)
+      return true;
+
+    // Zero direction components become tiny ones: no NaN from 0 · ∞ in the slab test, and the
+    // padded boxes absorb the difference.
+    double dx = p1.X == 0.0 ? 1e-300 : p1.X, dy = p1.Y == 0.0 ? 1e-300 : p1.Y, dz = p1.Z == 0.0 ? 1e-300 : p1.Z;
+    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
+    double ox = p0.X, oy = p0.Y, oz = p0.Z;
+    BvhNode[] nodes = bvh.Nodes;
+    BvhChildBoxes[] children = bvh.Children;
+    int[] items = bvh.Items;
+    // Per-axis "direction is negative" as bits (bit a set: near child is the right one along axis a).
+    int negMask = (dx < 0.0 ? 1 : 0) | (dy < 0.0 ? 2 : 0) | (dz < 0.0 ? 4 : 0);
+
+    // Visit boxes overlapping [0, best]; "≤ best" keeps equal-T ties for the depth-first order rule.
+    if (!BvhChildBoxes.Slab(nodes[0], ox, oy, oz, ix, iy, iz, q.BestT, out _))
+      return true;
+    Vector128<double> vox = Vector128.Create(ox), voy = Vector128.Create(oy), voz = Vector128.Create(oz);
+    Vector128<double> vix = Vector128.Create(ix), viy = Vector128.Create(iy), viz = Vector128.Create(iz);
+
+    // A pushed child's box is known to be hit; only its entry t against the shrinking best is checked again.
+    Span<int> stack = stackSize <= 256 ? stackalloc int[stackSize] : new int[stackSize];
+    Span<double> stackT = stackSize <= 256 ? stackalloc double[stackSize] : new double[stackSize];
+    int sp = 0;
+    int ni = 0;
+    while (true)
+    {
+      ref BvhNode n = ref nodes[ni];
+      if (n.Count > 0)
+      {
+        int end = n.Index + n.Count;
+        for (int k = n.Index; k < end; k++)
+        {
+          int item = items[k];
+          // A clear miss of the member's world bounding sphere skips its transform chain (exact: conservative).
+          if (members[item].CullRadius2 > 0.0 && MissesSphere(members[item], p0, p1))
+            continue;
+          if (!TestMember(item, ref q, p0, p1))
+            return false;
+        }
+      }
+      else
+      {
+        // Both children at once; near child first (by the ray's sign along the split axis).
+        int hit = children[ni].Hit(vox, voy, voz, vix, viy, viz, q.BestT, out Vector128<double> entry);
+        if (hit != 0)
+        {
+          // Lane/bit 0 is the left child (ni + 1), lane/bit 1 the right one (n.Index).
+          int nearLane = (negMask >> n.Axis) & 1, farLane = nearLane ^ 1;
+          int near = nearLane == 0 ? ni + 1 : n.Index, far = nearLane == 0 ? n.Index : ni + 1;
+          if ((hit & (1 << nearLane)) == 0)
+          {
+            ni = far;
+            continue;
+          }
+          if ((hit & (1 << farLane)) != 0)
+          {
+            stackT[sp] = entry.GetElement(farLane);
+            stack[sp++] = far;
+          }
+          ni = near;
+          continue;
+        }
+      }
+      while (true)
+      {
+        if (sp == 0)
+          return true;
+        --sp;
+        if (stackT[sp] <= q.BestT)
+          break;
+      }
+      ni = stack[sp];
+    }
+  }
+
+  /// <summary>True when the line misses the member's (enlarged) world bounding sphere: it has no records.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static bool MissesSphere(in PreparedMember m, in Vector3d p0, in Vector3d p1)
+  {
+    // Squared distance of the centre from the line: |oc|² − (oc·d)²/|d|² > r².
+    double ox = m.CullCenter.X - p0.X, oy = m.CullCenter.Y - p0.Y, oz = m.CullCenter.Z - p0.Z;
+    double od = ox * p1.X + oy * p1.Y + oz * p1.Z;
+    double dd = p1.X * p1.X + p1.Y * p1.Y + p1.Z * p1.Z;
+    double oo = ox * ox + oy * oy + oz * oz;
+    return (oo - m.CullRadius2) * dd > od * od;
+  }
+
+  /// <summary>Tests one member; false when the fast rule does not apply to this ray.</summary>
+  bool TestMember(int index, ref Query q, in Vector3d p0, in Vector3d p1)
+  {
+    ref PreparedMember m = ref members[index];
+    Vector3d lp0 = p0, lp1 = p1;
+    ToLocal(m, ref lp0, ref lp1);
+
+    if (m.RecordSolid != null || m.Csg != null)
+    {
+      bool has;
+      SolidRecord h;
+      bool inside;
+      int leaf = -1;
+      if (m.RecordSolid != null)
+        has = m.RecordSolid.IntersectFirst(lp0, lp1, q.Len2, out h, out inside);
+      else
+      {
+        int status = m.Csg!.IntersectFirst(lp0, lp1, q.Len2, out h, out leaf, out inside);
+        if (status < 0)
+          return false;
+        has = status > 0;
+      }
+      if (inside)
+      {
+        // The ray starts inside this member: fine while it is the only one and its first record is an exit.
+        if (!has || h.Enter || q.InsideIndex >= 0)
+          return false;
+        q.InsideIndex = index;
+        q.InsideLeaf = leaf;
+        q.InsideT = h.T;
+        q.InsideHit = h;
+        if (h.T < q.BestT)
+          q.BestT = h.T;
+        return true;
+      }
+      if (has && !h.Enter)
+        return false;
+      if (has && (h.T < q.EntryT || (h.T == q.EntryT && index < q.BestIndex)))
+      {
+        q.EntryT = h.T;
+        q.BestIndex = index;
+        q.BestLeaf = leaf;
+        q.BestHit = h;
+        q.BestList = null;
+        if (h.T < q.BestT)
+          q.BestT = h.T;
+      }
+      return true;
+    }
+
+    // A leaf answering through the LinkedList API (allocates; always correct).
+    LinkedList<Intersection>? list = m.Node.Intersect(lp0, lp1);
+    if (list == null || list.First == null)
+      return true;
+    bool state = !list.First.Value.Enter;
+    foreach (Intersection i in list)
+    {
+      if (i.T > 0.0 && i.T * i.T * q.Len2 > Intersection.RAY_EPSILON2)
+      {
+        if (state || !i.Enter)
+          return false;
+        if (i.T < q.EntryT || (i.T == q.EntryT && index < q.BestIndex))
+        {
+          q.EntryT = i.T;
+          if (i.T < q.BestT)
+            q.BestT = i.T;
+          q.BestIndex = index;
+          q.BestLeaf = -1;
+          q.BestList = i;
+        }
+        return true;
+      }
+      state = i.Enter;
+    }
+    return !state;
+  }
+}
