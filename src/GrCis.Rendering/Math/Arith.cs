@@ -41,4 +41,22 @@ public partial class Arith
       (a, b) = (b, a % b);
     return a;
   }
+
+  /// <summary>
+  /// Where the ray (ox, oy) + t·(dx, dy) crosses the segment from (ax, ay) to (bx, by): the parameter t (negative
+  /// when the crossing is behind the origin), or <see cref="double.NegativeInfinity"/> when the ray misses the
+  /// segment or runs parallel to it.
+  /// </summary>
+  public static double RaySegment2D(double ox, double oy, double dx, double dy, double ax, double ay, double bx, double by)
+  {
+    // Solve o + t·d = a + s·(b − a) by Cramer's rule (2D cross products).
+    double ex = bx - ax, ey = by - ay;
+    double den = dx * ey - dy * ex;
+    if (den == 0.0)
+      return double.NegativeInfinity;
+    double px = ax - ox, py = ay - oy;
+    double t = (px * ey - py * ex) / den;
+    double s = (px * dy - py * dx) / den;
+    return s >= 0.0 && s <= 1.0 ? t : double.NegativeInfinity;
+  }
 }

@@ -16,6 +16,8 @@ public struct Vector4 : IEquatable<Vector4>
   public Vector4(Vector3 v, float w) { X = v.X; Y = v.Y; Z = v.Z; W = w; }
 
   public Vector3 Xyz { readonly get => new(X, Y, Z); set { X = value.X; Y = value.Y; Z = value.Z; } }
+  public readonly float LengthSquared => X * X + Y * Y + Z * Z + W * W;
+
   public readonly float Length => MathF.Sqrt(X * X + Y * Y + Z * Z + W * W);
   public static Vector4 Lerp(Vector4 a, Vector4 b, float t) => a + (b - a) * t;
 

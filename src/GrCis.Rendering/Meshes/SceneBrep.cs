@@ -10,9 +10,9 @@ namespace Scene3D;
 /// texture coordinates, and a corner table (Rossignac): corner c belongs to triangle c / 3,
 /// <see cref="cVertex"/> gives its vertex and, after <see cref="BuildCornerTable"/>,
 /// <see cref="cOpposite"/> the corner across the opposite edge. Coordinates are single
-/// precision, as in GrCis.
+/// precision, as in GrCis. A mesh may instead hold lines (<see cref="AddLine"/>), never both.
 /// </summary>
-public class SceneBrep : ICloneable
+public partial class SceneBrep : ICloneable
 {
   /// <summary>Invalid handle (vertex, triangle, corner).</summary>
   public const int NULL = -1;
@@ -39,6 +39,8 @@ public class SceneBrep : ICloneable
     txtCoords = null;
     vertexPtr = new List<int>(256);
     oppositePtr = null;
+    lines = false;
+    LineWidth = 2.0f;
   }
 
   object ICloneable.Clone() => Clone();
@@ -55,6 +57,8 @@ public class SceneBrep : ICloneable
       oppositePtr = oppositePtr == null ? null : new List<int>(oppositePtr),
       statEdges = statEdges,
       statShared = statShared,
+      lines = lines,
+      LineWidth = LineWidth,
     };
     return copy;
   }
@@ -87,9 +91,11 @@ public class SceneBrep : ICloneable
 
   public bool HasTxtCoords() => txtCoords != null;
 
-  public int Triangles => vertexPtr.Count / 3;
+  /// <summary>Number of triangles; 0 when the mesh holds lines.</summary>
+  public int Triangles => lines ? 0 : vertexPtr.Count / 3;
 
-  public int Corners => vertexPtr.Count;
+  /// <summary>Number of corners (three per triangle); 0 when the mesh holds lines.</summary>
+  public int Corners => lines ? 0 : vertexPtr.Count;
 
   /// <summary>Adds a vertex and returns its handle (attributes present so far get defaults).</summary>
   public int AddVertex(Vector3 v)
@@ -138,9 +144,11 @@ public class SceneBrep : ICloneable
 
   public Vector2 GetTxtCoord(int v) => (txtCoords ?? throw NoAttribute("texture coordinates"))[CheckVertex(v)];
 
-  /// <summary>Adds a triangle (counter-clockwise seen from its front) and returns its handle.</summary>
+  /// <summary>Adds a triangle (counter-clockwise seen from its front) and returns its handle; <see cref="NULL"/> when the mesh holds lines.</summary>
   public int AddTriangle(int v1, int v2, int v3)
   {
+    if (!HasTriangles)
+      return NULL;
     CheckVertex(v1);
     CheckVertex(v2);
     CheckVertex(v3);
@@ -218,6 +226,8 @@ public class SceneBrep : ICloneable
   /// <summary>Vertex normals as the average of the unit normals of the incident triangles.</summary>
   public void ComputeNormals()
   {
+    if (!HasTriangles)
+      return;
     var sum = new Vector3d[geometry.Count];
     for (int c = 0; c + 2 < vertexPtr.Count; c += 3)
     {
@@ -243,6 +253,11 @@ public class SceneBrep : ICloneable
   /// <summary>Links opposite corners across shared edges (two triangles per edge at most are linked).</summary>
   public void BuildCornerTable()
   {
+    if (!HasTriangles)
+    {
+      oppositePtr = null;
+      return;
+    }
     int n = vertexPtr.Count;
     oppositePtr = new List<int>(n);
     for (int i = 0; i < n; i++)
