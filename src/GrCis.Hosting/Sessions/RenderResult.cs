@@ -5,29 +5,33 @@ using Rendering.Imaging;
 
 namespace GrCis.Hosting;
 
-/// <summary>The outcome of a render session: the image (linear), statistics, and how it ended.</summary>
+/// <summary>
+/// The outcome of a render session: the rendered frame (<see cref="FrameResult"/>, the result type of every
+/// front end), the job it was rendered for, the tiles that finished, and what went wrong, if anything.
+/// </summary>
 public sealed class RenderResult
 {
-  internal RenderResult(RenderJob job, FloatImage image, RenderStatistics statistics, IReadOnlyList<Tile> finishedTiles, bool cancelled, Exception? error)
+  internal RenderResult(RenderJob job, FrameResult frame, IReadOnlyList<Tile> finishedTiles, Exception? error)
   {
     Job = job;
-    Image = image;
-    Statistics = statistics;
+    Frame = frame;
     FinishedTiles = finishedTiles;
-    Cancelled = cancelled;
     Error = error;
   }
 
   public RenderJob Job { get; }
 
-  /// <summary>Linear colours. After a stop, finished tiles are exact and the rest is black.</summary>
-  public FloatImage Image { get; }
+  /// <summary>The image, its statistics and whether it was stopped.</summary>
+  public FrameResult Frame { get; }
 
-  public RenderStatistics Statistics { get; }
+  /// <summary>Linear colours. After a stop, finished tiles are exact and the rest is black.</summary>
+  public FloatImage Image => Frame.Image;
+
+  public RenderStatistics Statistics => Frame.Statistics;
 
   public IReadOnlyList<Tile> FinishedTiles { get; }
 
-  public bool Cancelled { get; }
+  public bool Cancelled => Frame.Cancelled;
 
   /// <summary>What went wrong inside the scene, or null.</summary>
   public Exception? Error { get; }

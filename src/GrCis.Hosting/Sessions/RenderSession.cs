@@ -157,7 +157,7 @@ public sealed class RenderSession : IDisposable
       TilesTotal = tilesTotal,
     };
     bool cancelled = token.IsCancellationRequested && tiles.Length < tilesTotal;
-    return new RenderResult(job, image, stats, tiles, cancelled, error);
+    return new RenderResult(job, new FrameResult(image, stats, cancelled), tiles, error);
   }
 
   /// <summary>Renders one pixel per block (its exact final value) and fills the block with it.</summary>
