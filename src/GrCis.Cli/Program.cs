@@ -93,6 +93,7 @@ public static class Program
       ListCommand.Build(env),
       new InfoCommand().Build(env),
       BenchCommand.Build(env),
+      new StudioCommand().Build(env),
     };
     return root;
   }

@@ -1,0 +1,134 @@
+using System;
+using System.IO;
+using System.Linq;
+using System.Reflection;
+using GrCis.Hosting;
+using GrCis.Interactive;
+using Microsoft.AspNetCore.Builder;
+using Microsoft.AspNetCore.Http;
+using Rendering.Imaging;
+
+namespace GrCis.Studio;
+
+/// <summary>
+/// The studio's endpoints: the page (from the assembly), the scene list, render/stop/status, the image
+/// (PNG as <c>grcis render</c> writes it, PFM linear), the pixel probe and the scripts' text.
+/// </summary>
+internal static class StudioApi
+{
+  public static void Map(WebApplication app)
+  {
+    app.MapGet("/", () => Page("index.html", "text/html; charset=utf-8"));
+    app.MapGet("/app.js", () => Page("app.js", "text/javascript; charset=utf-8"));
+    app.MapGet("/app.css", () => Page("app.css", "text/css; charset=utf-8"));
+
+    app.MapGet("/api/scenes", (StudioSession s) => new
+    {
+      selected = s.Controller.Selected?.Name,
+      scenes = s.Controller.Catalog.Entries.Select(e => new
+      {
+        name = e.Name,
+        kind = e.Kind.ToString(),
+        tooltip = e.Tooltip,
+        param = e.ParameterText,
+        file = e.Path == null ? null : Path.GetFileName(e.Path),
+      }),
+    });
+    app.MapGet("/api/settings", (StudioSession s) => s.Controller.Settings);
+    app.MapPost("/api/render", (RenderBody body, StudioSession s) => Render(body, s));
+    app.MapPost("/api/stop", (StudioSession s) =>
+    {
+      s.Controller.Stop();
+      return Results.NoContent();
+    });
+    app.MapGet("/api/status", (StudioSession s) => s.Status());
+    app.MapGet("/api/image.png", (StudioSession s, HttpResponse response) =>
+    {
+      if (s.DisplayImage() is not var (image, version))
+        return Results.NotFound();
+      response.Headers["X-Image-Version"] = version.ToString(System.Globalization.CultureInfo.InvariantCulture);
+      response.Headers.CacheControl = "no-store";
+      return Results.Bytes(PngEncoder.Default.Encode(image), "image/png");
+    });
+    app.MapGet("/api/image.pfm", (StudioSession s) =>
+      s.FinalImage() is FloatImage f ? Results.Bytes(PfmWriter.Encode(f), "application/octet-stream", "render.pfm") : Results.NotFound());
+    app.MapGet("/api/probe", (int x, int y, StudioSession s) => Probe(s, x, y));
+    app.MapGet("/api/source", (string scene, StudioSession s, AllowedFiles files) =>
+    {
+      SceneEntry? entry = s.Controller.Catalog.Find(scene);
+      if (entry?.Path == null)
+        return Results.NotFound();
+      return files.Allows(entry.Path) ? Results.Text(File.ReadAllText(entry.Path), "text/plain; charset=utf-8") : Results.StatusCode(StatusCodes.Status403Forbidden);
+    });
+    app.MapGet("/api/file", (string path, AllowedFiles files) =>
+      !files.Allows(path) ? Results.StatusCode(StatusCodes.Status403Forbidden)
+      : File.Exists(path) ? Results.Text(File.ReadAllText(path), "text/plain; charset=utf-8")
+      : Results.NotFound());
+  }
+
+  /// <summary>What the page sends to render: the scene's name, its parameter text and the settings.</summary>
+  internal sealed record RenderBody(string Scene, string? Param, RenderSettings? Settings);
+
+  static IResult Render(RenderBody body, StudioSession s)
+  {
+    SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
+    if (entry == null)
+      return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
+    RenderSettings settings = body.Settings ?? s.Controller.Settings;
+    try
+    {
+      settings = settings.Validate();
+    }
+    catch (InvalidSettingException e)
+    {
+      return Results.BadRequest(new { error = e.Message });
+    }
+    s.Render(entry, body.Param ?? entry.ParameterText, settings);
+    return Results.Accepted();
+  }
+
+  static IResult Probe(StudioSession s, int x, int y)
+  {
+    ProbeResult probe;
+    try
+    {
+      probe = s.Controller.Probe(x, y);
+    }
+    catch (Exception e) when (e is InvalidOperationException or ArgumentOutOfRangeException)
+    {
+      return Results.BadRequest(new { error = e.Message });
+    }
+    return Results.Ok(new
+    {
+      x = probe.X,
+      y = probe.Y,
+      pixel = probe.PixelColor,
+      sample = probe.SampleColor,
+      hash = probe.Hash,
+      rays = probe.Rays == null ? null : RayJson(probe.Rays),
+    });
+  }
+
+  static object RayJson(RayNode n) => new
+  {
+    kind = n.Kind.ToString(),
+    depth = n.Depth,
+    origin = new[] { n.Origin.X, n.Origin.Y, n.Origin.Z },
+    direction = new[] { n.Direction.X, n.Direction.Y, n.Direction.Z },
+    hit = n.Hit is { } h ? new[] { h.X, h.Y, h.Z } : null,
+    normal = n.Normal is { } m ? new[] { m.X, m.Y, m.Z } : null,
+    solid = n.Solid?.GetType().Name,
+    blocked = n.Blocked,
+    children = n.Children.Select(RayJson).ToArray(),
+  };
+
+  static IResult Page(string name, string type)
+  {
+    using Stream? stream = Assembly.GetExecutingAssembly().GetManifestResourceStream("page/" + name);
+    if (stream == null)
+      return Results.NotFound();
+    using var copy = new MemoryStream();
+    stream.CopyTo(copy);
+    return Results.Bytes(copy.ToArray(), type);
+  }
+}

@@ -1,0 +1,153 @@
+// GrCis studio page: scene list, settings, render/stop with previews, zoom/pan, pixel read-out and probe.
+// Plain browser JavaScript, no libraries: every request carries the studio's cookie (set by the first load).
+"use strict";
+
+const $ = id => document.getElementById(id);
+const canvas = $("canvas"), ctx = canvas.getContext("2d");
+let scenes = [], shownVersion = -1, polling = null;
+let zoom = 1, panX = 0, panY = 0, drag = null;
+
+async function api(path, options) {
+  const r = await fetch("api/" + path, options);
+  if (!r.ok && r.status !== 404) {
+    let text = await r.text();
+    try { text = JSON.parse(text).error ?? text; } catch { }
+    throw new Error(text || r.statusText);
+  }
+  return r;
+}
+
+async function loadScenes() {
+  const list = await (await api("scenes")).json();
+  scenes = list.scenes;
+  const select = $("scene");
+  select.innerHTML = "";
+  for (const s of scenes) {
+    const o = document.createElement("option");
+    o.value = o.textContent = s.name;
+    select.appendChild(o);
+  }
+  if (list.selected) select.value = list.selected;
+  sceneChanged();
+}
+
+function sceneChanged() {
+  const s = scenes.find(x => x.name === $("scene").value);
+  $("param").value = s?.param ?? "";
+  $("param").title = s?.tooltip ?? "";
+  $("param").placeholder = s?.tooltip ?? "";
+}
+
+function settings() {
+  const num = id => Number($(id).value);
+  const time = $("time").value.trim();
+  return {
+    width: num("width"), height: num("height"), samplesPerPixel: num("spp"), jitter: num("jitter"),
+    shadows: $("shadows").checked, reflections: $("reflections").checked, refractions: $("refractions").checked,
+    threads: num("threads"), seed: num("seed"), time: time === "" ? null : Number(time),
+  };
+}
+
+async function render() {
+  $("messages").textContent = "";
+  try {
+    await api("render", {
+      method: "POST", headers: { "Content-Type": "application/json" },
+      body: JSON.stringify({ scene: $("scene").value, param: $("param").value, settings: settings() }),
+    });
+  } catch (e) {
+    $("messages").textContent = e.message;
+    return;
+  }
+  $("stop").disabled = false;
+  if (!polling) polling = setInterval(poll, 200);
+}
+
+async function poll() {
+  const s = await (await api("status")).json();
+  $("bar").style.width = (100 * s.fraction).toFixed(1) + "%";
+  $("elapsed").textContent = s.seconds.toFixed(1) + " s";
+  $("stats").textContent = s.statistics;
+  $("messages").textContent = [...s.notes, s.error].filter(Boolean).join("\n");
+  if (s.version !== shownVersion) await showImage(s.version);
+  if (!s.rendering) {
+    clearInterval(polling);
+    polling = null;
+    $("stop").disabled = true;
+    if (s.version !== shownVersion) await showImage(s.version);
+  }
+}
+
+async function showImage(version) {
+  const r = await api("image.png?v=" + version);
+  if (r.status === 404) return;
+  shownVersion = Number(r.headers.get("X-Image-Version"));
+  const bitmap = await createImageBitmap(await r.blob());
+  if (canvas.width !== bitmap.width || canvas.height !== bitmap.height) {
+    canvas.width = bitmap.width;
+    canvas.height = bitmap.height;
+  }
+  ctx.drawImage(bitmap, 0, 0);
+  place();
+}
+
+function place() { canvas.style.transform = `translate(${panX}px, ${panY}px) scale(${zoom})`; }
+
+function pixelAt(e) {
+  const box = $("view").getBoundingClientRect();
+  return { x: Math.floor((e.clientX - box.left - panX) / zoom), y: Math.floor((e.clientY - box.top - panY) / zoom) };
+}
+
+$("view").addEventListener("wheel", e => {
+  // Zoom about the cursor, 1/8 to 64.
+  e.preventDefault();
+  const box = $("view").getBoundingClientRect(), cx = e.clientX - box.left, cy = e.clientY - box.top;
+  const next = Math.min(64, Math.max(1 / 8, zoom * (e.deltaY < 0 ? 1.25 : 0.8)));
+  panX = cx - (cx - panX) * next / zoom;
+  panY = cy - (cy - panY) * next / zoom;
+  zoom = next;
+  place();
+}, { passive: false });
+$("view").addEventListener("mousedown", e => { drag = { x: e.clientX, y: e.clientY, moved: false }; });
+window.addEventListener("mouseup", e => {
+  if (drag && !drag.moved) probe(pixelAt(e));
+  drag = null;
+});
+$("view").addEventListener("mousemove", e => {
+  if (drag) {
+    if (Math.abs(e.clientX - drag.x) + Math.abs(e.clientY - drag.y) > 2) drag.moved = true;
+    panX += e.clientX - drag.x;
+    panY += e.clientY - drag.y;
+    drag.x = e.clientX;
+    drag.y = e.clientY;
+    place();
+    return;
+  }
+  const p = pixelAt(e);
+  if (p.x < 0 || p.y < 0 || p.x >= canvas.width || p.y >= canvas.height) return;
+  const d = ctx.getImageData(p.x, p.y, 1, 1).data;
+  $("readout").textContent = `[${p.x}, ${p.y}] = (${d[0]}, ${d[1]}, ${d[2]})`;
+});
+window.addEventListener("keydown", e => { if (e.key === "r" && e.target === document.body) { zoom = 1; panX = panY = 0; place(); } });
+
+async function probe(p) {
+  if (p.x < 0 || p.y < 0 || p.x >= canvas.width || p.y >= canvas.height) return;
+  try {
+    const r = await (await api(`probe?x=${p.x}&y=${p.y}`)).json();
+    const f = v => v ? "(" + v.map(c => c.toFixed(3)).join(", ") + ")" : "-";
+    const lines = [`pixel [${r.x}, ${r.y}] ${f(r.pixel)}, hash ${r.hash}`];
+    const walk = (n, indent) => {
+      lines.push(`${indent}${n.kind} ${n.solid ?? (n.blocked ? "blocked" : "miss")} at ${f(n.hit)}`);
+      for (const c of n.children) walk(c, indent + "  ");
+    };
+    if (r.rays) walk(r.rays, "");
+    $("rays").textContent = lines.join("\n");
+  } catch (e) {
+    $("messages").textContent = e.message;
+  }
+}
+
+$("scene").addEventListener("change", sceneChanged);
+$("render").addEventListener("click", render);
+$("stop").addEventListener("click", () => api("stop", { method: "POST" }));
+loadScenes().catch(e => { $("messages").textContent = e.message; });

@@ -1,0 +1,25 @@
+using System.Collections.Generic;
+
+namespace GrCis.Studio;
+
+/// <summary>How <c>grcis studio</c> was started: where it listens, its token, and the scripts and folders it may read.</summary>
+public sealed record StudioOptions
+{
+  /// <summary>Address to bind; loopback by default, so only this machine (or an <c>ssh -L</c> tunnel) reaches it.</summary>
+  public string Host { get; init; } = "127.0.0.1";
+
+  /// <summary>Port; 0 = a free one.</summary>
+  public int Port { get; init; }
+
+  /// <summary>The token every request must carry; null = a new random one.</summary>
+  public string? Token { get; init; }
+
+  /// <summary>Scene scripts and folders given on the command line: the only files the studio reads or writes.</summary>
+  public IReadOnlyList<string> Paths { get; init; } = [];
+
+  /// <summary>Leave the built-in scenes out of the scene list (GrCis's <c>-nodefault</c>).</summary>
+  public bool NoDefault { get; init; }
+
+  /// <summary>True when <see cref="Host"/> is a loopback address (or <c>localhost</c>).</summary>
+  public bool IsLoopback => Host is "127.0.0.1" or "localhost" or "::1" or "[::1]";
+}

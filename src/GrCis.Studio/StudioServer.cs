@@ -1,0 +1,116 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using System.Net;
+using System.Text.Json.Serialization;
+using System.Threading;
+using System.Threading.Tasks;
+using GrCis.Interactive;
+using Microsoft.AspNetCore.Builder;
+using Microsoft.AspNetCore.Hosting;
+using Microsoft.AspNetCore.Hosting.Server;
+using Microsoft.AspNetCore.Hosting.Server.Features;
+using Microsoft.AspNetCore.Http.Json;
+using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.Logging;
+
+namespace GrCis.Studio;
+
+/// <summary>
+/// <c>grcis studio</c>: the interactive demo as a local web page. One Kestrel server on <see cref="StudioOptions.Host"/>
+/// (loopback by default) serves the page from the assembly and a small JSON/PNG API over one
+/// <see cref="DemoController"/>, behind the <see cref="AccessGuard"/>.
+/// </summary>
+public sealed class StudioServer : IAsyncDisposable
+{
+  readonly WebApplication app;
+
+  StudioServer(WebApplication app, StudioSession session, string token, string url)
+  {
+    this.app = app;
+    Session = session;
+    Token = token;
+    Url = url;
+  }
+
+  public StudioSession Session { get; }
+
+  public string Token { get; }
+
+  /// <summary>The address to open, token included.</summary>
+  public string Url { get; }
+
+  /// <summary>Port the server listens on (the free one chosen for <c>--port 0</c>).</summary>
+  public int Port => new Uri(Url).Port;
+
+  /// <summary>Starts listening; returns when the server accepts requests.</summary>
+  /// <param name="problems">Where command-line problems go (a missing script or folder); the rest still loads.</param>
+  public static async Task<StudioServer> StartAsync(StudioOptions options, ICollection<string> problems, CancellationToken cancel = default)
+  {
+    ArgumentNullException.ThrowIfNull(options);
+    var args = new List<string>();
+    foreach (string p in options.Paths)
+    {
+      args.Add(System.IO.Directory.Exists(p) ? "-dir" : "-scene");
+      args.Add(p);
+    }
+    if (options.NoDefault)
+      args.Add("-nodefault");
+    var controller = DemoController.FromCommandLine(args, new ScriptHostEvaluator(), problems);
+    var session = new StudioSession(controller);
+    string token = options.Token ?? AccessGuard.NewToken();
+
+    WebApplicationBuilder builder = WebApplication.CreateSlimBuilder();
+    builder.Logging.ClearProviders();
+    builder.WebHost.ConfigureKestrel(k =>
+    {
+      if (options.Host == "localhost")
+        k.ListenLocalhost(options.Port);
+      else
+        k.Listen(IPAddress.Parse(options.Host.Trim('[', ']')), options.Port);
+    });
+    builder.Services.Configure<JsonOptions>(o => o.SerializerOptions.Converters.Add(new JsonStringEnumConverter()));
+    builder.Services.AddSingleton(session);
+    builder.Services.AddSingleton(new AllowedFiles(options.Paths));
+    WebApplication app = builder.Build();
+
+    // The port is known only once Kestrel listens (--port 0): the guard reads the hosts it allows then.
+    AccessGuard? guard = null;
+    app.Use((context, next) =>
+    {
+      if (Volatile.Read(ref guard) is AccessGuard g)
+        return g.InvokeAsync(context, _ => next());
+      context.Response.StatusCode = Microsoft.AspNetCore.Http.StatusCodes.Status503ServiceUnavailable;
+      return Task.CompletedTask;
+    });
+    StudioApi.Map(app);
+    await app.StartAsync(cancel).ConfigureAwait(false);
+
+    int port = app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses
+      .Select(a => new Uri(a.Replace("+", "localhost", StringComparison.Ordinal).Replace("*", "localhost", StringComparison.Ordinal)).Port).First();
+    bool anyAddress = options.Host is "0.0.0.0" or "::" or "[::]";
+    Volatile.Write(ref guard, new AccessGuard(token, AccessGuard.HostsFor(options.Host, port, options.IsLoopback), anyAddress ? port : 0));
+    string shown = options.IsLoopback ? "127.0.0.1" : options.Host.Contains(':') && !options.Host.StartsWith('[') ? $"[{options.Host}]" : options.Host;
+    return new StudioServer(app, session, token, $"http://{shown}:{port}/?token={token}");
+  }
+
+  /// <summary>Runs until <paramref name="cancel"/> is signalled (Ctrl+C), then stops the render and the server.</summary>
+  public async Task WaitAsync(CancellationToken cancel)
+  {
+    try
+    {
+      await Task.Delay(Timeout.Infinite, cancel).ConfigureAwait(false);
+    }
+    catch (OperationCanceledException)
+    {
+    }
+  }
+
+  public async ValueTask DisposeAsync()
+  {
+    Session.Controller.Stop();
+    await app.StopAsync().ConfigureAwait(false);
+    await app.DisposeAsync().ConfigureAwait(false);
+    Session.Dispose();
+  }
+}

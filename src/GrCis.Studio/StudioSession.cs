@@ -1,0 +1,112 @@
+using System;
+using System.Collections.Generic;
+using GrCis.Hosting;
+using GrCis.Interactive;
+using Rendering.Imaging;
+
+namespace GrCis.Studio;
+
+/// <summary>
+/// The demo's logic (<see cref="DemoController"/>) as the page sees it: the latest image (a preview while
+/// rendering, the final image after), a version number that changes with it, and the state of the render.
+/// The page polls <see cref="Status"/> and fetches the image when its version changes.
+/// </summary>
+public sealed class StudioSession : IDisposable
+{
+  readonly object sync = new();
+  FloatImage? image;
+  double gamma = 1.0;
+  int version;
+  double fraction;
+  TimeSpan elapsed;
+  string? error;
+  string statistics = "";
+  bool finished;
+
+  public StudioSession(DemoController controller)
+  {
+    Controller = controller ?? throw new ArgumentNullException(nameof(controller));
+    // At least two previews a second while tiles come in.
+    Controller.PreviewInterval = TimeSpan.FromMilliseconds(250);
+    Controller.PreviewReady += (_, e) => Show(e.Image, e.Gamma, e.Fraction, final: false);
+    Controller.ProgressChanged += (_, e) =>
+    {
+      lock (sync)
+      {
+        fraction = e.Fraction;
+        elapsed = e.Elapsed;
+      }
+    };
+    Controller.RenderCompleted += (_, e) =>
+    {
+      lock (sync)
+        statistics = e.Result.Statistics.ToString();
+      Show(e.Result.Image, e.Result.Gamma, 1.0, final: true);
+    };
+    Controller.Error += (_, message) =>
+    {
+      lock (sync)
+        error = message;
+    };
+  }
+
+  public DemoController Controller { get; }
+
+  /// <summary>Starts rendering <paramref name="entry"/> with <paramref name="param"/> and <paramref name="settings"/>, stopping any render in progress.</summary>
+  public void Render(SceneEntry entry, string param, RenderSettings settings)
+  {
+    lock (sync)
+    {
+      error = null;
+      statistics = "";
+      fraction = 0.0;
+      elapsed = TimeSpan.Zero;
+      finished = false;
+    }
+    entry.ParameterText = param;
+    Controller.Selected = entry;
+    Controller.Settings = settings;
+    _ = Controller.RenderAsync().ContinueWith(t =>
+    {
+      lock (sync)
+      {
+        finished = true;
+        if (t.Exception != null)
+          error = t.Exception.GetBaseException().Message;
+      }
+    }, System.Threading.Tasks.TaskScheduler.Default);
+  }
+
+  void Show(FloatImage shown, double g, double done, bool final)
+  {
+    lock (sync)
+    {
+      image = shown;
+      gamma = g;
+      fraction = done;
+      version++;
+      if (final)
+        finished = true;
+    }
+  }
+
+  /// <summary>What the page shows about the render now.</summary>
+  public StudioStatus Status()
+  {
+    lock (sync)
+      return new StudioStatus(Controller.IsRendering && !finished, version, fraction, elapsed.TotalSeconds, statistics, error,
+                              Controller.LastJob?.Notes ?? Array.Empty<string>());
+  }
+
+  /// <summary>The image now on show as the 8-bit display image (gamma applied, quantised as <c>grcis render</c> saves it).</summary>
+  public (Rgb8Image Image, int Version)? DisplayImage()
+  {
+    lock (sync)
+      return image == null ? null : (Rendering.Execution.RenderSetup.ToDisplayImage(image, gamma), version);
+  }
+
+  /// <summary>The final linear image of the last finished render, or null.</summary>
+  public FloatImage? FinalImage() => Controller.LastResult?.Image;
+
+  public void Dispose() => Controller.Dispose();
+}

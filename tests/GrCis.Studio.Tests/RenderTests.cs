@@ -1,0 +1,82 @@
+using System;
+using System.IO;
+using System.Net;
+using System.Net.Http;
+using System.Net.Http.Json;
+using System.Text.Json;
+using System.Threading;
+using System.Threading.Tasks;
+using GrCis.Cli;
+
+namespace GrCis.Studio.Tests;
+
+/// <summary>Rendering through the studio: the final image is <c>grcis render</c>'s, byte for byte; probe, errors, scripts.</summary>
+public sealed class RenderTests(StudioFixture studio) : IClassFixture<StudioFixture>
+{
+  async Task<JsonElement> RenderAndWait(object body)
+  {
+    using HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", body);
+    Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    var deadline = DateTime.UtcNow + TimeSpan.FromSeconds(60);
+    while (DateTime.UtcNow < deadline)
+    {
+      JsonElement status = await studio.Client.GetFromJsonAsync<JsonElement>("/api/status");
+      if (!status.GetProperty("rendering").GetBoolean() && status.GetProperty("statistics").GetString() is { Length: > 0 })
+        return status;
+      await Task.Delay(50);
+    }
+    throw new TimeoutException("the studio's render did not finish");
+  }
+
+  [Fact]
+  public async Task The_final_image_equals_grcis_renders_png_byte_for_byte()
+  {
+    await RenderAndWait(new { scene = "Five balls", settings = new { width = 80, height = 60, samplesPerPixel = 4, threads = 2 } });
+    byte[] fromStudio = await studio.Client.GetByteArrayAsync("/api/image.png");
+
+    string png = Path.Combine(studio.Folder, "cli.png");
+    var output = new StringWriter();
+    int code = Program.Run(["render", "Five balls", "--size", "80x60", "--spp", "4", "-t", "2", "-q", "-o", png], output, new StringWriter());
+    Assert.Equal(0, code);
+    Assert.Equal(File.ReadAllBytes(png), fromStudio);
+
+    byte[] pfm = await studio.Client.GetByteArrayAsync("/api/image.pfm");
+    Assert.StartsWith("PF", System.Text.Encoding.ASCII.GetString(pfm, 0, 2));
+  }
+
+  [Fact]
+  public async Task A_clicked_pixel_gives_its_colour_hash_and_ray_tree()
+  {
+    await RenderAndWait(new { scene = "Five balls", settings = new { width = 64, height = 48 } });
+    JsonElement probe = await studio.Client.GetFromJsonAsync<JsonElement>("/api/probe?x=32&y=24");
+    Assert.Equal(3, probe.GetProperty("pixel").GetArrayLength());
+    JsonElement root = probe.GetProperty("rays");
+    Assert.Equal("Primary", root.GetProperty("kind").GetString());
+    Assert.Equal(3, root.GetProperty("origin").GetArrayLength());
+    Assert.True(root.GetProperty("children").GetArrayLength() > 0, "a hit on Five balls spawns shadow or secondary rays");
+  }
+
+  [Fact]
+  public async Task A_setting_out_of_range_is_refused_with_its_name()
+  {
+    using HttpResponseMessage r = await studio.Client.PostAsJsonAsync("/api/render", new { scene = "Five balls", settings = new { width = 0, height = 48 } });
+    Assert.Equal(HttpStatusCode.BadRequest, r.StatusCode);
+    Assert.Contains("Size 0x48", await r.Content.ReadAsStringAsync());
+    using HttpResponseMessage missing = await studio.Client.PostAsJsonAsync("/api/render", new { scene = "No such scene" });
+    Assert.Equal(HttpStatusCode.NotFound, missing.StatusCode);
+  }
+
+  [Fact]
+  public async Task Scripts_of_the_given_folder_are_listed_and_render()
+  {
+    JsonElement list = await studio.Client.GetFromJsonAsync<JsonElement>("/api/scenes");
+    bool found = false;
+    foreach (JsonElement s in list.GetProperty("scenes").EnumerateArray())
+      found |= s.GetProperty("file").GetString() == "Balls.cs";
+    Assert.True(found, list.ToString());
+    JsonElement status = await RenderAndWait(new { scene = "Balls", settings = new { width = 32, height = 24 } });
+    Assert.True(status.GetProperty("error").ValueKind == JsonValueKind.Null, status.ToString());
+    string source = await studio.Client.GetStringAsync("/api/source?scene=Balls");
+    Assert.Contains("FiveBalls", source);
+  }
+}

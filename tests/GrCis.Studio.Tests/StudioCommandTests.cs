@@ -1,0 +1,61 @@
+using System;
+using System.IO;
+using System.Net;
+using System.Net.Http;
+using System.Threading;
+using System.Threading.Tasks;
+using GrCis.Cli;
+
+namespace GrCis.Studio.Tests;
+
+/// <summary><c>grcis studio</c>: one line with the URL on stdout, serves until Ctrl+C, then exits 130.</summary>
+public class StudioCommandTests
+{
+  [Fact]
+  public async Task Studio_prints_its_url_serves_and_exits_130_on_ctrl_c()
+  {
+    var output = new StringWriter();
+    var error = new StringWriter();
+    using var cancel = new CancellationTokenSource();
+    var env = new CliEnvironment(TextWriter.Synchronized(output), TextWriter.Synchronized(error)) { Cancel = cancel.Token };
+    Task<int> run = Task.Run(() => Program.Run(["studio", "--port", "0", "--no-open"], env));
+
+    string url = "";
+    for (int i = 0; i < 300 && url.Length == 0 && !run.IsCompleted; i++)
+    {
+      await Task.Delay(50);
+      url = output.ToString().Trim();
+    }
+    Assert.Matches(@"^http://127\.0\.0\.1:\d+/\?token=[0-9a-f]{32}$", url);
+    using (var client = new HttpClient())
+    {
+      using HttpResponseMessage page = await client.GetAsync(url);
+      Assert.Equal(HttpStatusCode.OK, page.StatusCode);
+    }
+
+    cancel.Cancel();
+    Assert.Equal(130, await run.WaitAsync(TimeSpan.FromSeconds(30)));
+    using var after = new HttpClient();
+    await Assert.ThrowsAsync<HttpRequestException>(() => after.GetAsync(url));
+  }
+
+  [Theory]
+  [InlineData("--port", "70000", "--port")]
+  [InlineData("--host", "not-an-address", "--host")]
+  public void Bad_options_are_usage_errors(string option, string value, string named)
+  {
+    var error = new StringWriter();
+    int code = Program.Run(["studio", option, value, "--no-open"], new StringWriter(), error);
+    Assert.Equal(2, code);
+    Assert.Contains(named, error.ToString());
+  }
+
+  [Fact]
+  public void A_missing_script_is_a_usage_error_naming_it()
+  {
+    var error = new StringWriter();
+    int code = Program.Run(["studio", "no-such-script.cs", "--no-open"], new StringWriter(), error);
+    Assert.Equal(2, code);
+    Assert.Contains("no-such-script.cs", error.ToString());
+  }
+}
