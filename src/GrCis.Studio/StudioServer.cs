@@ -84,7 +84,16 @@ public sealed class StudioServer : IAsyncDisposable
       return Task.CompletedTask;
     });
     StudioApi.Map(app);
-    await app.StartAsync(cancel).ConfigureAwait(false);
+    try
+    {
+      await app.StartAsync(cancel).ConfigureAwait(false);
+    }
+    catch
+    {
+      await app.DisposeAsync().ConfigureAwait(false);
+      session.Dispose();
+      throw;
+    }
 
     int port = app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses
       .Select(a => new Uri(a.Replace("+", "localhost", StringComparison.Ordinal).Replace("*", "localhost", StringComparison.Ordinal)).Port).First();

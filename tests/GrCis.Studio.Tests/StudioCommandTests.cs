@@ -58,4 +58,16 @@ public class StudioCommandTests
     Assert.Equal(2, code);
     Assert.Contains("no-such-script.cs", error.ToString());
   }
+
+  [Fact]
+  public void A_port_in_use_is_a_failure_naming_it()
+  {
+    using var taken = new System.Net.Sockets.TcpListener(IPAddress.Loopback, 0);
+    taken.Start();
+    int port = ((IPEndPoint)taken.LocalEndpoint).Port;
+    var error = new StringWriter();
+    int code = Program.Run(["studio", "--port", port.ToString(System.Globalization.CultureInfo.InvariantCulture), "--no-open"], new StringWriter(), error);
+    Assert.Equal(1, code);
+    Assert.Contains($"cannot listen on 127.0.0.1:{port}", error.ToString());
+  }
 }
