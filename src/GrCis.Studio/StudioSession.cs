@@ -55,6 +55,7 @@ public sealed class StudioSession : IDisposable
   /// <summary>Starts rendering <paramref name="entry"/> with <paramref name="param"/> and <paramref name="settings"/>, stopping any render in progress.</summary>
   public void Render(SceneEntry entry, string param, RenderSettings settings)
   {
+    Views = null;
     lock (sync)
     {
       error = null;
@@ -107,6 +108,16 @@ public sealed class StudioSession : IDisposable
 
   /// <summary>The final linear image of the last finished render, or null.</summary>
   public FloatImage? FinalImage() => Controller.LastResult?.Image;
+
+  /// <summary>The extra views of the last render, once computed (<see cref="ComputeViews"/>); a new render drops them.</summary>
+  public ExtraViews? Views { get; private set; }
+
+  /// <summary>Computes the depth, normal and ray maps of the last render.</summary>
+  /// <exception cref="InvalidOperationException">Nothing rendered yet, or a render is running.</exception>
+  public ExtraViews ComputeViews(System.Threading.CancellationToken cancel) => Views = Controller.ComputeExtraViews(cancel);
+
+  /// <summary>Shows a render of the history (back/forward).</summary>
+  public void ShowRecord(RenderRecord record) => Show(record.Image, record.Gamma, 1.0, final: true);
 
   public void Dispose() => Controller.Dispose();
 }

@@ -13,6 +13,8 @@ namespace GrCis.Studio.Tests;
 /// <summary>Rendering through the studio: the final image is <c>grcis render</c>'s, byte for byte; probe, errors, scripts.</summary>
 public sealed class RenderTests(StudioFixture studio) : IClassFixture<StudioFixture>
 {
+  internal static Task<JsonElement> RenderAndWait(StudioFixture studio, object body) => new RenderTests(studio).RenderAndWait(body);
+
   async Task<JsonElement> RenderAndWait(object body)
   {
     using HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", body);

@@ -60,6 +60,8 @@ internal static class StudioApi
         return Results.NotFound();
       return files.Allows(entry.Path) ? Results.Text(File.ReadAllText(entry.Path), "text/plain; charset=utf-8") : Results.StatusCode(StatusCodes.Status403Forbidden);
     });
+    ViewsApi.Map(app);
+    HistoryApi.Map(app);
     app.MapGet("/api/file", (string path, AllowedFiles files) =>
       !files.Allows(path) ? Results.StatusCode(StatusCodes.Status403Forbidden)
       : File.Exists(path) ? Results.Text(File.ReadAllText(path), "text/plain; charset=utf-8")

@@ -6,6 +6,7 @@ const $ = id => document.getElementById(id);
 const canvas = $("canvas"), ctx = canvas.getContext("2d");
 let scenes = [], shownVersion = -1, polling = null;
 let zoom = 1, panX = 0, panY = 0, drag = null;
+let viewsFor = -1, hoverTimer = null;
 
 async function api(path, options) {
   const r = await fetch("api/" + path, options);
@@ -50,6 +51,8 @@ function settings() {
 
 async function render() {
   $("messages").textContent = "";
+  $("view-kind").value = "";
+  $("viewDownloads").hidden = true;
   try {
     await api("render", {
       method: "POST", headers: { "Content-Type": "application/json" },
@@ -75,14 +78,60 @@ async function poll() {
     polling = null;
     $("stop").disabled = true;
     if (s.version !== shownVersion) await showImage(s.version);
+    await loadHistory();
+  }
+}
+
+async function loadHistory(list) {
+  const h = list ?? await (await api("history")).json();
+  $("back").disabled = !h.canGoBack;
+  $("forward").disabled = !h.canGoForward;
+  $("historyLabel").textContent = h.position >= 0 ? `${h.position + 1}/${h.items.length}: ${h.items[h.position].label}` : "";
+}
+
+async function moveHistory(direction) {
+  try {
+    const h = await (await api("history/" + direction, { method: "POST" })).json();
+    await loadHistory(h);
+    viewsFor = -1;
+    const s = await (await api("status")).json();
+    await showImage(s.version);
+  } catch (e) {
+    $("messages").textContent = e.message;
+  }
+}
+
+async function showView() {
+  const kind = $("view-kind").value;
+  $("viewDownloads").hidden = kind === "";
+  if (kind === "") return showImage(-1);
+  try {
+    if (viewsFor !== shownVersion) {
+      $("messages").textContent = "computing the extra views…";
+      await api("views", { method: "POST" });
+      viewsFor = shownVersion;
+      $("messages").textContent = "";
+    }
+    $("viewPng").href = `api/views/${kind}.png`;
+    $("viewPng").download = kind.toLowerCase() + ".png";
+    $("viewCsv").href = `api/views/${kind}.csv`;
+    $("viewCsv").download = kind.toLowerCase() + ".csv";
+    await draw(await api(`views/${kind}.png?v=${viewsFor}`));
+  } catch (e) {
+    $("messages").textContent = e.message;
   }
 }
 
 async function showImage(version) {
+  if ($("view-kind").value !== "") return showView();
   const r = await api("image.png?v=" + version);
   if (r.status === 404) return;
   shownVersion = Number(r.headers.get("X-Image-Version"));
-  const bitmap = await createImageBitmap(await r.blob());
+  await draw(r);
+}
+
+async function draw(response) {
+  const bitmap = await createImageBitmap(await response.blob());
   if (canvas.width !== bitmap.width || canvas.height !== bitmap.height) {
     canvas.width = bitmap.width;
     canvas.height = bitmap.height;
@@ -125,6 +174,16 @@ $("view").addEventListener("mousemove", e => {
   }
   const p = pixelAt(e);
   if (p.x < 0 || p.y < 0 || p.x >= canvas.width || p.y >= canvas.height) return;
+  const kind = $("view-kind").value;
+  if (kind !== "") {
+    // The view's value under the cursor comes from the server, at most every 100 ms.
+    clearTimeout(hoverTimer);
+    hoverTimer = setTimeout(async () => {
+      const r = await api(`views/value?kind=${kind}&x=${p.x}&y=${p.y}`);
+      if (r.ok) $("readout").textContent = `[${p.x}, ${p.y}] ${(await r.json()).text}`;
+    }, 100);
+    return;
+  }
   const d = ctx.getImageData(p.x, p.y, 1, 1).data;
   $("readout").textContent = `[${p.x}, ${p.y}] = (${d[0]}, ${d[1]}, ${d[2]})`;
 });
@@ -148,6 +207,9 @@ async function probe(p) {
 }
 
 $("scene").addEventListener("change", sceneChanged);
+$("view-kind").addEventListener("change", showView);
+$("back").addEventListener("click", () => moveHistory("back"));
+$("forward").addEventListener("click", () => moveHistory("forward"));
 $("render").addEventListener("click", render);
 $("stop").addEventListener("click", () => api("stop", { method: "POST" }));
 loadScenes().catch(e => { $("messages").textContent = e.message; });
