@@ -21,13 +21,18 @@ public sealed class StudioSession : IDisposable
   TimeSpan elapsed;
   string? error;
   string statistics = "";
-  bool finished;
+  bool busy;
+  IReadOnlyList<ScriptError> diagnostics = Array.Empty<ScriptError>();
 
   public StudioSession(DemoController controller)
   {
     Controller = controller ?? throw new ArgumentNullException(nameof(controller));
     // At least two previews a second while tiles come in.
     Controller.PreviewInterval = TimeSpan.FromMilliseconds(250);
+    // A script saved by the page or by another editor re-renders (see the source endpoint).
+    Controller.WatchDebounce = TimeSpan.FromMilliseconds(100);
+    Controller.WatchScript = true;
+    Controller.ScriptChanged += (_, _) => Started();
     Controller.PreviewReady += (_, e) => Show(e.Image, e.Gamma, e.Fraction, final: false);
     Controller.ProgressChanged += (_, e) =>
     {
@@ -46,7 +51,11 @@ public sealed class StudioSession : IDisposable
     Controller.Error += (_, message) =>
     {
       lock (sync)
+      {
         error = message;
+        diagnostics = ScriptErrors.Parse(message);
+        busy = false;
+      }
     };
   }
 
@@ -55,15 +64,7 @@ public sealed class StudioSession : IDisposable
   /// <summary>Starts rendering <paramref name="entry"/> with <paramref name="param"/> and <paramref name="settings"/>, stopping any render in progress.</summary>
   public void Render(SceneEntry entry, string param, RenderSettings settings)
   {
-    Views = null;
-    lock (sync)
-    {
-      error = null;
-      statistics = "";
-      fraction = 0.0;
-      elapsed = TimeSpan.Zero;
-      finished = false;
-    }
+    Started();
     entry.ParameterText = param;
     Controller.Selected = entry;
     Controller.Settings = settings;
@@ -71,11 +72,26 @@ public sealed class StudioSession : IDisposable
     {
       lock (sync)
       {
-        finished = true;
+        busy = false;
         if (t.Exception != null)
           error = t.Exception.GetBaseException().Message;
       }
     }, System.Threading.Tasks.TaskScheduler.Default);
+  }
+
+  // A render is starting (asked by the page, or a watched script changed): its state starts afresh.
+  void Started()
+  {
+    Views = null;
+    lock (sync)
+    {
+      error = null;
+      diagnostics = Array.Empty<ScriptError>();
+      statistics = "";
+      fraction = 0.0;
+      elapsed = TimeSpan.Zero;
+      busy = true;
+    }
   }
 
   void Show(FloatImage shown, double g, double done, bool final)
@@ -87,7 +103,7 @@ public sealed class StudioSession : IDisposable
       fraction = done;
       version++;
       if (final)
-        finished = true;
+        busy = false;
     }
   }
 
@@ -95,8 +111,8 @@ public sealed class StudioSession : IDisposable
   public StudioStatus Status()
   {
     lock (sync)
-      return new StudioStatus(Controller.IsRendering && !finished, version, fraction, elapsed.TotalSeconds, statistics, error,
-                              Controller.LastJob?.Notes ?? Array.Empty<string>());
+      return new StudioStatus(busy, version, fraction, elapsed.TotalSeconds, statistics, error,
+                              Controller.LastJob?.Notes ?? Array.Empty<string>(), diagnostics);
   }
 
   /// <summary>The image now on show as the 8-bit display image (gamma applied, quantised as <c>grcis render</c> saves it).</summary>

@@ -21,6 +21,8 @@ internal static class StudioApi
     app.MapGet("/", () => Page("index.html", "text/html; charset=utf-8"));
     app.MapGet("/app.js", () => Page("app.js", "text/javascript; charset=utf-8"));
     app.MapGet("/app.css", () => Page("app.css", "text/css; charset=utf-8"));
+    app.MapGet("/vendor/{file}", (string file) =>
+      Page("vendor/" + file, file.EndsWith(".css", StringComparison.Ordinal) ? "text/css; charset=utf-8" : "text/javascript; charset=utf-8"));
 
     app.MapGet("/api/scenes", (StudioSession s) => new
     {
@@ -62,6 +64,18 @@ internal static class StudioApi
     });
     ViewsApi.Map(app);
     HistoryApi.Map(app);
+    app.MapPut("/api/source", async (string scene, HttpRequest request, StudioSession s, AllowedFiles files) =>
+    {
+      SceneEntry? entry = s.Controller.Catalog.Find(scene);
+      if (entry?.Path == null)
+        return Results.NotFound();
+      if (!files.Allows(entry.Path))
+        return Results.StatusCode(StatusCodes.Status403Forbidden);
+      using var reader = new StreamReader(request.Body, System.Text.Encoding.UTF8);
+      SaveAtomically(entry.Path, await reader.ReadToEndAsync());
+      // The script's watcher re-renders it (as for a save from any other editor).
+      return Results.NoContent();
+    });
     app.MapGet("/api/file", (string path, AllowedFiles files) =>
       !files.Allows(path) ? Results.StatusCode(StatusCodes.Status403Forbidden)
       : File.Exists(path) ? Results.Text(File.ReadAllText(path), "text/plain; charset=utf-8")
@@ -123,6 +137,14 @@ internal static class StudioApi
     blocked = n.Blocked,
     children = n.Children.Select(RayJson).ToArray(),
   };
+
+  /// <summary>Writes the whole text to a temporary file beside <paramref name="path"/>, then moves it over: never half a script.</summary>
+  static void SaveAtomically(string path, string text)
+  {
+    string temp = path + ".grcis-save";
+    File.WriteAllText(temp, text);
+    File.Move(temp, path, overwrite: true);
+  }
 
   static IResult Page(string name, string type)
   {

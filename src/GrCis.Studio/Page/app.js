@@ -7,6 +7,7 @@ const canvas = $("canvas"), ctx = canvas.getContext("2d");
 let scenes = [], shownVersion = -1, polling = null;
 let zoom = 1, panX = 0, panY = 0, drag = null;
 let viewsFor = -1, hoverTimer = null;
+let editor = null, editedScene = null, marks = [];
 
 async function api(path, options) {
   const r = await fetch("api/" + path, options);
@@ -34,6 +35,7 @@ async function loadScenes() {
 
 function sceneChanged() {
   const s = scenes.find(x => x.name === $("scene").value);
+  $("edit").hidden = !s?.file;
   $("param").value = s?.param ?? "";
   $("param").title = s?.tooltip ?? "";
   $("param").placeholder = s?.tooltip ?? "";
@@ -63,7 +65,18 @@ async function render() {
     return;
   }
   $("stop").disabled = false;
-  if (!polling) polling = setInterval(poll, 200);
+  pollSoon(0);
+}
+
+// One polling loop: five times a second while something runs, once a second otherwise (a script saved by
+// another editor re-renders on the server, and the page follows).
+function pollSoon(ms) {
+  clearTimeout(polling);
+  polling = setTimeout(async () => {
+    let busy = false;
+    try { busy = await poll(); } catch { }
+    pollSoon(busy ? 200 : 1000);
+  }, ms);
 }
 
 async function poll() {
@@ -72,14 +85,61 @@ async function poll() {
   $("elapsed").textContent = s.seconds.toFixed(1) + " s";
   $("stats").textContent = s.statistics;
   $("messages").textContent = [...s.notes, s.error].filter(Boolean).join("\n");
-  if (s.version !== shownVersion) await showImage(s.version);
-  if (!s.rendering) {
-    clearInterval(polling);
-    polling = null;
-    $("stop").disabled = true;
-    if (s.version !== shownVersion) await showImage(s.version);
-    await loadHistory();
+  showDiagnostics(s.diagnostics);
+  $("stop").disabled = !s.rendering;
+  if (s.version !== shownVersion && s.version > 0) {
+    await showImage(s.version);
+    if (!s.rendering) await loadHistory();
   }
+  return s.rendering;
+}
+
+function showDiagnostics(list) {
+  if (!editor) return;
+  for (const m of marks) m.clear ? m.clear() : editor.removeLineClass(m, "background", "line-error");
+  marks = [];
+  const ul = $("diagnostics");
+  ul.innerHTML = "";
+  for (const d of list) {
+    const line = d.line - 1, ch = Math.max(0, d.column - 1);
+    marks.push(editor.addLineClass(line, "background", "line-error"));
+    marks.push(editor.markText({ line, ch }, { line, ch: ch + 1 }, { className: "cm-diagnostic", title: d.message }));
+    const li = document.createElement("li");
+    li.textContent = `${d.line}:${d.column} ${d.severity} ${d.id}: ${d.message}`;
+    li.dataset.line = d.line;
+    li.dataset.column = d.column;
+    li.addEventListener("click", () => { editor.setCursor({ line, ch }); editor.focus(); });
+    ul.appendChild(li);
+  }
+}
+
+async function openEditor() {
+  const name = $("scene").value;
+  const r = await api("source?scene=" + encodeURIComponent(name));
+  if (!r.ok) { $("messages").textContent = `${name} is not a script file`; return; }
+  const text = await r.text();
+  $("editorPane").hidden = false;
+  $("editorName").textContent = scenes.find(x => x.name === name)?.file ?? name;
+  if (!editor) {
+    editor = CodeMirror($("editor"), { value: text, mode: "text/x-csharp", lineNumbers: true, indentUnit: 2, tabSize: 2 });
+    editor.setOption("extraKeys", { "Ctrl-S": save, "Cmd-S": save });
+  } else {
+    editor.setValue(text);
+  }
+  editedScene = name;
+}
+
+async function save() {
+  if (!editor || !editedScene) return;
+  try {
+    await api("source?scene=" + encodeURIComponent(editedScene), {
+      method: "PUT", headers: { "Content-Type": "text/plain; charset=utf-8" }, body: editor.getValue(),
+    });
+    $("messages").textContent = "saved; compiling…";
+  } catch (e) {
+    $("messages").textContent = e.message;
+  }
+  pollSoon(150);
 }
 
 async function loadHistory(list) {
@@ -208,8 +268,14 @@ async function probe(p) {
 
 $("scene").addEventListener("change", sceneChanged);
 $("view-kind").addEventListener("change", showView);
+$("edit").addEventListener("click", openEditor);
+$("save").addEventListener("click", save);
+$("closeEditor").addEventListener("click", () => { $("editorPane").hidden = true; });
+document.addEventListener("keydown", e => {
+  if ((e.ctrlKey || e.metaKey) && e.key === "s") { e.preventDefault(); save(); }
+});
 $("back").addEventListener("click", () => moveHistory("back"));
 $("forward").addEventListener("click", () => moveHistory("forward"));
 $("render").addEventListener("click", render);
 $("stop").addEventListener("click", () => api("stop", { method: "POST" }));
-loadScenes().catch(e => { $("messages").textContent = e.message; });
+loadScenes().then(() => pollSoon(0)).catch(e => { $("messages").textContent = e.message; });
