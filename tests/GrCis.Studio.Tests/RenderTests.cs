@@ -59,6 +59,19 @@ public sealed class RenderTests(StudioFixture studio) : IClassFixture<StudioFixt
   }
 
   [Fact]
+  public async Task The_ray_view_gets_the_scenes_bounding_boxes_and_its_script_from_the_studio()
+  {
+    await RenderAndWait(new { scene = "Five balls", settings = new { width = 32, height = 24 } });
+    JsonElement boxes = await studio.Client.GetFromJsonAsync<JsonElement>("/api/scene/boxes");
+    Assert.True(boxes.GetArrayLength() >= 5, boxes.ToString());   // the five balls at least
+    foreach (JsonElement b in boxes.EnumerateArray())
+      for (int i = 0; i < 3; i++)
+        Assert.True(b.GetProperty("min")[i].GetDouble() <= b.GetProperty("max")[i].GetDouble());
+    Assert.Contains("RayView", await studio.Client.GetStringAsync("/rays3d.js"));
+    Assert.Contains("WebGLRenderer", await studio.Client.GetStringAsync("/vendor/three.min.js"));
+  }
+
+  [Fact]
   public async Task A_setting_out_of_range_is_refused_with_its_name()
   {
     using HttpResponseMessage r = await studio.Client.PostAsJsonAsync("/api/render", new { scene = "Five balls", settings = new { width = 0, height = 48 } });

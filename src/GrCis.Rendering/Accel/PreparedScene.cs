@@ -68,6 +68,19 @@ public sealed partial class PreparedScene : ISceneQuery
   /// <summary>Queries of this snapshot answered by the faithful path because the fast rule did not apply.</summary>
   public long FallbackCount => Interlocked.Read(ref fallbacks);
 
+  /// <summary>
+  /// The world bounding boxes of the members that have a finite one (solids, CSG subtrees; not planes or
+  /// other unbounded members), in member order: what a ray visualiser draws as the scene.
+  /// </summary>
+  public IReadOnlyList<(Vector3d Min, Vector3d Max)> WorldBoxes()
+  {
+    var boxes = new List<(Vector3d, Vector3d)>();
+    foreach (PreparedMember m in members)
+      if (!m.WorldBox.IsEmpty && m.WorldBox.IsFinite && Math.Abs(m.WorldBox.Max.X - m.WorldBox.Min.X) < SolidSupport.INFINITY_PLACEHOLDER)
+        boxes.Add((m.WorldBox.Min, m.WorldBox.Max));
+    return boxes;
+  }
+
   PreparedScene(IIntersectable? source, bool union, PreparedMember[] members, Matrix4d[] chain)
   {
     Source = source;

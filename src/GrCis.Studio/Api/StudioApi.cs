@@ -19,10 +19,13 @@ internal static class StudioApi
   public static void Map(WebApplication app)
   {
     app.MapGet("/", () => Page("index.html", "text/html; charset=utf-8"));
-    app.MapGet("/app.js", () => Page("app.js", "text/javascript; charset=utf-8"));
-    app.MapGet("/app.css", () => Page("app.css", "text/css; charset=utf-8"));
-    app.MapGet("/vendor/{file}", (string file) =>
-      Page("vendor/" + file, file.EndsWith(".css", StringComparison.Ordinal) ? "text/css; charset=utf-8" : "text/javascript; charset=utf-8"));
+    app.MapGet("/{file}", (string file) => Page(file, ContentType(file)));
+    app.MapGet("/vendor/{file}", (string file) => Page("vendor/" + file, ContentType(file)));
+    app.MapGet("/api/scene/boxes", (StudioSession s) =>
+      s.Controller.LastJob is { } job
+        ? Results.Ok(Rendering.Accel.PreparedScene.Prepare(job.Scene.Intersectable).WorldBoxes()
+            .Select(b => new { min = new[] { b.Min.X, b.Min.Y, b.Min.Z }, max = new[] { b.Max.X, b.Max.Y, b.Max.Z } }))
+        : Results.NotFound(new { error = "render something first" }));
 
     app.MapGet("/api/scenes", (StudioSession s) => new
     {
@@ -145,6 +148,12 @@ internal static class StudioApi
     File.WriteAllText(temp, text);
     File.Move(temp, path, overwrite: true);
   }
+
+  static string ContentType(string file) =>
+    file.EndsWith(".css", StringComparison.Ordinal) ? "text/css; charset=utf-8"
+    : file.EndsWith(".html", StringComparison.Ordinal) ? "text/html; charset=utf-8"
+    : file.EndsWith(".txt", StringComparison.Ordinal) ? "text/plain; charset=utf-8"
+    : "text/javascript; charset=utf-8";
 
   static IResult Page(string name, string type)
   {

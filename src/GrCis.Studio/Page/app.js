@@ -7,7 +7,7 @@ const canvas = $("canvas"), ctx = canvas.getContext("2d");
 let scenes = [], shownVersion = -1, polling = null;
 let zoom = 1, panX = 0, panY = 0, drag = null;
 let viewsFor = -1, hoverTimer = null;
-let editor = null, editedScene = null, marks = [];
+let editor = null, editedScene = null, marks = [], lastProbe = null;
 
 async function api(path, options) {
   const r = await fetch("api/" + path, options);
@@ -110,6 +110,15 @@ function showDiagnostics(list) {
     li.dataset.column = d.column;
     li.addEventListener("click", () => { editor.setCursor({ line, ch }); editor.focus(); });
     ul.appendChild(li);
+  }
+}
+
+async function show3d() {
+  try {
+    const boxes = await (await api("scene/boxes")).json();
+    RayView.show($("rays3d"), boxes, lastProbe?.rays);
+  } catch (e) {
+    $("messages").textContent = e.message;
   }
 }
 
@@ -261,6 +270,9 @@ async function probe(p) {
     };
     if (r.rays) walk(r.rays, "");
     $("rays").textContent = lines.join("\n");
+    lastProbe = r;
+    $("show3d").hidden = !r.rays;
+    if (!$("rays3dPane").hidden) await show3d();
   } catch (e) {
     $("messages").textContent = e.message;
   }
@@ -269,6 +281,7 @@ async function probe(p) {
 $("scene").addEventListener("change", sceneChanged);
 $("view-kind").addEventListener("change", showView);
 $("edit").addEventListener("click", openEditor);
+$("show3d").addEventListener("click", async () => { $("rays3dPane").hidden = !$("rays3dPane").hidden; if (!$("rays3dPane").hidden) await show3d(); });
 $("save").addEventListener("click", save);
 $("closeEditor").addEventListener("click", () => { $("editorPane").hidden = true; });
 document.addEventListener("keydown", e => {
