@@ -40,5 +40,63 @@ public static class MathHelper
     return (long)Math.Pow(2, Math.Ceiling(Math.Log2(Math.Max(n, 1))));
   }
 
-  public static bool ApproximatelyEqualEpsilon(double a, double b, double epsilon) => Math.Abs(a - b) <= epsilon;
+  public static float NextPowerOfTwo(float n) => (float)NextPowerOfTwo((double)n);
+
+  public static double NextPowerOfTwo(double n)
+  {
+    if (n < 0) throw new ArgumentOutOfRangeException(nameof(n), "Must be non-negative.");
+    return Math.Pow(2, Math.Ceiling(Math.Log2(n)));
+  }
+
+  /// <summary>n! (1 for n ≤ 1; overflows past 20!, as OpenTK's).</summary>
+  public static long Factorial(int n)
+  {
+    long f = 1;
+    for (int i = 2; i <= n; i++) f *= i;
+    return f;
+  }
+
+  public static long BinomialCoefficient(int n, int k) => Factorial(n) / (Factorial(k) * Factorial(n - k));
+
+  public static void Swap(ref double a, ref double b) => (a, b) = (b, a);
+  public static void Swap(ref float a, ref float b) => (a, b) = (b, a);
+
+  /// <summary>Whether a and b are at most 2^<paramref name="maxDeltaBits"/> representable floats apart.</summary>
+  public static bool ApproximatelyEqual(float a, float b, int maxDeltaBits)
+  {
+    // Map the sign-magnitude bit patterns onto one monotonic integer line, so −0 and +0 meet.
+    static long Ordered(float x)
+    {
+      long bits = BitConverter.SingleToInt32Bits(x);
+      return bits < 0 ? int.MinValue - bits : bits;
+    }
+    return Math.Abs(Ordered(a) - Ordered(b)) <= 1L << maxDeltaBits;
+  }
+
+  const double DoubleMinNormal = 2.2250738585072014e-308;
+  const float FloatMinNormal = 1.17549435e-38f;
+
+  // OpenTK's epsilon test is relative to |a| + |b|; near zero (where relative error means nothing)
+  // it compares the absolute difference with epsilon times the smallest normal number.
+  public static bool ApproximatelyEqualEpsilon(double a, double b, double epsilon)
+  {
+    if (a == b) return true;
+    double diff = Math.Abs(a - b);
+    if (a == 0 || b == 0 || diff < DoubleMinNormal)
+      return diff < epsilon * DoubleMinNormal;
+    return diff / Math.Min(Math.Abs(a) + Math.Abs(b), double.MaxValue) < epsilon;
+  }
+
+  public static bool ApproximatelyEqualEpsilon(float a, float b, float epsilon)
+  {
+    if (a == b) return true;
+    float diff = Math.Abs(a - b);
+    if (a == 0 || b == 0 || diff < FloatMinNormal)
+      return diff < epsilon * FloatMinNormal;
+    return diff / Math.Min(Math.Abs(a) + Math.Abs(b), float.MaxValue) < epsilon;
+  }
+
+  /// <summary>Absolute tolerance (equal infinities count as equivalent).</summary>
+  public static bool ApproximatelyEquivalent(double a, double b, double tolerance) => a == b || Math.Abs(a - b) <= tolerance;
+  public static bool ApproximatelyEquivalent(float a, float b, float tolerance) => a == b || Math.Abs(a - b) <= tolerance;
 }

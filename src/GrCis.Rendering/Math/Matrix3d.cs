@@ -7,7 +7,7 @@ namespace OpenTK.Mathematics;
 /// OpenTK's double-precision 3×3 matrix (row vectors: <c>v' = v · M</c>): a rotation or scale without
 /// translation. Arithmetic goes through <see cref="Matrix4d"/>.
 /// </summary>
-public struct Matrix3d : IEquatable<Matrix3d>
+public partial struct Matrix3d : IEquatable<Matrix3d>
 {
   public Vector3d Row0, Row1, Row2;
 

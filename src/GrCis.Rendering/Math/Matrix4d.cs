@@ -9,7 +9,7 @@ namespace OpenTK.Mathematics;
 /// applies A first. Includes OpenTK 3 names (Scale, RotateX, Translation) old scripts use.
 /// </summary>
 [Serializable]
-public struct Matrix4d : IEquatable<Matrix4d>
+public partial struct Matrix4d : IEquatable<Matrix4d>
 {
   public Vector4d Row0, Row1, Row2, Row3;
 

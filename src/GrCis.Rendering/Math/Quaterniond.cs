@@ -5,7 +5,7 @@ namespace OpenTK.Mathematics;
 
 /// <summary>A double-precision rotation quaternion with OpenTK's names (X, Y, Z vector part, W scalar).</summary>
 [Serializable]
-public struct Quaterniond : IEquatable<Quaterniond>
+public partial struct Quaterniond : IEquatable<Quaterniond>
 {
   public double X, Y, Z, W;
 

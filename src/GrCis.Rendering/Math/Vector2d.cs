@@ -5,7 +5,7 @@ namespace OpenTK.Mathematics;
 
 /// <summary>A 2D vector of doubles with OpenTK's names (texture coordinates, image points).</summary>
 [Serializable]
-public struct Vector2d : IEquatable<Vector2d>
+public partial struct Vector2d : IEquatable<Vector2d>
 {
   public double X, Y;
 
@@ -32,6 +32,7 @@ public struct Vector2d : IEquatable<Vector2d>
   public readonly double LengthSquared => X * X + Y * Y;
   public readonly Vector2d PerpendicularRight => new(Y, -X);
   public readonly Vector2d PerpendicularLeft => new(-Y, X);
+  public Vector2d Yx { readonly get => new(Y, X); set { Y = value.X; X = value.Y; } }
 
   public void Normalize() { double s = 1.0 / Length; X *= s; Y *= s; }
   public readonly Vector2d Normalized() { double s = 1.0 / Length; return new(X * s, Y * s); }

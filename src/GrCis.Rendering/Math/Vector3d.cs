@@ -9,7 +9,7 @@ namespace OpenTK.Mathematics;
 /// transforms), so GrCis scripts written against OpenTK compile unchanged.
 /// </summary>
 [Serializable]
-public struct Vector3d : IEquatable<Vector3d>
+public partial struct Vector3d : IEquatable<Vector3d>
 {
   public double X, Y, Z;
 

@@ -6,7 +6,7 @@ namespace OpenTK.Mathematics;
 
 /// <summary>A 4D vector of doubles with OpenTK's names; also a matrix row.</summary>
 [Serializable]
-public struct Vector4d : IEquatable<Vector4d>
+public partial struct Vector4d : IEquatable<Vector4d>
 {
   public double X, Y, Z, W;
 

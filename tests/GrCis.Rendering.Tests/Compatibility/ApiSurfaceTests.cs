@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.IO;
 using System.Linq;
 using System.Reflection;
 using Rendering;
@@ -16,8 +15,6 @@ namespace GrCis.Rendering.Tests.Compatibility;
 /// </summary>
 public class ApiSurfaceTests
 {
-  static readonly string DataDir = Path.Combine(AppContext.BaseDirectory, "Compatibility", "Data");
-
   static readonly Assembly[] assemblies = { typeof(RayTracing).Assembly };
 
   sealed record Entry(string File, string Kind, string Type, string Member)
@@ -27,35 +24,18 @@ public class ApiSurfaceTests
 
   sealed record Exception(string Scope, string Reason)
   {
-    public bool Pending => Reason.StartsWith("pending", StringComparison.Ordinal);
+    public bool Pending => ApiLists.IsPending(Reason);
 
     public bool Covers(Entry e)
     {
       string[] parts = Scope.Split(':');
-      // A member with its parameter list must match exactly; a bare name covers its overloads;
-      // a scope ending in a space ("protected ") covers every member starting so.
-      return parts[0] == e.File && (parts.Length < 2 || parts[1] == e.Type) && (parts.Length < 3 || MemberMatches(parts[2], e.Member));
+      return parts[0] == e.File && (parts.Length < 2 || parts[1] == e.Type) && (parts.Length < 3 || ApiLists.MemberMatches(parts[2], e.Member));
     }
-
-    static bool MemberMatches(string scope, string member) =>
-      scope.EndsWith(')') ? member == scope
-      : scope.EndsWith(' ') ? member.StartsWith(scope, StringComparison.Ordinal)
-      : member == scope || member.StartsWith(scope + "(", StringComparison.Ordinal);
   }
 
-  static List<Entry> Entries() =>
-    File.ReadAllLines(Path.Combine(DataDir, "grcis-common-api.tsv"))
-      .Where(l => l.Length > 0 && !l.StartsWith('#'))
-      .Select(l => l.Split('\t'))
-      .Select(f => new Entry(f[0], f[1], f[2], f[3]))
-      .ToList();
+  static List<Entry> Entries() => ApiLists.Read("grcis-common-api.tsv").Select(f => new Entry(f[0], f[1], f[2], f[3])).ToList();
 
-  static List<Exception> Exceptions() =>
-    File.ReadAllLines(Path.Combine(DataDir, "grcis-api-exceptions.tsv"))
-      .Where(l => l.Length > 0 && !l.StartsWith('#'))
-      .Select(l => l.Split('\t'))
-      .Select(f => new Exception(f[0], f[1]))
-      .ToList();
+  static List<Exception> Exceptions() => ApiLists.Read("grcis-api-exceptions.tsv").Select(f => new Exception(f[0], f[1])).ToList();
 
   static Type? FindType(string name)
   {
@@ -103,30 +83,12 @@ public class ApiSurfaceTests
       default:
         int open = member.IndexOf('(');
         string name = member[..open];
-        string[] parameters = member[(open + 1)..^1].Length == 0 ? Array.Empty<string>() : SplitParameters(member[(open + 1)..^1]);
+        string[] parameters = ApiLists.SplitParameters(member[(open + 1)..^1]);
         IEnumerable<MethodBase> candidates = e.Kind == "ctor"
           ? t.GetConstructors(all)
           : t.GetMethods(all).Where(m => m.Name == (e.Kind == "operator" ? operatorNames.GetValueOrDefault(name, name) : name));
         return candidates.Any(m => Reachable(m) && Matches(m.GetParameters(), parameters));
     }
-  }
-
-  static string[] SplitParameters(string text)
-  {
-    var parts = new List<string>();
-    int depth = 0, start = 0;
-    for (int i = 0; i < text.Length; i++)
-    {
-      if (text[i] is '<' or '(' or '[') depth++;
-      else if (text[i] is '>' or ')' or ']') depth--;
-      else if (text[i] == ',' && depth == 0)
-      {
-        parts.Add(text[start..i].Trim());
-        start = i + 1;
-      }
-    }
-    parts.Add(text[start..].Trim());
-    return parts.ToArray();
   }
 
   /// <summary>Same count, and a by-reference parameter where GrCis has <c>ref</c> or <c>out</c> (an <c>in</c> or a value parameter both take a value).</summary>

@@ -1,0 +1,48 @@
+using System;
+
+namespace OpenTK.Mathematics;
+
+// OpenTK 3's remaining members of Quaterniond: Euler-angle and matrix constructors, ref/out twins.
+public partial struct Quaterniond
+{
+  /// <summary>From Euler angles in radians (X, Y, Z), as <see cref="Quaterniond(double, double, double)"/>.</summary>
+  public Quaterniond(Vector3d eulerAngles) : this(eulerAngles.X, eulerAngles.Y, eulerAngles.Z)
+  {
+  }
+
+  public static Quaterniond Multiply(Quaterniond quaternion, double scale) => quaternion * scale;
+  public static void Multiply(ref Quaterniond quaternion, double scale, out Quaterniond result) => result = quaternion * scale;
+  public static void Multiply(ref Quaterniond left, ref Quaterniond right, out Quaterniond result) => result = left * right;
+  public static void Add(ref Quaterniond left, ref Quaterniond right, out Quaterniond result) => result = left + right;
+  public static void Sub(ref Quaterniond left, ref Quaterniond right, out Quaterniond result) => result = left - right;
+  public static void Conjugate(ref Quaterniond q, out Quaterniond result) => result = Conjugate(q);
+  public static void Invert(ref Quaterniond q, out Quaterniond result) => result = q.Inverted();
+  public static void Normalize(ref Quaterniond q, out Quaterniond result) => result = q.Normalized();
+  public static void FromEulerAngles(ref Vector3d eulerAngles, out Quaterniond result) => result = new Quaterniond(eulerAngles);
+
+  /// <summary>The rotation of an orthonormal matrix (row vectors, as <see cref="Matrix3d.CreateFromQuaternion"/> builds).</summary>
+  public static Quaterniond FromMatrix(Matrix3d m)
+  {
+    // Shepperd's method: start from the largest of w, x, y, z so the square root is well away from zero.
+    double trace = m.M11 + m.M22 + m.M33;
+    if (trace > 0)
+    {
+      double s = 2.0 * Math.Sqrt(1.0 + trace);
+      return new Quaterniond((m.M23 - m.M32) / s, (m.M31 - m.M13) / s, (m.M12 - m.M21) / s, 0.25 * s);
+    }
+    if (m.M11 > m.M22 && m.M11 > m.M33)
+    {
+      double s = 2.0 * Math.Sqrt(1.0 + m.M11 - m.M22 - m.M33);
+      return new Quaterniond(0.25 * s, (m.M12 + m.M21) / s, (m.M13 + m.M31) / s, (m.M23 - m.M32) / s);
+    }
+    if (m.M22 > m.M33)
+    {
+      double s = 2.0 * Math.Sqrt(1.0 + m.M22 - m.M11 - m.M33);
+      return new Quaterniond((m.M12 + m.M21) / s, 0.25 * s, (m.M23 + m.M32) / s, (m.M31 - m.M13) / s);
+    }
+    double t = 2.0 * Math.Sqrt(1.0 + m.M33 - m.M11 - m.M22);
+    return new Quaterniond((m.M13 + m.M31) / t, (m.M23 + m.M32) / t, 0.25 * t, (m.M12 - m.M21) / t);
+  }
+
+  public static void FromMatrix(ref Matrix3d matrix, out Quaterniond result) => result = FromMatrix(matrix);
+}
