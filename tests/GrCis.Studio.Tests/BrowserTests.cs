@@ -1,0 +1,125 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using GrCis.Cli;
+using GrCis.TestSupport;
+using OpenQA.Selenium;
+using OpenQA.Selenium.Chrome;
+using OpenQA.Selenium.Interactions;
+using Rendering.Imaging;
+
+namespace GrCis.Studio.Tests;
+
+/// <summary>
+/// The studio in a real browser (Debian's chromium and chromium-driver, headless): render Five balls and
+/// compare the shown pixels with <c>grcis render</c>'s PNG, click a pixel for its ray tree and 3D view,
+/// save a script with a typo and see the error at its line, fix it and see a new image. Screenshots of
+/// each step are written beside the test assembly (<c>screenshots/</c>).
+/// </summary>
+public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFixture>
+{
+  static readonly string Shots = Path.Combine(AppContext.BaseDirectory, "screenshots");
+
+  static ChromeDriver Browser()
+  {
+    string chromium = RequiredTool.Find("chromium", "chromium");
+    string driver = RequiredTool.Find("chromedriver", "chromium-driver");
+    var options = new ChromeOptions { BinaryLocation = chromium };
+    options.AddArguments("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1500,820",
+                         "--force-color-profile=srgb");
+    ChromeDriverService service = ChromeDriverService.CreateDefaultService(Path.GetDirectoryName(driver)!, Path.GetFileName(driver));
+    service.SuppressInitialDiagnosticInformation = true;
+    service.HideCommandPromptWindow = true;
+    return new ChromeDriver(service, options, TimeSpan.FromSeconds(60));
+  }
+
+  static void Until(IWebDriver browser, Func<bool> condition, string what)
+  {
+    var deadline = DateTime.UtcNow + TimeSpan.FromSeconds(60);
+    while (!condition())
+    {
+      if (DateTime.UtcNow > deadline)
+        throw new TimeoutException($"waited 60 s for {what}; page messages: {Js(browser, "return document.getElementById('messages').textContent;")}");
+      System.Threading.Thread.Sleep(50);
+    }
+  }
+
+  static void Shot(ChromeDriver browser, string name)
+  {
+    Directory.CreateDirectory(Shots);
+    browser.GetScreenshot().SaveAsFile(Path.Combine(Shots, name));
+  }
+
+  static object? Js(IWebDriver browser, string script, params object[] args) => ((IJavaScriptExecutor)browser).ExecuteScript(script, args);
+
+  static void RenderIn(ChromeDriver browser, string scene, int width, int height)
+  {
+    Js(browser, "const s = document.getElementById('scene'); s.value = arguments[0]; s.dispatchEvent(new Event('change'));", scene);
+    Js(browser, "document.getElementById('width').value = arguments[0]; document.getElementById('height').value = arguments[1];", width, height);
+    Js(browser, "document.getElementById('stats').textContent = '';");
+    browser.FindElement(By.Id("render")).Click();
+    Until(browser, () => browser.FindElement(By.Id("stats")).Text.StartsWith($"{width}x{height}", StringComparison.Ordinal) &&
+                         !browser.FindElement(By.Id("stop")).Enabled, $"the render of {scene}");
+  }
+
+  [SkippableFact]
+  public void The_page_renders_probes_and_edits_as_a_user_does()
+  {
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+
+    // 1. Five balls, shown exactly as grcis render saves it.
+    RenderIn(browser, "Five balls", 160, 120);
+    Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 160, "the image");
+    var shown = ((IReadOnlyCollection<object>)Js(browser,
+      "const c = document.getElementById('canvas'); return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);")!)
+      .Select(Convert.ToByte).ToArray();
+    string png = Path.Combine(studio.Folder, "five-balls.png");
+    Assert.Equal(0, Program.Run(["render", "Five balls", "--size", "160x120", "-q", "-o", png], new StringWriter(), new StringWriter()));
+    Rgb8Image expected = ImageFile.LoadRgb8(png);
+    int differing = 0;
+    for (int y = 0; y < 120; y++)
+      for (int x = 0; x < 160; x++)
+      {
+        (byte r, byte g, byte b) = expected.GetPixel(x, y);
+        int i = 4 * (y * 160 + x);
+        if (shown[i] != r || shown[i + 1] != g || shown[i + 2] != b)
+          differing++;
+      }
+    Assert.Equal(0, differing);
+    Shot(browser, "studio-render.png");
+
+    // 2. Click a pixel on a ball: its ray tree, then the 3D view.
+    IWebElement canvas = browser.FindElement(By.Id("canvas"));
+    new Actions(browser).MoveToElement(canvas, 80 - canvas.Size.Width / 2, 60 - canvas.Size.Height / 2).Click().Perform();
+    Until(browser, () => browser.FindElement(By.Id("rays")).Text.Contains("Primary", StringComparison.Ordinal), "the ray tree");
+    Assert.StartsWith("pixel [80, 60]", browser.FindElement(By.Id("rays")).Text);
+    browser.FindElement(By.Id("show3d")).Click();
+    Until(browser, () => browser.FindElement(By.Id("rays3dPane")).Displayed, "the 3D view");
+    Shot(browser, "studio-probe-3d.png");
+    browser.FindElement(By.Id("show3d")).Click();
+
+    // 3. Edit the folder's script: a typo is marked at its line, the fix renders a new image.
+    RenderIn(browser, "Balls", 160, 120);
+    browser.FindElement(By.Id("edit")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
+    Js(browser, "document.querySelector('#editor .CodeMirror').CodeMirror.setValue(arguments[0]);", "// Five balls\nRendering.Scenes.FiveBals(scene);\n");
+    browser.FindElement(By.Id("save")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#diagnostics li")).Count > 0, "the diagnostics");
+    IWebElement error = browser.FindElement(By.CssSelector("#diagnostics li"));
+    Assert.Equal("2", error.GetAttribute("data-line"));
+    Assert.Contains("CS0117", error.Text);
+    Assert.Equal(1, browser.FindElements(By.CssSelector("#editor .line-error")).Count);
+    Shot(browser, "studio-editor-error.png");
+
+    Js(browser, "document.querySelector('#editor .CodeMirror').CodeMirror.setValue(arguments[0]);", "Rendering.Scenes.Flags(scene);\n");
+    browser.FindElement(By.Id("save")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#diagnostics li")).Count == 0 &&
+                         browser.FindElement(By.Id("stats")).Text.Length > 0 && !browser.FindElement(By.Id("stop")).Enabled &&
+                         (string)Js(browser, "return document.getElementById('messages').textContent;")! == "", "the fixed script's image");
+    Shot(browser, "studio-editor-fixed.png");
+    File.WriteAllText(Path.Combine(studio.ScriptsFolder, "Balls.cs"), "Rendering.Scenes.FiveBalls(scene);\n");
+  }
+}
