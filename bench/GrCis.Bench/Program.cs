@@ -19,6 +19,8 @@ public static class Program
       return PngSizes.Run(args[1..]);
     if (args.Length > 0 && args[0] == "soak")
       return Soak.Run(args[1..]);
+    if (args.Length > 0 && args[0] == "studio")
+      return StudioMeasure.Run(args[1..]);
     if (args.Length > 0 && args[0] == "quick")
       return QuickRun.Run(args[1..]);
     BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
