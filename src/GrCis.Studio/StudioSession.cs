@@ -132,6 +132,9 @@ public sealed class StudioSession : IDisposable
   /// <exception cref="InvalidOperationException">Nothing rendered yet, or a render is running.</exception>
   public ExtraViews ComputeViews(System.Threading.CancellationToken cancel) => Views = Controller.ComputeExtraViews(cancel);
 
+  /// <summary>The last animation run, if any.</summary>
+  public StudioAnimation? Animation { get; set; }
+
   /// <summary>Shows a render of the history (back/forward).</summary>
   public void ShowRecord(RenderRecord record) => Show(record.Image, record.Gamma, 1.0, final: true);
 

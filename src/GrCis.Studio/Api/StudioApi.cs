@@ -67,6 +67,7 @@ internal static class StudioApi
     });
     ViewsApi.Map(app);
     HistoryApi.Map(app);
+    AnimationApi.Map(app);
     app.MapPut("/api/source", async (string scene, HttpRequest request, StudioSession s, AllowedFiles files) =>
     {
       SceneEntry? entry = s.Controller.Catalog.Find(scene);

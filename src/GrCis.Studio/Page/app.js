@@ -122,6 +122,43 @@ async function show3d() {
   }
 }
 
+async function renderFrames() {
+  $("messages").textContent = "";
+  try {
+    await api("animation", {
+      method: "POST", headers: { "Content-Type": "application/json" },
+      body: JSON.stringify({
+        scene: $("scene").value, param: $("param").value, settings: settings(),
+        start: Number($("animStart").value), end: Number($("animEnd").value), fps: Number($("animFps").value),
+        folder: $("animFolder").value.trim() || null,
+      }),
+    });
+  } catch (e) {
+    $("messages").textContent = e.message;
+    return;
+  }
+  $("animStop").disabled = false;
+  followFrames();
+}
+
+async function followFrames() {
+  const a = await (await api("animation")).json();
+  $("animStatus").textContent = `${a.framesDone}/${a.framesTotal} frames, ${a.seconds.toFixed(1)} s` +
+    (a.running ? `, ETA ${a.etaSeconds.toFixed(1)} s` : "") + (a.folder ? ` → ${a.folder}` : "") + (a.error ? ` (${a.error})` : "");
+  const scrub = $("animScrub");
+  const follow = Number(scrub.value) >= Number(scrub.max);
+  scrub.max = Math.max(0, a.framesDone - 1);
+  scrub.disabled = a.framesDone === 0;
+  if (a.framesDone > 0 && follow) { scrub.value = a.framesDone - 1; await showFrame(a.framesDone - 1); }
+  if (a.running) setTimeout(followFrames, 250);
+  else $("animStop").disabled = true;
+}
+
+async function showFrame(k) {
+  const r = await api(`animation/frame/${k}.png`);
+  if (r.ok) { $("view-kind").value = ""; await draw(r); }
+}
+
 async function openEditor() {
   const name = $("scene").value;
   const r = await api("source?scene=" + encodeURIComponent(name));
@@ -281,6 +318,9 @@ async function probe(p) {
 $("scene").addEventListener("change", sceneChanged);
 $("view-kind").addEventListener("change", showView);
 $("edit").addEventListener("click", openEditor);
+$("animRender").addEventListener("click", renderFrames);
+$("animStop").addEventListener("click", () => api("animation/stop", { method: "POST" }));
+$("animScrub").addEventListener("input", () => showFrame(Number($("animScrub").value)));
 $("show3d").addEventListener("click", async () => { $("rays3dPane").hidden = !$("rays3dPane").hidden; if (!$("rays3dPane").hidden) await show3d(); });
 $("save").addEventListener("click", save);
 $("closeEditor").addEventListener("click", () => { $("editorPane").hidden = true; });

@@ -1,0 +1,70 @@
+using System;
+using System.IO;
+using GrCis.Hosting;
+using GrCis.Interactive;
+using Microsoft.AspNetCore.Builder;
+using Microsoft.AspNetCore.Http;
+
+namespace GrCis.Studio;
+
+/// <summary>Animation: render a time range's frames (into a folder given on the command line, if asked), follow them, scrub through them.</summary>
+internal static class AnimationApi
+{
+  /// <summary>What the page sends: the scene, its parameters and settings, the range, and optionally a folder for the frames.</summary>
+  internal sealed record AnimationBody(string Scene, string? Param, RenderSettings? Settings, double Start, double End, double Fps, string? Folder);
+
+  public static void Map(WebApplication app)
+  {
+    app.MapPost("/api/animation", (AnimationBody body, StudioSession s, AllowedFiles files) => Start(body, s, files));
+    app.MapGet("/api/animation", (StudioSession s) => s.Animation is { } a ? Results.Ok(a.Status()) : Results.NotFound());
+    app.MapPost("/api/animation/stop", (StudioSession s) =>
+    {
+      s.Animation?.Stop();
+      return Results.NoContent();
+    });
+    app.MapGet("/api/animation/frame/{k:int}.png", (int k, StudioSession s) =>
+      s.Animation?.Frame(k) is byte[] png ? Results.Bytes(png, "image/png") : Results.NotFound());
+  }
+
+  static IResult Start(AnimationBody body, StudioSession s, AllowedFiles files)
+  {
+    SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
+    if (entry == null)
+      return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
+    if (!(body.End >= body.Start) || !(body.Fps > 0.0) || (body.End - body.Start) * body.Fps > 100_000)
+      return Results.BadRequest(new { error = "the range needs start ≤ end and fps > 0 (at most 100000 frames)" });
+    string? folder = null;
+    if (!string.IsNullOrWhiteSpace(body.Folder))
+    {
+      folder = Path.GetFullPath(body.Folder);
+      // A folder for frames must lie inside a folder given on the command line.
+      if (!files.Allows(Path.Combine(folder, "out0000.png")))
+        return Results.StatusCode(StatusCodes.Status403Forbidden);
+    }
+    RenderSettings settings;
+    try
+    {
+      settings = (body.Settings ?? s.Controller.Settings).Validate();
+    }
+    catch (InvalidSettingException e)
+    {
+      return Results.BadRequest(new { error = e.Message });
+    }
+    if (s.Controller.IsRendering || s.Animation is { Running: true })
+      return Results.Conflict(new { error = "a render or an animation is running; stop it first" });
+    entry.ParameterText = body.Param ?? entry.ParameterText;
+    s.Controller.Selected = entry;
+    s.Controller.Settings = settings;
+    AnimationRun run;
+    try
+    {
+      run = s.Controller.CreateAnimation(body.Start, body.End, body.Fps);
+    }
+    catch (Exception e) when (e is SceneEvaluationException or ArgumentException)
+    {
+      return Results.BadRequest(new { error = e.Message });
+    }
+    s.Animation = StudioAnimation.Start(run, folder);
+    return Results.Accepted();
+  }
+}

@@ -1,0 +1,82 @@
+using System;
+using System.Collections.Generic;
+using System.Threading;
+using System.Threading.Tasks;
+using GrCis.Interactive;
+using Rendering.Imaging;
+
+namespace GrCis.Studio;
+
+/// <summary>
+/// One animation run of the studio: the frames of a time range rendered in order (as the demo's
+/// <see cref="AnimationRun"/> does), kept as the PNG the page scrubs through and, when a folder is given,
+/// written there as <c>out####.png</c>; with progress and ETA.
+/// </summary>
+public sealed class StudioAnimation
+{
+  readonly object sync = new();
+  readonly List<byte[]> frames = new();
+  readonly CancellationTokenSource cancel = new();
+  int total;
+  TimeSpan elapsed, eta;
+  string? error;
+  bool running = true;
+
+  StudioAnimation(string? folder) => Folder = folder;
+
+  /// <summary>Where the frames are written, or null (kept in memory only).</summary>
+  public string? Folder { get; }
+
+  /// <summary>Starts rendering <paramref name="run"/>'s frames on a worker thread.</summary>
+  public static StudioAnimation Start(AnimationRun run, string? folder)
+  {
+    var animation = new StudioAnimation(folder) { total = run.Timeline.FrameCount };
+    run.FrameRendered += (_, e) =>
+    {
+      byte[] png = PngEncoder.Default.Encode(Rendering.Execution.RenderSetup.ToDisplayImage(e.Image, run.Job.Renderer.Gamma));
+      lock (animation.sync)
+      {
+        animation.frames.Add(png);
+        animation.elapsed = e.Elapsed;
+        animation.eta = e.Eta;
+      }
+    };
+    string? pattern = folder == null ? null : System.IO.Path.Combine(folder, "out####.png");
+    run.RunAsync(pattern, animation.cancel.Token).ContinueWith(t =>
+    {
+      lock (animation.sync)
+      {
+        animation.running = false;
+        if (t.Exception != null)
+          animation.error = t.Exception.GetBaseException().Message;
+      }
+    }, TaskScheduler.Default);
+    return animation;
+  }
+
+  public void Stop() => cancel.Cancel();
+
+  /// <summary>True until the last frame is done, the run stopped, or a frame failed.</summary>
+  public bool Running
+  {
+    get
+    {
+      lock (sync)
+        return running;
+    }
+  }
+
+  /// <summary>The finished frame <paramref name="k"/> as PNG, or null when it is not (yet) rendered.</summary>
+  public byte[]? Frame(int k)
+  {
+    lock (sync)
+      return k >= 0 && k < frames.Count ? frames[k] : null;
+  }
+
+  /// <summary>What the page shows of the run.</summary>
+  public object Status()
+  {
+    lock (sync)
+      return new { running, framesDone = frames.Count, framesTotal = total, seconds = elapsed.TotalSeconds, etaSeconds = eta.TotalSeconds, error, folder = Folder };
+  }
+}
