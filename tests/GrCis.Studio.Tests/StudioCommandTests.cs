@@ -39,6 +39,33 @@ public class StudioCommandTests
     await Assert.ThrowsAsync<HttpRequestException>(() => after.GetAsync(url));
   }
 
+  [Fact]
+  public async Task A_host_other_than_loopback_warns_and_still_needs_the_token()
+  {
+    var output = new StringWriter();
+    var error = new StringWriter();
+    using var cancel = new CancellationTokenSource();
+    var env = new CliEnvironment(TextWriter.Synchronized(output), TextWriter.Synchronized(error)) { Cancel = cancel.Token };
+    Task<int> run = Task.Run(() => Program.Run(["studio", "--host", "0.0.0.0", "--port", "0", "--no-open"], env));
+    string url = "";
+    for (int i = 0; i < 300 && url.Length == 0 && !run.IsCompleted; i++)
+    {
+      await Task.Delay(50);
+      url = output.ToString().Trim();
+    }
+    Assert.Contains("warning: --host 0.0.0.0", error.ToString());
+    var uri = new Uri(url);
+    using (var client = new HttpClient())
+    {
+      using HttpResponseMessage without = await client.GetAsync($"http://127.0.0.1:{uri.Port}/api/status");
+      Assert.Equal(HttpStatusCode.Unauthorized, without.StatusCode);
+      using HttpResponseMessage with = await client.GetAsync($"http://127.0.0.1:{uri.Port}/{uri.Query}");
+      Assert.Equal(HttpStatusCode.OK, with.StatusCode);
+    }
+    cancel.Cancel();
+    Assert.Equal(130, await run.WaitAsync(TimeSpan.FromSeconds(30)));
+  }
+
   [Theory]
   [InlineData("--port", "70000", "--port")]
   [InlineData("--host", "not-an-address", "--host")]
