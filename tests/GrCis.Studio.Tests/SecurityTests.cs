@@ -2,6 +2,7 @@ using System;
 using System.IO;
 using System.Net;
 using System.Net.Http;
+using System.Net.Http.Json;
 using System.Threading.Tasks;
 
 namespace GrCis.Studio.Tests;
@@ -104,5 +105,22 @@ public sealed class SecurityTests(StudioFixture studio) : IClassFixture<StudioFi
     bool passed = false;
     guard.InvokeAsync(context, _ => { passed = true; return Task.CompletedTask; }).GetAwaiter().GetResult();
     return passed;
+  }
+
+  [Fact]
+  public async Task The_file_picker_offers_and_adds_only_scripts_inside_the_given_folders()
+  {
+    string[] files = (await studio.Client.GetFromJsonAsync<string[]>("/api/files"))!;
+    string nested = Path.Combine(studio.ScriptsFolder, "more", "Flags.cs");
+    Assert.Contains(nested, files);
+    Assert.DoesNotContain(files, f => f.EndsWith("Outside.cs", StringComparison.Ordinal));
+
+    using HttpResponseMessage added = await studio.Client.PostAsJsonAsync("/api/scenes/add", new { path = nested });
+    Assert.Equal(HttpStatusCode.OK, added.StatusCode);
+    string name = (await added.Content.ReadFromJsonAsync<System.Text.Json.JsonElement>()).GetProperty("name").GetString()!;
+    Assert.Contains(name, await studio.Client.GetStringAsync("/api/scenes"));
+
+    using HttpResponseMessage outside = await studio.Client.PostAsJsonAsync("/api/scenes/add", new { path = Path.Combine(studio.Folder, "Outside.cs") });
+    Assert.Equal(HttpStatusCode.Forbidden, outside.StatusCode);
   }
 }

@@ -25,6 +25,9 @@ public sealed class StudioFixture : IAsyncLifetime
     Directory.CreateDirectory(ScriptsFolder);
     File.WriteAllText(Path.Combine(ScriptsFolder, "Balls.cs"), "Rendering.Scenes.FiveBalls(scene);\n");
     File.WriteAllText(Path.Combine(Folder, "secret.txt"), "not for the studio");
+    Directory.CreateDirectory(Path.Combine(ScriptsFolder, "more"));
+    File.WriteAllText(Path.Combine(ScriptsFolder, "more", "Flags.cs"), "Rendering.Scenes.Flags(scene);\n");
+    File.WriteAllText(Path.Combine(Folder, "Outside.cs"), "Rendering.Scenes.Flags(scene);\n");
     Server = await StudioServer.StartAsync(new StudioOptions { Paths = [ScriptsFolder] }, new List<string>());
     var root = new Uri(Server.Url).GetLeftPart(UriPartial.Authority);
     Client = new HttpClient { BaseAddress = new Uri(root) };

@@ -27,17 +27,24 @@ internal static class StudioApi
             .Select(b => new { min = new[] { b.Min.X, b.Min.Y, b.Min.Z }, max = new[] { b.Max.X, b.Max.Y, b.Max.Z } }))
         : Results.NotFound(new { error = "render something first" }));
 
-    app.MapGet("/api/scenes", (StudioSession s) => new
+    app.MapGet("/api/scenes", (StudioSession s) =>
     {
-      selected = s.Controller.Selected?.Name,
-      scenes = s.Controller.Catalog.Entries.Select(e => new
+      // The file picker may add an entry meanwhile (FilesApi): list a copy.
+      SceneEntry[] entries;
+      lock (s.Controller.Catalog)
+        entries = s.Controller.Catalog.Entries.ToArray();
+      return new
       {
-        name = e.Name,
-        kind = e.Kind.ToString(),
-        tooltip = e.Tooltip,
-        param = e.ParameterText,
-        file = e.Path == null ? null : Path.GetFileName(e.Path),
-      }),
+        selected = s.Controller.Selected?.Name,
+        scenes = entries.Select(e => new
+        {
+          name = e.Name,
+          kind = e.Kind.ToString(),
+          tooltip = e.Tooltip,
+          param = e.ParameterText,
+          file = e.Path == null ? null : Path.GetFileName(e.Path),
+        }),
+      };
     });
     app.MapGet("/api/settings", (StudioSession s) => s.Controller.Settings);
     app.MapPost("/api/render", (RenderBody body, StudioSession s) => Render(body, s));
@@ -68,6 +75,7 @@ internal static class StudioApi
     ViewsApi.Map(app);
     HistoryApi.Map(app);
     AnimationApi.Map(app);
+    FilesApi.Map(app);
     app.MapPut("/api/source", async (string scene, HttpRequest request, StudioSession s, AllowedFiles files) =>
     {
       SceneEntry? entry = s.Controller.Catalog.Find(scene);

@@ -318,6 +318,31 @@ async function probe(p) {
 $("scene").addEventListener("change", sceneChanged);
 $("view-kind").addEventListener("change", showView);
 $("edit").addEventListener("click", openEditor);
+$("open").addEventListener("click", async () => {
+  const files = await (await api("files")).json();
+  const select = $("files");
+  select.innerHTML = "";
+  for (const f of files) {
+    const o = document.createElement("option");
+    o.value = o.textContent = f;
+    select.appendChild(o);
+  }
+  $("picker").hidden = files.length === 0;
+  if (files.length === 0) $("messages").textContent = "no scripts in the folders given to grcis studio";
+});
+$("add").addEventListener("click", async () => {
+  try {
+    const added = await (await api("scenes/add", {
+      method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify({ path: $("files").value }),
+    })).json();
+    await loadScenes();
+    $("scene").value = added.name;
+    sceneChanged();
+    $("picker").hidden = true;
+  } catch (e) {
+    $("messages").textContent = e.message;
+  }
+});
 $("animRender").addEventListener("click", renderFrames);
 $("animStop").addEventListener("click", () => api("animation/stop", { method: "POST" }));
 $("animScrub").addEventListener("input", () => showFrame(Number($("animScrub").value)));

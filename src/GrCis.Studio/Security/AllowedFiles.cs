@@ -32,6 +32,28 @@ public sealed class AllowedFiles
 
   static StringComparison Comparison => OperatingSystem.IsWindows() ? StringComparison.OrdinalIgnoreCase : StringComparison.Ordinal;
 
+  /// <summary>
+  /// The scene scripts (<c>*.cs</c>) the studio may open: the given files and every script in the given folders
+  /// and their subfolders (at most <paramref name="limit"/>), as full paths in a stable order.
+  /// </summary>
+  public IReadOnlyList<string> Scripts(int limit = 2000)
+  {
+    var found = new SortedSet<string>(Comparer);
+    foreach (string file in files)
+      if (file.EndsWith(".cs", Comparison) && File.Exists(file))
+        found.Add(file);
+    var options = new EnumerationOptions { RecurseSubdirectories = true, IgnoreInaccessible = true, MaxRecursionDepth = 8 };
+    foreach (string folder in folders)
+      foreach (string file in Directory.EnumerateFiles(folder, "*.cs", options))
+      {
+        if (found.Count >= limit)
+          return [.. found];
+        if (Allows(file))
+          found.Add(Path.GetFullPath(file));
+      }
+    return [.. found];
+  }
+
   /// <summary>True when <paramref name="path"/> is a given file or lies inside a given folder (and so does its link target).</summary>
   public bool Allows(string path)
   {
