@@ -71,4 +71,7 @@ public partial struct Matrix4
     m.Row2.Xyz = new Vector3(0, 0, Row2.Xyz.Length);
     return m;
   }
+
+  /// <summary>The rotation of the upper 3×3 part; <paramref name="row_normalise"/> first removes a scale.</summary>
+  public readonly Quaternion ExtractRotation(bool row_normalise = true) => (Quaternion)((Matrix4d)this).ExtractRotation(row_normalise);
 }

@@ -45,4 +45,19 @@ public partial struct Matrix4
   public static void Mult(ref Matrix4 left, ref Matrix4 right, out Matrix4 result) => result = left * right;
   public static void Invert(ref Matrix4 mat, out Matrix4 result) => result = Invert(mat);
   public static void Transpose(ref Matrix4 mat, out Matrix4 result) => result = Transpose(mat);
+
+  /// <summary>The rotation of <paramref name="q"/> for row vectors (<c>v · M</c> rotates v as q does); q need not be unit length.</summary>
+  public static Matrix4 CreateFromQuaternion(Quaternion q)
+  {
+    float s = 2f / q.LengthSquared;
+    float xx = q.X * q.X, yy = q.Y * q.Y, zz = q.Z * q.Z;
+    float xy = q.X * q.Y, xz = q.X * q.Z, yz = q.Y * q.Z, xw = q.X * q.W, yw = q.Y * q.W, zw = q.Z * q.W;
+    return new Matrix4(
+      1f - s * (yy + zz), s * (xy + zw), s * (xz - yw), 0,
+      s * (xy - zw), 1f - s * (xx + zz), s * (yz + xw), 0,
+      s * (xz + yw), s * (yz - xw), 1f - s * (xx + yy), 0,
+      0, 0, 0, 1);
+  }
+
+  public static void CreateFromQuaternion(ref Quaternion q, out Matrix4 result) => result = CreateFromQuaternion(q);
 }

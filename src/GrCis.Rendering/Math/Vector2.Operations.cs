@@ -60,4 +60,13 @@ public partial struct Vector2
   public static Vector2 BaryCentric(Vector2 a, Vector2 b, Vector2 c, float u, float v) => a + (b - a) * u + (c - a) * v;
   public static void BaryCentric(ref Vector2 a, ref Vector2 b, ref Vector2 c, float u, float v, out Vector2 result) =>
     result = BaryCentric(a, b, c, u, v);
+
+  /// <summary>Rotates (x, y, 0) by the quaternion (<c>q v q⁻¹</c>) and keeps x and y.</summary>
+  public static Vector2 Transform(Vector2 vec, Quaternion quat)
+  {
+    Quaternion r = quat * new Quaternion(vec.X, vec.Y, 0, 0) * quat.Inverted();
+    return new Vector2(r.X, r.Y);
+  }
+
+  public static void Transform(ref Vector2 vec, ref Quaternion quat, out Vector2 result) => result = Transform(vec, quat);
 }

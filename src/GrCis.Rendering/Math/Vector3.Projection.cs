@@ -1,6 +1,7 @@
 namespace OpenTK.Mathematics;
 
-// OpenTK 3's homogeneous transforms of Vector3 by a float Matrix4 (row vectors), and its viewport projection.
+// OpenTK 3's remaining transforms of Vector3: by a float Matrix4 (row vectors) with the perspective divide, the
+// viewport projection, and the rotation by a float Quaternion.
 public partial struct Vector3
 {
   public static void TransformNormalInverse(ref Vector3 norm, ref Matrix4 invMat, out Vector3 result) => result = TransformNormalInverse(norm, invMat);
@@ -39,4 +40,14 @@ public partial struct Vector3
       vector.Z / (maxZ - minZ) * 2f - 1f);
     return TransformPerspective(ndc, inverseWorldViewProjection);
   }
+
+  /// <summary>Rotates the vector by a unit quaternion.</summary>
+  public static Vector3 Transform(Vector3 vec, Quaternion quat)
+  {
+    Vector3 u = quat.Xyz, t = 2f * Cross(u, vec);
+    return vec + quat.W * t + Cross(u, t);
+  }
+
+  public static void Transform(ref Vector3 vec, ref Quaternion quat, out Vector3 result) => result = Transform(vec, quat);
+  public static Vector3 operator *(Quaternion quat, Vector3 vec) => Transform(vec, quat);
 }

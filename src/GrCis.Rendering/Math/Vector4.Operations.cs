@@ -54,4 +54,14 @@ public partial struct Vector4
   public static Vector4 BaryCentric(Vector4 a, Vector4 b, Vector4 c, float u, float v) => a + (b - a) * u + (c - a) * v;
   public static void BaryCentric(ref Vector4 a, ref Vector4 b, ref Vector4 c, float u, float v, out Vector4 result) =>
     result = BaryCentric(a, b, c, u, v);
+
+  /// <summary><c>q v q⁻¹</c> with v as the quaternion (x, y, z, w): xyz rotated, w kept.</summary>
+  public static Vector4 Transform(Vector4 vec, Quaternion quat)
+  {
+    Quaternion r = quat * new Quaternion(vec.X, vec.Y, vec.Z, vec.W) * quat.Inverted();
+    return new Vector4(r.X, r.Y, r.Z, r.W);
+  }
+
+  public static void Transform(ref Vector4 vec, ref Quaternion quat, out Vector4 result) => result = Transform(vec, quat);
+  public static Vector4 operator *(Quaternion quat, Vector4 vec) => Transform(vec, quat);
 }
