@@ -8,7 +8,7 @@ namespace OpenTK.Mathematics;
 /// for GrCis code written with floats (mesh readers, <c>Matrix4.Identity</c> arguments). The arithmetic
 /// is done by <see cref="Matrix4d"/> and rounded back to float.
 /// </summary>
-public struct Matrix4 : IEquatable<Matrix4>
+public partial struct Matrix4 : IEquatable<Matrix4>
 {
   public Vector4 Row0, Row1, Row2, Row3;
 

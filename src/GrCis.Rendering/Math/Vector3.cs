@@ -5,7 +5,7 @@ namespace OpenTK.Mathematics;
 
 /// <summary>Single-precision 3D vector (OpenTK's name), for animated properties and meshes.</summary>
 [Serializable]
-public struct Vector3 : IEquatable<Vector3>
+public partial struct Vector3 : IEquatable<Vector3>
 {
   public float X, Y, Z;
 
@@ -17,10 +17,45 @@ public struct Vector3 : IEquatable<Vector3>
 
   public Vector3(float x, float y, float z) { X = x; Y = y; Z = z; }
   public Vector3(float value) { X = Y = Z = value; }
+  /// <summary>(x, y, 0).</summary>
+  public Vector3(Vector2 v) { X = v.X; Y = v.Y; Z = 0; }
+  public Vector3(Vector3 v) { X = v.X; Y = v.Y; Z = v.Z; }
+  /// <summary>The first three components (w is dropped, not divided by).</summary>
+  public Vector3(Vector4 v) { X = v.X; Y = v.Y; Z = v.Z; }
+
+  public float this[int index]
+  {
+    readonly get => index switch { 0 => X, 1 => Y, 2 => Z, _ => throw new IndexOutOfRangeException($"Vector3 index {index} is outside 0..2.") };
+    set
+    {
+      switch (index)
+      {
+        case 0: X = value; break;
+        case 1: Y = value; break;
+        case 2: Z = value; break;
+        default: throw new IndexOutOfRangeException($"Vector3 index {index} is outside 0..2.");
+      }
+    }
+  }
 
   public readonly float Length => MathF.Sqrt(X * X + Y * Y + Z * Z);
   public readonly float LengthSquared => X * X + Y * Y + Z * Z;
+  public readonly float LengthFast => 1f / MathHelper.InverseSqrtFast(LengthSquared);
+
+  public Vector2 Xy { readonly get => new(X, Y); set { X = value.X; Y = value.Y; } }
+  public Vector2 Xz { readonly get => new(X, Z); set { X = value.X; Z = value.Y; } }
+  public Vector2 Yx { readonly get => new(Y, X); set { Y = value.X; X = value.Y; } }
+  public Vector2 Yz { readonly get => new(Y, Z); set { Y = value.X; Z = value.Y; } }
+  public Vector2 Zx { readonly get => new(Z, X); set { Z = value.X; X = value.Y; } }
+  public Vector2 Zy { readonly get => new(Z, Y); set { Z = value.X; Y = value.Y; } }
+  public Vector3 Xzy { readonly get => new(X, Z, Y); set { X = value.X; Z = value.Y; Y = value.Z; } }
+  public Vector3 Yxz { readonly get => new(Y, X, Z); set { Y = value.X; X = value.Y; Z = value.Z; } }
+  public Vector3 Yzx { readonly get => new(Y, Z, X); set { Y = value.X; Z = value.Y; X = value.Z; } }
+  public Vector3 Zxy { readonly get => new(Z, X, Y); set { Z = value.X; X = value.Y; Y = value.Z; } }
+  public Vector3 Zyx { readonly get => new(Z, Y, X); set { Z = value.X; Y = value.Y; X = value.Z; } }
+
   public void Normalize() { float s = 1f / Length; X *= s; Y *= s; Z *= s; }
+  public void NormalizeFast() { float s = MathHelper.InverseSqrtFast(LengthSquared); X *= s; Y *= s; Z *= s; }
   public readonly Vector3 Normalized() { float s = 1f / Length; return new(X * s, Y * s, Z * s); }
   public static float Dot(Vector3 a, Vector3 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
   public static Vector3 Cross(Vector3 a, Vector3 b) => new(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
@@ -44,6 +79,7 @@ public struct Vector3 : IEquatable<Vector3>
   public static Vector3 operator -(Vector3 a) => new(-a.X, -a.Y, -a.Z);
   public static Vector3 operator *(Vector3 a, float s) => new(a.X * s, a.Y * s, a.Z * s);
   public static Vector3 operator *(float s, Vector3 a) => new(a.X * s, a.Y * s, a.Z * s);
+  public static Vector3 operator *(Vector3 a, Vector3 b) => new(a.X * b.X, a.Y * b.Y, a.Z * b.Z);
   public static Vector3 operator /(Vector3 a, float s) => new(a.X / s, a.Y / s, a.Z / s);
   public static bool operator ==(Vector3 a, Vector3 b) => a.Equals(b);
   public static bool operator !=(Vector3 a, Vector3 b) => !a.Equals(b);

@@ -3,22 +3,53 @@ using System.Globalization;
 
 namespace OpenTK.Mathematics;
 
-/// <summary>Single-precision 4D vector (OpenTK's name), for animated properties.</summary>
+/// <summary>Single-precision 4D vector (OpenTK's name), for animated properties; also a row of <see cref="Matrix4"/>.</summary>
 [Serializable]
-public struct Vector4 : IEquatable<Vector4>
+public partial struct Vector4 : IEquatable<Vector4>
 {
   public float X, Y, Z, W;
 
   public static readonly Vector4 Zero = new(0, 0, 0, 0);
   public static readonly Vector4 One = new(1, 1, 1, 1);
+  public static readonly Vector4 UnitX = new(1, 0, 0, 0);
+  public static readonly Vector4 UnitY = new(0, 1, 0, 0);
+  public static readonly Vector4 UnitZ = new(0, 0, 1, 0);
+  public static readonly Vector4 UnitW = new(0, 0, 0, 1);
 
   public Vector4(float x, float y, float z, float w) { X = x; Y = y; Z = z; W = w; }
+  public Vector4(float value) { X = Y = Z = W = value; }
+  /// <summary>(x, y, 0, 0).</summary>
+  public Vector4(Vector2 v) { X = v.X; Y = v.Y; Z = 0; W = 0; }
+  /// <summary>(x, y, z, 0): a direction, as in OpenTK.</summary>
+  public Vector4(Vector3 v) { X = v.X; Y = v.Y; Z = v.Z; W = 0; }
   public Vector4(Vector3 v, float w) { X = v.X; Y = v.Y; Z = v.Z; W = w; }
+  public Vector4(Vector4 v) { X = v.X; Y = v.Y; Z = v.Z; W = v.W; }
+
+  public float this[int index]
+  {
+    readonly get => index switch { 0 => X, 1 => Y, 2 => Z, 3 => W, _ => throw new IndexOutOfRangeException($"Vector4 index {index} is outside 0..3.") };
+    set
+    {
+      switch (index)
+      {
+        case 0: X = value; break;
+        case 1: Y = value; break;
+        case 2: Z = value; break;
+        case 3: W = value; break;
+        default: throw new IndexOutOfRangeException($"Vector4 index {index} is outside 0..3.");
+      }
+    }
+  }
 
   public Vector3 Xyz { readonly get => new(X, Y, Z); set { X = value.X; Y = value.Y; Z = value.Z; } }
-  public readonly float LengthSquared => X * X + Y * Y + Z * Z + W * W;
-
   public readonly float Length => MathF.Sqrt(X * X + Y * Y + Z * Z + W * W);
+  public readonly float LengthSquared => X * X + Y * Y + Z * Z + W * W;
+  public readonly float LengthFast => 1f / MathHelper.InverseSqrtFast(LengthSquared);
+
+  public void Normalize() { float s = 1f / Length; X *= s; Y *= s; Z *= s; W *= s; }
+  public void NormalizeFast() { float s = MathHelper.InverseSqrtFast(LengthSquared); X *= s; Y *= s; Z *= s; W *= s; }
+  public readonly Vector4 Normalized() { Vector4 v = this; v.Normalize(); return v; }
+
   public static Vector4 Lerp(Vector4 a, Vector4 b, float t) => a + (b - a) * t;
 
   /// <summary>Row vector times matrix.</summary>
@@ -26,10 +57,18 @@ public struct Vector4 : IEquatable<Vector4>
   public static void Transform(ref Vector4 vec, ref Matrix4 mat, out Vector4 result) => result = Transform(vec, mat);
   public static Vector4 operator *(Vector4 vec, Matrix4 mat) => Transform(vec, mat);
 
+  /// <summary>Matrix times column vector: each row of the matrix dotted with the vector.</summary>
+  public static Vector4 Transform(Matrix4 mat, Vector4 vec) => new(Dot(mat.Row0, vec), Dot(mat.Row1, vec), Dot(mat.Row2, vec), Dot(mat.Row3, vec));
+  public static void Transform(ref Matrix4 mat, ref Vector4 vec, out Vector4 result) => result = Transform(mat, vec);
+  public static Vector4 operator *(Matrix4 mat, Vector4 vec) => Transform(mat, vec);
+
   public static Vector4 operator +(Vector4 a, Vector4 b) => new(a.X + b.X, a.Y + b.Y, a.Z + b.Z, a.W + b.W);
   public static Vector4 operator -(Vector4 a, Vector4 b) => new(a.X - b.X, a.Y - b.Y, a.Z - b.Z, a.W - b.W);
+  public static Vector4 operator -(Vector4 a) => new(-a.X, -a.Y, -a.Z, -a.W);
   public static Vector4 operator *(Vector4 a, float s) => new(a.X * s, a.Y * s, a.Z * s, a.W * s);
   public static Vector4 operator *(float s, Vector4 a) => new(a.X * s, a.Y * s, a.Z * s, a.W * s);
+  public static Vector4 operator *(Vector4 a, Vector4 b) => new(a.X * b.X, a.Y * b.Y, a.Z * b.Z, a.W * b.W);
+  public static Vector4 operator /(Vector4 a, float s) => new(a.X / s, a.Y / s, a.Z / s, a.W / s);
   public static bool operator ==(Vector4 a, Vector4 b) => a.Equals(b);
   public static bool operator !=(Vector4 a, Vector4 b) => !a.Equals(b);
 

@@ -60,4 +60,11 @@ public partial struct Vector4d
   public Vector4d Wyzx { readonly get => new(W, Y, Z, X); set { W = value.X; Y = value.Y; Z = value.Z; X = value.W; } }
   public Vector4d Wzxy { readonly get => new(W, Z, X, Y); set { W = value.X; Z = value.Y; X = value.Z; Y = value.W; } }
   public Vector4d Wzyx { readonly get => new(W, Z, Y, X); set { W = value.X; Z = value.Y; Y = value.Z; X = value.W; } }
+
+  // Four OpenTK 3 swizzles repeat a component (typos for permutations). Kept as OpenTK has them: the getter
+  // reads the letters named, the setter writes the first value to X and the others to the letters after the first.
+  public Vector4d Yyzw { readonly get => new(Y, Y, Z, W); set { X = value.X; Y = value.Y; Z = value.Z; W = value.W; } }
+  public Vector4d Yywz { readonly get => new(Y, Y, W, Z); set { X = value.X; Y = value.Y; W = value.Z; Z = value.W; } }
+  public Vector4d Zwzy { readonly get => new(Z, W, Z, Y); set { X = value.X; W = value.Y; Z = value.Z; Y = value.W; } }
+  public Vector4d Wzyw { readonly get => new(W, Z, Y, W); set { X = value.X; Z = value.Y; Y = value.Z; W = value.W; } }
 }

@@ -147,27 +147,54 @@ public class OpenTK3OperationsTests
 
 public class OpenTK3SwizzleTests
 {
-  /// <summary>Every swizzle property of Vector4d reads the components named, and writing it back changes nothing.</summary>
-  [Fact]
-  public void Every_Vector4d_swizzle_reads_its_components_in_order_and_writes_them_back()
+  static double Component(object vector, char name) => Convert.ToDouble(vector.GetType().GetField(name.ToString().ToUpperInvariant())!.GetValue(vector));
+
+  /// <summary>
+  /// Every swizzle property (two to four distinct letters) reads the components named, in order, and writing
+  /// the value read back changes nothing; <paramref name="count"/> is how many the type has.
+  /// </summary>
+  [Theory]
+  [InlineData(typeof(Vector4d), 12 + 24 + 23)]  // ordered pairs, triples, and the 24 orders of four but Xyzw (OpenTK has none)
+  [InlineData(typeof(Vector4), 12 + 24 + 23)]
+  [InlineData(typeof(Vector3), 6 + 5)]          // pairs, and the orders of three but Xyz
+  [InlineData(typeof(Vector3d), 6 + 5)]
+  [InlineData(typeof(Vector2), 1)]
+  [InlineData(typeof(Vector2d), 1)]
+  public void Every_swizzle_reads_its_components_in_order_and_writes_them_back(Type type, int count)
   {
-    var v = new Vector4d(1, 2, 3, 4);
-    int count = 0;
-    foreach (var p in typeof(Vector4d).GetProperties())
+    object v = Activator.CreateInstance(type)!;
+    foreach (char c in "XYZW".Take(type.GetFields().Count(f => !f.IsStatic)))
+      type.GetField(c.ToString())!.SetValue(v, Convert.ChangeType("XYZW".IndexOf(c) + 1, type.GetField(c.ToString())!.FieldType));
+    int found = 0;
+    foreach (var p in type.GetProperties())
     {
       string name = p.Name;
-      if (name.Length < 2 || name.Length > 4 || !name.ToUpperInvariant().All("XYZW".Contains) || name.Distinct().Count() != name.Length)
+      if (name.Length < 2 || name.Length > 4 || !name.ToUpperInvariant().All("XYZW".Contains) || name.ToUpperInvariant().Distinct().Count() != name.Length)
         continue;
-      object boxed = v;
-      object value = p.GetValue(boxed)!;
-      double[] got = name.Select((_, i) => (double)value.GetType().GetField("XYZW"[i].ToString())!.GetValue(value)!).ToArray();
-      Assert.Equal(name.ToUpperInvariant().Select(c => (double)("XYZW".IndexOf(c) + 1)).ToArray(), got);
-      p.SetValue(boxed, value);
-      Assert.Equal(v, (Vector4d)boxed);
-      count++;
+      object value = p.GetValue(v)!;
+      Assert.Equal(name.ToUpperInvariant().Select(c => (double)("XYZW".IndexOf(c) + 1)).ToArray(), name.Select((_, i) => Component(value, "XYZW"[i])).ToArray());
+      object before = v.ToString()!;
+      p.SetValue(v, value);
+      Assert.Equal(before, v.ToString());
+      found++;
     }
-    Assert.Equal(12 + 24 + 23, count);  // ordered pairs, triples, and the 24 orders of four but Xyzw (OpenTK has none)
-    var w = new Vector2d(1, 2) { Yx = new Vector2d(5, 6) };
-    Assert.Equal(new Vector2d(6, 5), w);
+    Assert.Equal(count, found);
+  }
+
+  /// <summary>OpenTK 3's four swizzles that repeat a letter: the getter reads the letters, the setter writes X then the letters after the first.</summary>
+  [Theory]
+  [InlineData("Yyzw", 2, 2, 3, 4, 10, 20, 30, 40)]
+  [InlineData("Yywz", 2, 2, 4, 3, 10, 20, 40, 30)]
+  [InlineData("Zwzy", 3, 4, 3, 2, 10, 40, 30, 20)]
+  [InlineData("Wzyw", 4, 3, 2, 4, 10, 30, 20, 40)]
+  public void Repeating_swizzles_keep_OpenTKs_getter_and_setter(string name, float gx, float gy, float gz, float gw, float sx, float sy, float sz, float sw)
+  {
+    object f = new Vector4(1, 2, 3, 4), d = new Vector4d(1, 2, 3, 4);
+    Assert.Equal(new Vector4(gx, gy, gz, gw), typeof(Vector4).GetProperty(name)!.GetValue(f));
+    Assert.Equal(new Vector4d(gx, gy, gz, gw), typeof(Vector4d).GetProperty(name)!.GetValue(d));
+    typeof(Vector4).GetProperty(name)!.SetValue(f, new Vector4(10, 20, 30, 40));
+    typeof(Vector4d).GetProperty(name)!.SetValue(d, new Vector4d(10, 20, 30, 40));
+    Assert.Equal(new Vector4(sx, sy, sz, sw), f);
+    Assert.Equal(new Vector4d(sx, sy, sz, sw), d);
   }
 }

@@ -1,0 +1,63 @@
+namespace OpenTK.Mathematics;
+
+// OpenTK 3's remaining static members of the float Matrix4: the out-parameter creators, projections,
+// element-wise arithmetic and the ref/out twins. The arithmetic is Matrix4d's, rounded back to float.
+public partial struct Matrix4
+{
+  public static void CreateFromAxisAngle(Vector3 axis, float angle, out Matrix4 result) => result = CreateFromAxisAngle(axis, angle);
+  public static void CreateRotationX(float angle, out Matrix4 result) => result = CreateRotationX(angle);
+  public static void CreateRotationY(float angle, out Matrix4 result) => result = CreateRotationY(angle);
+  public static void CreateRotationZ(float angle, out Matrix4 result) => result = CreateRotationZ(angle);
+  public static void CreateScale(float scale, out Matrix4 result) => result = CreateScale(scale);
+  public static void CreateScale(float x, float y, float z, out Matrix4 result) => result = CreateScale(x, y, z);
+  public static void CreateScale(ref Vector3 scale, out Matrix4 result) => result = CreateScale(scale);
+  public static void CreateTranslation(float x, float y, float z, out Matrix4 result) => result = CreateTranslation(x, y, z);
+  public static void CreateTranslation(ref Vector3 vector, out Matrix4 result) => result = CreateTranslation(vector);
+
+  public static Matrix4 CreateOrthographic(float width, float height, float zNear, float zFar) =>
+    (Matrix4)Matrix4d.CreateOrthographic(width, height, zNear, zFar);
+  public static void CreateOrthographic(float width, float height, float zNear, float zFar, out Matrix4 result) =>
+    result = CreateOrthographic(width, height, zNear, zFar);
+  public static Matrix4 CreateOrthographicOffCenter(float left, float right, float bottom, float top, float zNear, float zFar) =>
+    (Matrix4)Matrix4d.CreateOrthographicOffCenter(left, right, bottom, top, zNear, zFar);
+  public static void CreateOrthographicOffCenter(float left, float right, float bottom, float top, float zNear, float zFar, out Matrix4 result) =>
+    result = CreateOrthographicOffCenter(left, right, bottom, top, zNear, zFar);
+  public static void CreatePerspectiveFieldOfView(float fovy, float aspect, float zNear, float zFar, out Matrix4 result) =>
+    result = CreatePerspectiveFieldOfView(fovy, aspect, zNear, zFar);
+  public static Matrix4 CreatePerspectiveOffCenter(float left, float right, float bottom, float top, float zNear, float zFar) =>
+    (Matrix4)Matrix4d.CreatePerspectiveOffCenter(left, right, bottom, top, zNear, zFar);
+  public static void CreatePerspectiveOffCenter(float left, float right, float bottom, float top, float zNear, float zFar, out Matrix4 result) =>
+    result = CreatePerspectiveOffCenter(left, right, bottom, top, zNear, zFar);
+
+  public static Matrix4 LookAt(float eyeX, float eyeY, float eyeZ, float targetX, float targetY, float targetZ, float upX, float upY, float upZ) =>
+    LookAt(new Vector3(eyeX, eyeY, eyeZ), new Vector3(targetX, targetY, targetZ), new Vector3(upX, upY, upZ));
+
+  public static Matrix4 operator +(Matrix4 a, Matrix4 b) => new(a.Row0 + b.Row0, a.Row1 + b.Row1, a.Row2 + b.Row2, a.Row3 + b.Row3);
+  public static Matrix4 operator -(Matrix4 a, Matrix4 b) => new(a.Row0 - b.Row0, a.Row1 - b.Row1, a.Row2 - b.Row2, a.Row3 - b.Row3);
+  public static Matrix4 operator *(Matrix4 m, float s) => new(m.Row0 * s, m.Row1 * s, m.Row2 * s, m.Row3 * s);
+
+  public static Matrix4 Add(Matrix4 left, Matrix4 right) => left + right;
+  public static void Add(ref Matrix4 left, ref Matrix4 right, out Matrix4 result) => result = left + right;
+  public static Matrix4 Subtract(Matrix4 left, Matrix4 right) => left - right;
+  public static void Subtract(ref Matrix4 left, ref Matrix4 right, out Matrix4 result) => result = left - right;
+  public static Matrix4 Mult(Matrix4 left, float right) => left * right;
+  public static void Mult(ref Matrix4 left, float right, out Matrix4 result) => result = left * right;
+  public static void Mult(ref Matrix4 left, ref Matrix4 right, out Matrix4 result) => result = left * right;
+  public static void Invert(ref Matrix4 mat, out Matrix4 result) => result = Invert(mat);
+  public static void Transpose(ref Matrix4 mat, out Matrix4 result) => result = Transpose(mat);
+
+  /// <summary>The rotation of <paramref name="q"/> for row vectors (<c>v · M</c> rotates v as q does); q need not be unit length.</summary>
+  public static Matrix4 CreateFromQuaternion(Quaternion q)
+  {
+    float s = 2f / q.LengthSquared;
+    float xx = q.X * q.X, yy = q.Y * q.Y, zz = q.Z * q.Z;
+    float xy = q.X * q.Y, xz = q.X * q.Z, yz = q.Y * q.Z, xw = q.X * q.W, yw = q.Y * q.W, zw = q.Z * q.W;
+    return new Matrix4(
+      1f - s * (yy + zz), s * (xy + zw), s * (xz - yw), 0,
+      s * (xy - zw), 1f - s * (xx + zz), s * (yz + xw), 0,
+      s * (xz + yw), s * (yz - xw), 1f - s * (xx + yy), 0,
+      0, 0, 0, 1);
+  }
+
+  public static void CreateFromQuaternion(ref Quaternion q, out Matrix4 result) => result = CreateFromQuaternion(q);
+}
