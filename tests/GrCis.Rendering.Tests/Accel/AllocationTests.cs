@@ -75,7 +75,6 @@ public class AllocationTests
   {
     IRayScene scene = TestScenes.Flake9(2);
     var f = new RayTracing(scene);
-    Intersection.countRays = 0;
     double perPixel = BytesPerPixel(scene, f, 300, 200, 16);
     output.WriteLine($"flake (reflections): {perPixel:F1} B/pixel");
     // Up to ~1.3 hits per pixel here (primary + ks-weighted reflections): still nothing per hit.
