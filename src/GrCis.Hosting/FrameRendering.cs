@@ -31,18 +31,7 @@ public static class FrameRendering
       progress?.Invoke(p);
     }, cancel, context);
     clock.Stop();
-    var statistics = new RenderStatistics
-    {
-      Elapsed = clock.Elapsed,
-      Width = renderer.Width,
-      Height = renderer.Height,
-      Threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tilesTotal)),
-      SamplesPerPixel = renderer.SamplesPerPixel,
-      Rays = context.Rays,
-      Intersections = context.Hits,
-      TilesDone = tilesDone,
-      TilesTotal = tilesTotal,
-    };
-    return new FrameResult(image, statistics, cancel.IsCancellationRequested);
+    return new FrameResult(image, RenderStatistics.Of(renderer, options, context, clock.Elapsed, tilesDone, tilesTotal),
+                           cancel.IsCancellationRequested);
   }
 }

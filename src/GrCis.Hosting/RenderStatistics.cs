@@ -1,5 +1,7 @@
 using System;
 using System.Globalization;
+using Rendering;
+using Rendering.Execution;
 
 namespace GrCis.Hosting;
 
@@ -20,6 +22,24 @@ public sealed record RenderStatistics
 
   public int TilesDone { get; init; }
   public int TilesTotal { get; init; }
+
+  /// <summary>
+  /// The statistics of a tile render by <paramref name="renderer"/> with <paramref name="options"/>: rays and hits
+  /// from its <paramref name="context"/>, threads as many as were useful (at most one per tile).
+  /// </summary>
+  public static RenderStatistics Of(ImageSynthesizer renderer, RenderOptions options, RenderContext context, TimeSpan elapsed,
+                                    int tilesDone, int tilesTotal) => new()
+  {
+    Elapsed = elapsed,
+    Width = renderer.Width,
+    Height = renderer.Height,
+    Threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tilesTotal)),
+    SamplesPerPixel = renderer.SamplesPerPixel,
+    Rays = context.Rays,
+    Intersections = context.Hits,
+    TilesDone = tilesDone,
+    TilesTotal = tilesTotal,
+  };
 
   public double RaysPerSecond => Elapsed.TotalSeconds > 0 ? Rays / Elapsed.TotalSeconds : 0.0;
 

@@ -100,7 +100,7 @@ public sealed class RenderSession : IDisposable
     CancellationToken token = cancel.Token;
     var clock = Stopwatch.StartNew();
     live = new FloatImage(job.Width, job.Height);
-    int tilesTotal = TileRenderer.MakeTiles(job.Width, job.Height, options.TileSize).Count;
+    int tilesTotal = TileCount();
 
     ImageSynthesizer inner = job.Renderer;
     FloatImage? image = null;
@@ -144,18 +144,7 @@ public sealed class RenderSession : IDisposable
       tiles = finished.ToArray();
     image ??= KeepTiles(live, tiles);
 
-    var stats = new RenderStatistics
-    {
-      Elapsed = clock.Elapsed,
-      Width = job.Width,
-      Height = job.Height,
-      Threads = Math.Clamp(options.EffectiveThreads, 1, Math.Max(1, tilesTotal)),
-      SamplesPerPixel = inner.SamplesPerPixel,
-      Rays = context.Rays,
-      Intersections = context.Hits,
-      TilesDone = tiles.Length,
-      TilesTotal = tilesTotal,
-    };
+    RenderStatistics stats = RenderStatistics.Of(inner, options, context, clock.Elapsed, tiles.Length, tilesTotal);
     bool cancelled = token.IsCancellationRequested && tiles.Length < tilesTotal;
     return new RenderResult(job, new FrameResult(image, stats, cancelled), tiles, error);
   }
