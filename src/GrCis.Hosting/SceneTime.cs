@@ -1,4 +1,3 @@
-using System.Collections.Generic;
 using Rendering;
 
 namespace GrCis.Hosting;
@@ -10,11 +9,6 @@ namespace GrCis.Hosting;
 /// </summary>
 public static class SceneTime
 {
-  /// <summary>True when setting a time can change anything in <paramref name="scene"/>.</summary>
-  public static bool IsAnimated(IRayScene scene) =>
-    scene is ITimeDependent || scene.Animator != null || scene.Intersectable is ITimeDependent ||
-    scene.Background is ITimeDependent || scene.Camera is ITimeDependent || AnyTimeDependent(scene.Sources);
-
   public static void Set(IRayScene scene, double time)
   {
     MT.time = time;
@@ -35,15 +29,5 @@ public static class SceneTime
       foreach (ILightSource l in scene.Sources)
         if (l is ITimeDependent lt)
           lt.Time = time;
-  }
-
-  static bool AnyTimeDependent(ICollection<ILightSource>? sources)
-  {
-    if (sources == null)
-      return false;
-    foreach (ILightSource l in sources)
-      if (l is ITimeDependent)
-        return true;
-    return false;
   }
 }

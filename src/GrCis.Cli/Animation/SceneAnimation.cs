@@ -12,7 +12,7 @@ public static class SceneAnimation
   /// </summary>
   public static IRayScene AsTimeDependent(IRayScene scene)
   {
-    if (scene is ITimeDependent || !HasTimeDependentParts(scene))
+    if (scene is ITimeDependent || !SceneCloner.HasTimeDependentParts(scene))
       return scene;
     var animated = new AnimatedRayScene
     {
@@ -29,16 +29,5 @@ public static class SceneAnimation
       animated.End = scene.Animator.End;
     }
     return animated;
-  }
-
-  static bool HasTimeDependentParts(IRayScene scene)
-  {
-    if (scene.Animator != null || scene.Intersectable is ITimeDependent || scene.Background is ITimeDependent || scene.Camera is ITimeDependent)
-      return true;
-    if (scene.Sources != null)
-      foreach (ILightSource light in scene.Sources)
-        if (light is ITimeDependent)
-          return true;
-    return false;
   }
 }

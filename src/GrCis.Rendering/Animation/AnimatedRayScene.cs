@@ -65,19 +65,7 @@ public class AnimatedRayScene : DefaultRayScene, ITimeDependent
   }
 
   /// <summary>True when any part would change with time (the animator, geometry, background, camera or a light).</summary>
-  public virtual bool HasTimeDependentParts
-  {
-    get
-    {
-      if (Animator != null || Intersectable is ITimeDependent || Background is ITimeDependent || Camera is ITimeDependent)
-        return true;
-      if (Sources != null)
-        foreach (ILightSource light in Sources)
-          if (light is ITimeDependent)
-            return true;
-      return false;
-    }
-  }
+  public virtual bool HasTimeDependentParts => SceneCloner.HasTimeDependentParts(this);
 
   /// <summary>A scene at the same time with its own copies of the time-dependent parts; the rest is shared.</summary>
   public virtual object Clone()

@@ -23,4 +23,17 @@ public static class SceneCloner
     ITimeDependent => true,
     _ => false,
   };
+
+  /// <summary>True when any part of <paramref name="scene"/> would change with time (the animator, geometry, background, camera or a light).</summary>
+  public static bool HasTimeDependentParts(IRayScene scene)
+  {
+    ArgumentNullException.ThrowIfNull(scene);
+    if (scene.Animator != null || scene.Intersectable is ITimeDependent || scene.Background is ITimeDependent || scene.Camera is ITimeDependent)
+      return true;
+    if (scene.Sources != null)
+      foreach (ILightSource light in scene.Sources)
+        if (light is ITimeDependent)
+          return true;
+    return false;
+  }
 }
