@@ -254,16 +254,7 @@ public sealed class DemoController : IDisposable
     }
   }
 
-  void Raise<T>(EventHandler<T>? handler, T args)
-  {
-    if (handler == null)
-      return;
-    SynchronizationContext? ctx = EventContext;
-    if (ctx == null)
-      handler(this, args);
-    else
-      ctx.Post(_ => handler(this, args), null);
-  }
+  void Raise<T>(EventHandler<T>? handler, T args) => EventContext.Raise(handler, this, args);
 
   public void Dispose()
   {

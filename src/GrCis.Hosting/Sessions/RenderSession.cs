@@ -236,14 +236,5 @@ public sealed class RenderSession : IDisposable
     return tileCount;
   }
 
-  void Raise<T>(EventHandler<T>? handler, T args) where T : EventArgs
-  {
-    if (handler == null)
-      return;
-    SynchronizationContext? ctx = EventContext;
-    if (ctx == null)
-      handler(this, args);
-    else
-      ctx.Post(_ => handler(this, args), null);
-  }
+  void Raise<T>(EventHandler<T>? handler, T args) => EventContext.Raise(handler, this, args);
 }
