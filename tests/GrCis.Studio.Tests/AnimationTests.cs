@@ -11,18 +11,8 @@ namespace GrCis.Studio.Tests;
 /// <summary>Animation in the studio: a time range's frames rendered with progress, kept for scrubbing, written into an allowed folder only.</summary>
 public sealed class AnimationTests(StudioFixture studio) : IClassFixture<StudioFixture>
 {
-  async Task<JsonElement> WaitForFrames()
-  {
-    var deadline = DateTime.UtcNow + TimeSpan.FromSeconds(60);
-    while (DateTime.UtcNow < deadline)
-    {
-      JsonElement a = await studio.Client.GetFromJsonAsync<JsonElement>("/api/animation");
-      if (!a.GetProperty("running").GetBoolean())
-        return a;
-      await Task.Delay(50);
-    }
-    throw new TimeoutException("the animation did not finish");
-  }
+  Task<JsonElement> WaitForFrames() =>
+    studio.PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the end of the animation");
 
   [Fact]
   public async Task Frames_of_a_range_are_rendered_kept_for_scrubbing_and_written_to_the_folder()

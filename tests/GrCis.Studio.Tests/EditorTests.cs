@@ -14,18 +14,7 @@ public sealed class EditorTests(StudioFixture studio) : IClassFixture<StudioFixt
 {
   const string Good = "Rendering.Scenes.FiveBalls(scene);\n";
 
-  async Task<JsonElement> WaitFor(Func<JsonElement, bool> done)
-  {
-    var deadline = DateTime.UtcNow + TimeSpan.FromSeconds(60);
-    while (DateTime.UtcNow < deadline)
-    {
-      JsonElement status = await studio.Client.GetFromJsonAsync<JsonElement>("/api/status");
-      if (done(status))
-        return status;
-      await Task.Delay(50);
-    }
-    throw new TimeoutException("the studio did not get there");
-  }
+  Task<JsonElement> WaitFor(Func<JsonElement, bool> done) => studio.PollUntil("/api/status", done, "the expected status");
 
   Task<HttpResponseMessage> Save(string text) =>
     studio.Client.PutAsync("/api/source?scene=Balls", new StringContent(text, Encoding.UTF8, "text/plain"));
@@ -33,7 +22,7 @@ public sealed class EditorTests(StudioFixture studio) : IClassFixture<StudioFixt
   [Fact]
   public async Task A_saved_typo_is_shown_at_its_line_and_column_and_the_fix_renders_a_new_image()
   {
-    await RenderTests.RenderAndWait(studio, new { scene = "Balls", settings = new { width = 32, height = 24 } });
+    await studio.RenderAndWait(new { scene = "Balls", settings = new { width = 32, height = 24 } });
     int before = (await studio.Client.GetFromJsonAsync<JsonElement>("/api/status")).GetProperty("version").GetInt32();
 
     using (HttpResponseMessage saved = await Save("// a comment line\nRendering.Scenes.FiveBals(scene);\n"))
@@ -56,7 +45,7 @@ public sealed class EditorTests(StudioFixture studio) : IClassFixture<StudioFixt
   [Fact]
   public async Task A_save_by_another_editor_re_renders()
   {
-    await RenderTests.RenderAndWait(studio, new { scene = "Balls", settings = new { width = 32, height = 24 } });
+    await studio.RenderAndWait(new { scene = "Balls", settings = new { width = 32, height = 24 } });
     int before = (await studio.Client.GetFromJsonAsync<JsonElement>("/api/status")).GetProperty("version").GetInt32();
     File.WriteAllText(Path.Combine(studio.ScriptsFolder, "Balls.cs"), "Rendering.Scenes.Flags(scene);\n");
     await WaitFor(s => !s.GetProperty("rendering").GetBoolean() && s.GetProperty("version").GetInt32() > before &&

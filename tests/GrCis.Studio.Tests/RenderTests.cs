@@ -13,22 +13,7 @@ namespace GrCis.Studio.Tests;
 /// <summary>Rendering through the studio: the final image is <c>grcis render</c>'s, byte for byte; probe, errors, scripts.</summary>
 public sealed class RenderTests(StudioFixture studio) : IClassFixture<StudioFixture>
 {
-  internal static Task<JsonElement> RenderAndWait(StudioFixture studio, object body) => new RenderTests(studio).RenderAndWait(body);
-
-  async Task<JsonElement> RenderAndWait(object body)
-  {
-    using HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", body);
-    Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
-    var deadline = DateTime.UtcNow + TimeSpan.FromSeconds(60);
-    while (DateTime.UtcNow < deadline)
-    {
-      JsonElement status = await studio.Client.GetFromJsonAsync<JsonElement>("/api/status");
-      if (!status.GetProperty("rendering").GetBoolean() && status.GetProperty("statistics").GetString() is { Length: > 0 })
-        return status;
-      await Task.Delay(50);
-    }
-    throw new TimeoutException("the studio's render did not finish");
-  }
+  Task<JsonElement> RenderAndWait(object body) => studio.RenderAndWait(body);
 
   [Fact]
   public async Task The_final_image_equals_grcis_renders_png_byte_for_byte()

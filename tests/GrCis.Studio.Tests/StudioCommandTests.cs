@@ -11,21 +11,27 @@ namespace GrCis.Studio.Tests;
 /// <summary><c>grcis studio</c>: one line with the URL on stdout, serves until Ctrl+C, then exits 130.</summary>
 public class StudioCommandTests
 {
-  [Fact]
-  public async Task Studio_prints_its_url_serves_and_exits_130_on_ctrl_c()
+  /// <summary>Runs <c>grcis studio</c> with <paramref name="options"/> in the background until its URL line is out (15 s at most).</summary>
+  static async Task<(Task<int> Run, string Url, StringWriter Error)> Start(CancellationTokenSource cancel, params string[] options)
   {
     var output = new StringWriter();
     var error = new StringWriter();
-    using var cancel = new CancellationTokenSource();
     var env = new CliEnvironment(TextWriter.Synchronized(output), TextWriter.Synchronized(error)) { Cancel = cancel.Token };
-    Task<int> run = Task.Run(() => Program.Run(["studio", "--port", "0", "--no-open"], env));
-
+    Task<int> run = Task.Run(() => Program.Run(["studio", .. options], env));
     string url = "";
     for (int i = 0; i < 300 && url.Length == 0 && !run.IsCompleted; i++)
     {
       await Task.Delay(50);
       url = output.ToString().Trim();
     }
+    return (run, url, error);
+  }
+
+  [Fact]
+  public async Task Studio_prints_its_url_serves_and_exits_130_on_ctrl_c()
+  {
+    using var cancel = new CancellationTokenSource();
+    (Task<int> run, string url, _) = await Start(cancel, "--port", "0", "--no-open");
     Assert.Matches(@"^http://127\.0\.0\.1:\d+/\?token=[0-9a-f]{32}$", url);
     using (var client = new HttpClient())
     {
@@ -42,17 +48,8 @@ public class StudioCommandTests
   [Fact]
   public async Task A_host_other_than_loopback_warns_and_still_needs_the_token()
   {
-    var output = new StringWriter();
-    var error = new StringWriter();
     using var cancel = new CancellationTokenSource();
-    var env = new CliEnvironment(TextWriter.Synchronized(output), TextWriter.Synchronized(error)) { Cancel = cancel.Token };
-    Task<int> run = Task.Run(() => Program.Run(["studio", "--host", "0.0.0.0", "--port", "0", "--no-open"], env));
-    string url = "";
-    for (int i = 0; i < 300 && url.Length == 0 && !run.IsCompleted; i++)
-    {
-      await Task.Delay(50);
-      url = output.ToString().Trim();
-    }
+    (Task<int> run, string url, StringWriter error) = await Start(cancel, "--host", "0.0.0.0", "--port", "0", "--no-open");
     Assert.Contains("warning: --host 0.0.0.0", error.ToString());
     var uri = new Uri(url);
     using (var client = new HttpClient())

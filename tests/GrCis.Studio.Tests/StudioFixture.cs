@@ -1,7 +1,10 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Net;
 using System.Net.Http;
+using System.Net.Http.Json;
+using System.Text.Json;
 using System.Threading.Tasks;
 
 namespace GrCis.Studio.Tests;
@@ -33,6 +36,29 @@ public sealed class StudioFixture : IAsyncLifetime
     Client = new HttpClient { BaseAddress = new Uri(root) };
     Client.DefaultRequestHeaders.Add(AccessGuard.HeaderName, Server.Token);
     Stranger = new HttpClient { BaseAddress = new Uri(root) };
+  }
+
+  /// <summary>Polls <c>GET <paramref name="path"/></c> until <paramref name="done"/> holds for its JSON (60 s at most).</summary>
+  public async Task<JsonElement> PollUntil(string path, Func<JsonElement, bool> done, string what)
+  {
+    var deadline = DateTime.UtcNow + TimeSpan.FromSeconds(60);
+    while (DateTime.UtcNow < deadline)
+    {
+      JsonElement answer = await Client.GetFromJsonAsync<JsonElement>(path);
+      if (done(answer))
+        return answer;
+      await Task.Delay(50);
+    }
+    throw new TimeoutException($"the studio did not get to {what}");
+  }
+
+  /// <summary>Asks for a render and waits until it has finished; returns the status then.</summary>
+  public async Task<JsonElement> RenderAndWait(object body)
+  {
+    using HttpResponseMessage started = await Client.PostAsJsonAsync("/api/render", body);
+    Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    return await PollUntil("/api/status",
+      s => !s.GetProperty("rendering").GetBoolean() && s.GetProperty("statistics").GetString() is { Length: > 0 }, "the end of the render");
   }
 
   public async Task DisposeAsync()

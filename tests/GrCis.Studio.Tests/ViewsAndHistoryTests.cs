@@ -13,7 +13,7 @@ public sealed class ViewsAndHistoryTests(StudioFixture studio) : IClassFixture<S
   [Fact]
   public async Task Extra_views_are_computed_after_a_render_and_served_as_png_csv_ply_and_read_out()
   {
-    await RenderTests.RenderAndWait(studio, new { scene = "Five balls", settings = new { width = 40, height = 30 } });
+    await studio.RenderAndWait(new { scene = "Five balls", settings = new { width = 40, height = 30 } });
     using HttpResponseMessage computed = await studio.Client.PostAsync("/api/views", null);
     Assert.Equal(HttpStatusCode.OK, computed.StatusCode);
     JsonElement info = await computed.Content.ReadFromJsonAsync<JsonElement>();
@@ -39,9 +39,9 @@ public sealed class ViewsAndHistoryTests(StudioFixture studio) : IClassFixture<S
   [Fact]
   public async Task Back_and_forward_show_the_earlier_and_later_renders()
   {
-    await RenderTests.RenderAndWait(studio, new { scene = "Five balls", settings = new { width = 24, height = 16 } });
+    await studio.RenderAndWait(new { scene = "Five balls", settings = new { width = 24, height = 16 } });
     byte[] first = await studio.Client.GetByteArrayAsync("/api/image.png");
-    await RenderTests.RenderAndWait(studio, new { scene = "Flags", settings = new { width = 24, height = 16 } });
+    await studio.RenderAndWait(new { scene = "Flags", settings = new { width = 24, height = 16 } });
     byte[] second = await studio.Client.GetByteArrayAsync("/api/image.png");
     Assert.NotEqual(first, second);
 
