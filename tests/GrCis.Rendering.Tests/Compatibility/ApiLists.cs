@@ -45,5 +45,27 @@ static class ApiLists
     : scope.EndsWith(' ') ? member.StartsWith(scope, StringComparison.Ordinal)
     : member == scope || member.StartsWith(scope + "(", StringComparison.Ordinal);
 
+  /// <summary>
+  /// The listed members that are missing without a reason, and those that exist although a pending line still names
+  /// them (the line must go: the lists only shrink). <paramref name="reasonOf"/> gives the line covering a member
+  /// (its scope and reason), or null.
+  /// </summary>
+  public static (List<string> Missing, List<string> Stale) Gaps<T>(IEnumerable<T> members, Func<T, bool> exists,
+                                                                 Func<T, (string Scope, string Reason)?> reasonOf) where T : notnull
+  {
+    var missing = new List<string>();
+    var stale = new List<string>();
+    foreach (T m in members)
+    {
+      (string Scope, string Reason)? why = reasonOf(m);
+      bool present = exists(m);
+      if (!present && why == null)
+        missing.Add(m.ToString()!);
+      else if (present && why is { } w && IsPending(w.Reason))
+        stale.Add($"{m} (exists now: remove or narrow the pending line '{w.Scope}')");
+    }
+    return (missing, stale);
+  }
+
   public static bool IsPending(string reason) => reason.StartsWith("pending", StringComparison.Ordinal);
 }

@@ -135,17 +135,8 @@ public class OpenTkApiSurfaceTests
     List<Reason> reasons = Reasons();
     Assert.True(members.Count > 1000, "the OpenTK 3 list looks truncated");
 
-    var missing = new List<string>();
-    var stale = new List<string>();
-    foreach (Member m in members)
-    {
-      Reason? why = reasons.FirstOrDefault(r => r.Covers(m));
-      bool exists = Exists(m);
-      if (!exists && why == null)
-        missing.Add(m.ToString());
-      else if (exists && why != null && ApiLists.IsPending(why.Why))
-        stale.Add($"{m} (exists now: remove or narrow the pending line '{why.Scope}')");
-    }
+    (List<string> missing, List<string> stale) = ApiLists.Gaps(members, Exists,
+      m => reasons.FirstOrDefault(r => r.Covers(m)) is { } r ? (r.Scope, r.Why) : null);
     Assert.True(missing.Count == 0, $"{missing.Count} OpenTK 3 members are missing:\n" + string.Join("\n", missing));
     Assert.True(stale.Count == 0, "pending lines that are no longer gaps:\n" + string.Join("\n", stale));
   }
