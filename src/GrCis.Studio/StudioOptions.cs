@@ -22,4 +22,10 @@ public sealed record StudioOptions
 
   /// <summary>True when <see cref="Host"/> is a loopback address (or <c>localhost</c>).</summary>
   public bool IsLoopback => Host is "127.0.0.1" or "localhost" or "::1" or "[::1]";
+
+  /// <summary>True when <see cref="Host"/> means every interface (0.0.0.0 or ::).</summary>
+  public bool IsAnyAddress => Host is "0.0.0.0" or "::" or "[::]";
+
+  /// <summary>How the address is written in a URL or Host header: an IPv6 address in brackets.</summary>
+  public static string UrlHost(string host) => host.Contains(':') && !host.StartsWith('[') ? $"[{host}]" : host;
 }

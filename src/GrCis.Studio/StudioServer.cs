@@ -97,9 +97,8 @@ public sealed class StudioServer : IAsyncDisposable
 
     int port = app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses
       .Select(a => new Uri(a.Replace("+", "localhost", StringComparison.Ordinal).Replace("*", "localhost", StringComparison.Ordinal)).Port).First();
-    bool anyAddress = options.Host is "0.0.0.0" or "::" or "[::]";
-    Volatile.Write(ref guard, new AccessGuard(token, AccessGuard.HostsFor(options.Host, port, options.IsLoopback), anyAddress ? port : 0));
-    string shown = options.IsLoopback ? "127.0.0.1" : options.Host.Contains(':') && !options.Host.StartsWith('[') ? $"[{options.Host}]" : options.Host;
+    Volatile.Write(ref guard, new AccessGuard(token, AccessGuard.HostsFor(options.Host, port, options.IsLoopback), options.IsAnyAddress ? port : 0));
+    string shown = options.IsLoopback ? "127.0.0.1" : StudioOptions.UrlHost(options.Host);
     return new StudioServer(app, session, token, $"http://{shown}:{port}/?token={token}");
   }
 

@@ -41,7 +41,7 @@ public sealed class AccessGuard
       foreach (string name in new[] { "127.0.0.1", "localhost", "[::1]" })
         yield return $"{name}:{port}";
     else
-      yield return (host.Contains(':') && !host.StartsWith('[') ? $"[{host}]" : host) + $":{port}";
+      yield return $"{StudioOptions.UrlHost(host)}:{port}";
   }
 
   /// <summary>Refuses a request that fails a rule (403 for Host or Origin, 401 without the token); else passes it on.</summary>
