@@ -183,51 +183,55 @@ public sealed class ExtraViews
   /// <summary>Saves the map image as PNG (atomically).</summary>
   public void SavePng(MapKind kind, string path) => PngFile.Save(path, ToImage(kind), 1.0);
 
-  /// <summary>Saves the map's values as CSV: <c>x,y,value</c> (or <c>x,y,nx,ny,nz</c> for absolute normals); no hit = empty.</summary>
-  public void SaveCsv(MapKind kind, string path)
+  /// <summary>Saves the map's values as CSV (atomically; see <see cref="WriteCsv"/>).</summary>
+  public void SaveCsv(MapKind kind, string path) => AtomicText.Write(path, w => WriteCsv(kind, w));
+
+  /// <summary>Writes the map's values as CSV: <c>x,y,value</c> (or <c>x,y,nx,ny,nz</c> for absolute normals); no hit = empty.</summary>
+  public void WriteCsv(MapKind kind, TextWriter w)
   {
-    AtomicText.Write(path, w =>
+    var c = CultureInfo.InvariantCulture;
+    w.WriteLine(kind switch
     {
-      var c = CultureInfo.InvariantCulture;
-      w.WriteLine(kind switch
-      {
-        MapKind.Depth => "x,y,depth",
-        MapKind.NormalRelative => "x,y,angle_deg",
-        MapKind.NormalAbsolute => "x,y,nx,ny,nz",
-        MapKind.PrimaryRays => "x,y,primary_rays",
-        _ => "x,y,all_rays",
-      });
-      for (int y = 0; y < Height; y++)
-        for (int x = 0; x < Width; x++)
-        {
-          w.Write(x.ToString(c));
-          w.Write(',');
-          w.Write(y.ToString(c));
-          w.Write(',');
-          if (kind == MapKind.NormalAbsolute)
-          {
-            Vector3d n = NormalAt(x, y);
-            if (n != Vector3d.Zero)
-              w.Write(string.Create(c, $"{n.X:R},{n.Y:R},{n.Z:R}"));
-            else
-              w.Write(",,");
-          }
-          else
-          {
-            double v = ValueAt(kind, x, y);
-            if (double.IsFinite(v))
-              w.Write(v.ToString("R", c));
-          }
-          w.WriteLine();
-        }
+      MapKind.Depth => "x,y,depth",
+      MapKind.NormalRelative => "x,y,angle_deg",
+      MapKind.NormalAbsolute => "x,y,nx,ny,nz",
+      MapKind.PrimaryRays => "x,y,primary_rays",
+      _ => "x,y,all_rays",
     });
+    for (int y = 0; y < Height; y++)
+      for (int x = 0; x < Width; x++)
+      {
+        w.Write(x.ToString(c));
+        w.Write(',');
+        w.Write(y.ToString(c));
+        w.Write(',');
+        if (kind == MapKind.NormalAbsolute)
+        {
+          Vector3d n = NormalAt(x, y);
+          if (n != Vector3d.Zero)
+            w.Write(string.Create(c, $"{n.X:R},{n.Y:R},{n.Z:R}"));
+          else
+            w.Write(",,");
+        }
+        else
+        {
+          double v = ValueAt(kind, x, y);
+          if (double.IsFinite(v))
+            w.Write(v.ToString("R", c));
+        }
+        w.WriteLine();
+      }
   }
+
+  /// <summary>Saves the point cloud as an ASCII PLY file (atomically; see <see cref="WritePointCloud"/>).</summary>
+  public void SavePointCloud(string path, FloatImage? colors = null, double gamma = 1.0) =>
+    AtomicText.Write(path, w => WritePointCloud(w, colors, gamma));
 
   /// <summary>
   /// Writes the primary hit points (one per pixel with a hit, averaged over its samples) as an ASCII PLY
   /// point cloud with normals, coloured from <paramref name="colors"/> (display gamma) when given.
   /// </summary>
-  public void SavePointCloud(string path, FloatImage? colors = null, double gamma = 1.0)
+  public void WritePointCloud(TextWriter w, FloatImage? colors = null, double gamma = 1.0)
   {
     Rgb8Image? rgb = colors != null && colors.Width == Width && colors.Height == Height && colors.Bands is 1 or 3
       ? Rgb8Image.FromFloatImage(colors, gamma) : null;
@@ -235,33 +239,30 @@ public sealed class ExtraViews
     foreach (int h in maps.Hits)
       if (h > 0)
         count++;
-    AtomicText.Write(path, w =>
-    {
-      var c = CultureInfo.InvariantCulture;
-      w.WriteLine("ply");
-      w.WriteLine("format ascii 1.0");
-      w.WriteLine("comment GrCis primary hit points, one per pixel");
-      w.WriteLine(string.Create(c, $"element vertex {count}"));
-      foreach (string p in new[] { "x", "y", "z", "nx", "ny", "nz" })
-        w.WriteLine($"property double {p}");
-      if (rgb != null)
-        foreach (string p in new[] { "red", "green", "blue" })
-          w.WriteLine($"property uchar {p}");
-      w.WriteLine("end_header");
-      for (int y = 0; y < Height; y++)
-        for (int x = 0; x < Width; x++)
+    var c = CultureInfo.InvariantCulture;
+    w.WriteLine("ply");
+    w.WriteLine("format ascii 1.0");
+    w.WriteLine("comment GrCis primary hit points, one per pixel");
+    w.WriteLine(string.Create(c, $"element vertex {count}"));
+    foreach (string p in new[] { "x", "y", "z", "nx", "ny", "nz" })
+      w.WriteLine($"property double {p}");
+    if (rgb != null)
+      foreach (string p in new[] { "red", "green", "blue" })
+        w.WriteLine($"property uchar {p}");
+    w.WriteLine("end_header");
+    for (int y = 0; y < Height; y++)
+      for (int x = 0; x < Width; x++)
+      {
+        if (HitPointAt(x, y) is not Vector3d p)
+          continue;
+        Vector3d n = NormalAt(x, y);
+        w.Write(string.Create(c, $"{p.X:R} {p.Y:R} {p.Z:R} {n.X:R} {n.Y:R} {n.Z:R}"));
+        if (rgb != null)
         {
-          if (HitPointAt(x, y) is not Vector3d p)
-            continue;
-          Vector3d n = NormalAt(x, y);
-          w.Write(string.Create(c, $"{p.X:R} {p.Y:R} {p.Z:R} {n.X:R} {n.Y:R} {n.Z:R}"));
-          if (rgb != null)
-          {
-            (byte r, byte g, byte b) = rgb.GetPixel(x, y);
-            w.Write(string.Create(c, $" {r} {g} {b}"));
-          }
-          w.WriteLine();
+          (byte r, byte g, byte b) = rgb.GetPixel(x, y);
+          w.Write(string.Create(c, $" {r} {g} {b}"));
         }
-    });
+        w.WriteLine();
+      }
   }
 }

@@ -31,10 +31,10 @@ internal static class ViewsApi
     app.MapGet("/api/views/{kind}.png", (string kind, StudioSession s) =>
       With(s, kind, (v, k) => Results.Bytes(PngEncoder.Default.Encode(Rgb8Image.FromFloatImage(v.ToImage(k), 1.0)), "image/png")));
     app.MapGet("/api/views/{kind}.csv", (string kind, StudioSession s) =>
-      With(s, kind, (v, k) => Results.Bytes(ViaFile(path => v.SaveCsv(k, path)), "text/csv", $"{kind.ToLowerInvariant()}.csv")));
+      With(s, kind, (v, k) => Results.Bytes(Text(w => v.WriteCsv(k, w)), "text/csv", $"{kind.ToLowerInvariant()}.csv")));
     app.MapGet("/api/views/points.ply", (StudioSession s) =>
       s.Views is ExtraViews v
-        ? Results.Bytes(ViaFile(path => v.SavePointCloud(path, s.FinalImage(), s.Controller.LastResult?.Gamma ?? 1.0)), "application/octet-stream", "points.ply")
+        ? Results.Bytes(Text(w => v.WritePointCloud(w, s.FinalImage(), s.Controller.LastResult?.Gamma ?? 1.0)), "application/octet-stream", "points.ply")
         : Results.NotFound());
     app.MapGet("/api/views/value", (string kind, int x, int y, StudioSession s) =>
       With(s, kind, (v, k) => x < 0 || y < 0 || x >= v.Width || y >= v.Height
@@ -51,18 +51,12 @@ internal static class ViewsApi
       : Results.NotFound(new { error = $"no view '{kind}'; the views are {string.Join(", ", Enum.GetNames<MapKind>())}" });
   }
 
-  // The views save through files (atomically, as the window does); a download reads one back.
-  static byte[] ViaFile(Action<string> save)
+  // The bytes the window's export writes to a file: UTF-8 without a byte-order mark, "\n" line ends.
+  static byte[] Text(Action<TextWriter> write)
   {
-    string path = Path.Combine(Path.GetTempPath(), "grcis-studio-" + Guid.NewGuid().ToString("N"));
-    try
-    {
-      save(path);
-      return File.ReadAllBytes(path);
-    }
-    finally
-    {
-      File.Delete(path);
-    }
+    using var bytes = new MemoryStream();
+    using (var w = new StreamWriter(bytes, new System.Text.UTF8Encoding(false)) { NewLine = "\n" })
+      write(w);
+    return bytes.ToArray();
   }
 }
