@@ -20,6 +20,7 @@ public enum GivenSettings
   Accel = 64,
   Gamma = 128,
   Time = 256,
+  Algorithm = 512,
 
   /// <summary>The three ray-tracing switches.</summary>
   Switches = Shadows | Reflections | Refractions,

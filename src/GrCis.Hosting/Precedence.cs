@@ -62,7 +62,9 @@ public static class Precedence
     }
 
     IImageFunction? function = null;
-    if (script.ImageFunction != null)
+    if (script.ImageFunction != null && given.HasFlag(GivenSettings.Algorithm))
+      notes.Add($"{name(Setting.Algorithm)} given: the script's image function {script.ImageFunction.GetType().Name} is replaced by {s.CreateImageFunction().GetType().Name}");
+    else if (script.ImageFunction != null)
     {
       if (given.HasFlag(GivenSettings.Accel) && script.ImageFunction is RayCasting rc)
         rc.Accel = s.Accel;

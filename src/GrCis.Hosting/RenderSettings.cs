@@ -32,6 +32,9 @@ public sealed record RenderSettings
 
   public bool Refractions { get; init; } = true;
 
+  /// <summary>The image function used when the scene script does not choose one.</summary>
+  public RenderAlgorithm Algorithm { get; init; } = RenderAlgorithm.RayTracing;
+
   /// <summary>Ray queries: the prepared BVH fast path (default) or GrCis's faithful path.</summary>
   public AccelMode Accel { get; init; } = AccelMode.Bvh;
 
@@ -100,12 +103,18 @@ public sealed record RenderSettings
   public ImageSynthesizer CreateSynthesizer() => RenderSetup.CreateSynthesizer(Width, Height, SamplesPerPixel, Jitter, Gamma);
 
   /// <summary>
-  /// Whitted ray tracing with these switches and query mode. <paramref name="scene"/> null = unbound: it shades
-  /// <c>MT.scene</c>, so each render worker uses its own clone of an animated scene.
+  /// The <see cref="Algorithm"/>'s image function with these switches and query mode. <paramref name="scene"/>
+  /// null = unbound: it shades <c>MT.scene</c>, so each render worker uses its own clone of an animated scene.
   /// </summary>
   public RayTracing CreateImageFunction(IRayScene? scene = null)
   {
-    RayTracing rt = RenderSetup.CreateRayTracing(scene, Shadows, Reflections, Refractions);
+    RayTracing rt = Algorithm switch
+    {
+      RenderAlgorithm.Distributed => new Rendering.Distributed.DistributedRayTracing(scene),
+      RenderAlgorithm.Path => new PathTracing(scene),
+      _ => new RayTracing(scene),
+    };
+    RenderSetup.ApplySwitches(rt, Shadows, Reflections, Refractions);
     rt.Accel = Accel;
     return rt;
   }

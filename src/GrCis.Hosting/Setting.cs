@@ -14,4 +14,5 @@ public enum Setting
   Threads,
   TileSize,
   Time,
+  Algorithm,
 }

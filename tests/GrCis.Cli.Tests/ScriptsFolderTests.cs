@@ -44,6 +44,10 @@ public class ScriptsFolderTests
     "TexturedTorus.cs",  // texture class declared in the script
     "MeshVase.cs",       // OBJ mesh shipped in scripts/data, found via CTX_SCRIPT_PATH
     "Spiral.cs",         // parameters (strict), tooltip, size and supersampling from the script
+    "GlossyReflections.cs", // DistributedRayTracing: glossy reflections by Phong exponent
+    "SoftShadows.cs",    // DistributedRayTracing: SphereLightSource penumbrae
+    "DepthOfField.cs",   // DistributedRayTracing: ThinLensCamera
+    "CornellBox.cs",     // PathTracing: the benchmark's Cornell box, emissive rectangle
   };
 
   public static IEnumerable<object[]> ClassicCases()

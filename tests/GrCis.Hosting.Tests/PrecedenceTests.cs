@@ -1,5 +1,6 @@
 using System;
 using Rendering;
+using Rendering.Distributed;
 using Rendering.Accel;
 
 namespace GrCis.Hosting.Tests;
@@ -146,5 +147,29 @@ public class PrecedenceTests
     public void RenderPixel(int x, int y, double[] color) { }
 
     public void RenderRectangle(Rendering.Imaging.FloatImage image, int x1, int y1, int x2, int y2) { }
+  }
+
+  [Fact]
+  public void A_given_algorithm_replaces_the_scripts_image_function_with_a_note()
+  {
+    var script = new ScriptChoices { ImageFunction = new DistributedRayTracing() };
+    RenderPlan kept = Precedence.Resolve(Defaults with { Algorithm = RenderAlgorithm.Path }, GivenSettings.None, script);
+    Assert.IsType<DistributedRayTracing>(kept.ImageFunction);
+
+    RenderPlan replaced = Precedence.Resolve(Defaults with { Algorithm = RenderAlgorithm.Path }, GivenSettings.Algorithm, script);
+    Assert.Null(replaced.ImageFunction);
+    Assert.IsType<PathTracing>(replaced.CreateImageFunction());
+    Assert.Contains(replaced.Notes, n => n.Contains("DistributedRayTracing") && n.Contains("PathTracing"));
+  }
+
+  [Theory]
+  [InlineData(RenderAlgorithm.RayTracing, typeof(RayTracing))]
+  [InlineData(RenderAlgorithm.Distributed, typeof(DistributedRayTracing))]
+  [InlineData(RenderAlgorithm.Path, typeof(PathTracing))]
+  public void The_algorithm_setting_selects_the_image_function_with_the_switches_applied(RenderAlgorithm algorithm, Type expected)
+  {
+    RayTracing f = (Defaults with { Algorithm = algorithm, Shadows = false }).CreateImageFunction();
+    Assert.IsType(expected, f);
+    Assert.False(f.DoShadows);
   }
 }

@@ -1,3 +1,4 @@
+using System.IO;
 using System;
 using System.Collections.Generic;
 using System.Linq;
@@ -183,6 +184,22 @@ public class DialectTests
     Assert.Equal(
       new[] { "System", "System.Diagnostics", "System.Collections.Generic", "OpenTK.Mathematics", "MathSupport", "Rendering", "Utilities", "Scene3D" },
       ScriptHost.DefaultImports);
+  }
+
+  [Fact]
+  public void A_script_without_modules_uses_the_librarys_DistributedRayTracing()
+  {
+    string path = Path.Combine(Path.GetTempPath(), $"grcis-dist-{Guid.NewGuid():N}.cs");
+    File.WriteAllText(path, "Scenes.FiveBalls(scene);\ncontext[PropertyName.CTX_ALGORITHM] = new DistributedRayTracing(scene) { GlossyReflections = false };\n");
+    try
+    {
+      ScriptScene result = host.Load(path);
+      Assert.IsType<Rendering.Distributed.DistributedRayTracing>(result.Algorithm);
+    }
+    finally
+    {
+      File.Delete(path);
+    }
   }
 
   sealed class Tolerance : IEqualityComparer<double>

@@ -124,6 +124,50 @@ public sealed class StudentModuleTests : IDisposable
   }
 
   [Fact]
+  public void A_049_module_declaring_its_own_Rendering_DistributedRayTracing_wins_over_the_librarys()
+  {
+    // GrCis's 049 skeleton declares DistributedRayTracing in namespace Rendering, as the library now does too.
+    Write("DistributedRT.cs", """
+      using System;
+      using OpenTK;
+      using Rendering;
+
+      namespace Rendering
+      {
+        public class DistributedRayTracing : RayTracing
+        {
+          public static int Calls;
+
+          public DistributedRayTracing (IRayScene sc) : base(sc)
+          {
+          }
+
+          public override long shade (int level, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
+          {
+            System.Threading.Interlocked.Increment(ref Calls);
+            return base.shade(level, importance, ref p0, ref p1, color);
+          }
+        }
+      }
+      """);
+    string script = Write("Scene.cs", """
+      Scenes.FiveBalls(scene);
+      context[PropertyName.CTX_ALGORITHM] = new DistributedRayTracing(scene);
+      context[PropertyName.CTX_WIDTH] = 20;
+      context[PropertyName.CTX_HEIGHT] = 15;
+      """);
+
+    using var host = new ScriptHost();
+    host.AddModule(scratch.Path);
+    ScriptScene run = host.Load(script);
+    Type type = run.Algorithm!.GetType();
+    Assert.Equal("Rendering.DistributedRayTracing", type.FullName);
+    Assert.NotEqual(typeof(Rendering.Distributed.DistributedRayTracing).Assembly, type.Assembly);
+    TileRenderer.Render(run.Scene, (IImageFunction)run.Algorithm, new SimpleImageSynthesizer { Width = 20, Height = 15 }, new RenderOptions { Threads = 1 });
+    Assert.True((int)type.GetField("Calls")!.GetValue(null)! >= 20 * 15);
+  }
+
+  [Fact]
   public void A_folder_of_scene_scripts_only_is_refused_with_a_message_saying_so()
   {
     Write("a.cs", "scene.BackgroundColor = new double[] { 1, 0, 0 };\n");

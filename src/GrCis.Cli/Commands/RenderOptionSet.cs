@@ -49,9 +49,30 @@ public sealed class RenderOptionSet
   readonly Option<bool> noRefractions = new("--no-refractions") { Description = "Do not trace refracted rays" };
   readonly Option<string> accel = AccelOption.Create();
 
+  readonly Option<string> algorithm = CreateAlgorithmOption();
+
+  static Option<string> CreateAlgorithmOption()
+  {
+    var o = new Option<string>("--algorithm", "-a")
+    {
+      Description = "Image function when the script chooses none (a given one replaces the script's): raytracing = Whitted (GrCis's default); distributed = glossy rays, soft shadows, depth of field (use --spp 16 or more); path = Monte Carlo path tracing",
+      HelpName = "raytracing|distributed|path",
+      DefaultValueFactory = _ => "raytracing",
+    };
+    o.AcceptOnlyFromAmong("raytracing", "distributed", "path");
+    return o;
+  }
+
+  static RenderAlgorithm ParseAlgorithm(string? value) => value switch
+  {
+    "distributed" => RenderAlgorithm.Distributed,
+    "path" => RenderAlgorithm.Path,
+    _ => RenderAlgorithm.RayTracing,
+  };
+
   public void AddTo(Command command)
   {
-    foreach (Option o in new Option[] { size, spp, jitter, threads, seed, gamma, noShadows, noReflections, noRefractions, accel })
+    foreach (Option o in new Option[] { size, spp, jitter, threads, seed, gamma, noShadows, noReflections, noRefractions, accel, algorithm })
       command.Options.Add(o);
   }
 
@@ -62,6 +83,7 @@ public sealed class RenderOptionSet
     (IsGiven(parse, jitter) ? GivenSettings.Jitter : 0) |
     (IsGiven(parse, gamma) ? GivenSettings.Gamma : 0) |
     (IsGiven(parse, accel) ? GivenSettings.Accel : 0) |
+    (IsGiven(parse, algorithm) ? GivenSettings.Algorithm : 0) |
     (parse.GetValue(noShadows) ? GivenSettings.Shadows : 0) |
     (parse.GetValue(noReflections) ? GivenSettings.Reflections : 0) |
     (parse.GetValue(noRefractions) ? GivenSettings.Refractions : 0);
@@ -85,6 +107,7 @@ public sealed class RenderOptionSet
     Reflections = !parse.GetValue(noReflections),
     Refractions = !parse.GetValue(noRefractions),
     Accel = AccelOption.Parse(parse.GetValue(accel)),
+    Algorithm = ParseAlgorithm(parse.GetValue(algorithm)),
     }.ValidateOptions();
   }
 }

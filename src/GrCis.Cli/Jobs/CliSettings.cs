@@ -38,6 +38,7 @@ public static class CliSettings
     Setting.Gamma => "--gamma",
     Setting.Threads => "--threads",
     Setting.Time => "--time",
+    Setting.Algorithm => "--algorithm",
     _ => setting.ToString(),
   };
 }

@@ -40,6 +40,7 @@ public static class StillPart
       seed {s.Seed}
       gamma {s.Gamma:R}
       switches {s.Shadows} {s.Reflections} {s.Refractions}
+      algorithm {s.Algorithm}
       renderer {setup.Synthesizer?.GetType().FullName ?? "default"}
       function {setup.ImageFunction?.GetType().FullName ?? "default"}
       """);

@@ -101,7 +101,7 @@ public class RayCasting : IImageFunction
       foreach (ILightSource light in sc.Sources)
       {
         if (!SubclassCheck.OverridesNothing(light, typeof(PointLightSource)) && !SubclassCheck.OverridesNothing(light, typeof(AmbientLightSource)) &&
-            !SubclassCheck.OverridesNothing(light, typeof(RectangleLightSource)))
+            !SubclassCheck.OverridesNothing(light, typeof(RectangleLightSource)) && !SubclassCheck.OverridesNothing(light, typeof(SphereLightSource)))
           return false;
       }
     return true;

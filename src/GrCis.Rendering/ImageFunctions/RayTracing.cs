@@ -197,11 +197,14 @@ public class RayTracing : RayCasting
         double newImportance = importance * maxK;
         if (newImportance >= MinImportance)
         {
-          if (observer != null)
-            scratch.NextKind = RayKind.Reflected;
-          hash += HASH_REFLECT * shade(depth, newImportance, ref origin, ref r, comp);
-          for (int b = 0; b < bands; b++)
-            color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
+          if (ReflectionDirection(i, r, depth, out Vector3d reflected))
+          {
+            if (observer != null)
+              scratch.NextKind = RayKind.Reflected;
+            hash += HASH_REFLECT * shade(depth, newImportance, ref origin, ref reflected, comp);
+            for (int b = 0; b < bands; b++)
+              color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
+          }
         }
       }
     }
@@ -215,7 +218,7 @@ public class RayTracing : RayCasting
       if (newImportance < MinImportance)
         goto done;
       Vector3d r = Geometry.SpecularRefraction(i.Normal, i.Material.n, viewer);
-      if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0)
+      if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0 || !RefractionDirection(i, r, depth, out r))
         goto done;
       if (observer != null)
         scratch.NextKind = RayKind.Refracted;
@@ -228,6 +231,24 @@ public class RayTracing : RayCasting
     // until the next ray at this depth).
     observer?.EndRay(kind, rayDepth, p0, p1, i);
     return hash;
+  }
+
+  /// <summary>
+  /// The direction of the reflected ray at hit <paramref name="i"/> (its recursion depth <paramref name="depth"/>),
+  /// given the mirror direction; false = no reflected ray. Whitted: the mirror direction itself.
+  /// <see cref="Distributed.DistributedRayTracing"/> samples a glossy lobe around it.
+  /// </summary>
+  protected virtual bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction)
+  {
+    direction = mirror;
+    return true;
+  }
+
+  /// <summary>The direction of the refracted ray, given the ideal one; false = no refracted ray. Whitted: the ideal direction.</summary>
+  protected virtual bool RefractionDirection(Intersection i, Vector3d refracted, int depth, out Vector3d direction)
+  {
+    direction = refracted;
+    return true;
   }
 
   /// <summary>Schlick's approximation of the Fresnel reflectance for incidence cosine <paramref name="cos"/>.</summary>

@@ -25,6 +25,13 @@ public class PhongMaterial : IMaterial
   /// <summary>Weight of Schlick's Fresnel approximation: 0 = pure Phong, 1 = full Schlick.</summary>
   public double Sch { get; set; }
 
+  /// <summary>
+  /// Radiance the surface emits (linear, per band), or null for none. Only <see cref="PathTracing"/> and
+  /// <see cref="RayTracing"/>'s successors that light a scene by its surfaces read it; Whitted ray tracing ignores it.
+  /// The emission is one-sided: it leaves the side the surface normal points to.
+  /// </summary>
+  public double[]? Emission { get; set; }
+
   /// <summary>Cosine of the critical angle for total internal reflection (0 when n ≤ 1).</summary>
   public double cosTotal;
 
@@ -75,6 +82,7 @@ public class PhongMaterial : IMaterial
     Kt = m.Kt;
     Sch = m.Sch;
     n = m.n;
+    Emission = (double[]?)m.Emission?.Clone();
   }
 
   public virtual object Clone() => new PhongMaterial(this);
@@ -90,5 +98,6 @@ public class PhongMaterial : IMaterial
     Kt = m.Kt;
     Sch = m.Sch;
     n = m.n;
+    Emission = m.Emission;
   }
 }

@@ -30,6 +30,7 @@ public partial class Scenes
     ("Circus", nameof(Circus), (sc, _) => Circus(sc)),
     ("Toroids", nameof(Toroids), (sc, _) => Toroids(sc)),
     ("Bezier", nameof(Bezier), (sc, _) => Bezier(sc)),
+    ("Test scene", nameof(TestScene), (sc, _) => TestScene(sc)),
   };
 
   static readonly string[] names = Array.ConvertAll(registry, r => r.Name);

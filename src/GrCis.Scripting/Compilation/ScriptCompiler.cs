@@ -26,6 +26,13 @@ internal static class ScriptCompiler
     "System", "System.Diagnostics", "System.Collections.Generic", "OpenTK.Mathematics",
     "MathSupport", "Rendering", "Utilities", "Scene3D");
 
+  /// <summary>
+  /// Imported for scripts unless a module declares a public type of the same simple name: the library's
+  /// solutions of homework skeletons (<c>DistributedRayTracing</c> of 049), which a student's own module
+  /// declares too, often in namespace <c>Rendering</c> as GrCis's skeleton does. The student's class wins.
+  /// </summary>
+  public const string YieldingImport = "Rendering.Distributed";
+
   const string ModuleImports = "global using OpenTK.Mathematics;\n";
 
   static readonly CSharpParseOptions scriptParseOptions =
@@ -51,7 +58,7 @@ internal static class ScriptCompiler
     (tree, InstrumentedSource instrumented) = Instrument(tree, scriptParseOptions);
     var options = new CSharpCompilationOptions(
       OutputKind.DynamicallyLinkedLibrary,
-      usings: DefaultImports,
+      usings: ScriptImports(modules),
       // Debug code keeps every frame (no JIT inlining), so a runtime error always maps to its script line.
       optimizationLevel: optimize ? OptimizationLevel.Release : OptimizationLevel.Debug,
       allowUnsafe: true,
@@ -170,6 +177,21 @@ internal static class ScriptCompiler
     pe.Position = 0;
     pdb.Position = 0;
     return (pe, pdb, diagnostics);
+  }
+
+  /// <summary><see cref="DefaultImports"/>, and <see cref="YieldingImport"/> unless a module declares a type it holds.</summary>
+  static ImmutableArray<string> ScriptImports(IReadOnlyList<ScriptModule> modules)
+  {
+    ImmutableArray<string> imports = DefaultImports.Add(YieldingImport);
+    if (modules.Count == 0)
+      return imports;
+    var yielding = new HashSet<string>(typeof(Rendering.RayTracing).Assembly.GetExportedTypes()
+      .Where(t => t.Namespace == YieldingImport).Select(t => t.Name), StringComparer.Ordinal);
+    foreach (ScriptModule m in modules)
+      foreach (Type t in m.Assembly.GetExportedTypes())
+        if (yielding.Contains(t.Name))
+          return DefaultImports;
+    return imports;
   }
 
   static IEnumerable<MetadataReference> References(IReadOnlyList<ScriptModule> modules) =>

@@ -9,12 +9,12 @@ public class ScenesTests
   public static TheoryData<string> SceneNames => new(Scenes.Names);
 
   [Fact]
-  public void Registry_lists_the_eleven_classic_scenes_in_GrCis_order()
+  public void Registry_lists_the_eleven_classic_scenes_in_GrCis_order_then_the_049_test_scene()
   {
     Assert.Equal(new[]
     {
       "Five balls", "Hedgehog in the cage", "Flags", "Sphere on the plane", "Two spheres",
-      "Sphere flake", "Cubes", "Cylinders", "Circus", "Toroids", "Bezier",
+      "Sphere flake", "Cubes", "Cylinders", "Circus", "Toroids", "Bezier", "Test scene",
     }, Scenes.Names);
   }
 

@@ -1,0 +1,72 @@
+using System;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// A spherical light of radius <see cref="radius"/> around <see cref="PointLightSource.position"/>: each sample
+/// lights the point from a point of the sphere's visible cap, chosen uniformly by solid angle and stratified over
+/// the pixel's samples (<see cref="Strata"/>), so shadows get soft penumbrae. Radius 0 is the point light.
+/// Like <see cref="PointLightSource"/> it has no attenuation unless <see cref="Dim"/> is set.
+/// </summary>
+[Serializable]
+public class SphereLightSource : PointLightSource
+{
+  public double radius;
+
+  /// <summary>Attenuation 1 / (d0 + d1·r + d2·r²) as for <see cref="RectangleLightSource.Dim"/>; null = none.</summary>
+  public double[]? Dim;
+
+  // Per-thread result buffer for attenuated intensities (no array per shadow ray).
+  [NonSerialized] System.Threading.ThreadLocal<double[]>? dimmed;
+
+  public SphereLightSource(Vector3d pos, double rad, double intens) : base(pos, intens) => radius = rad;
+
+  public SphereLightSource(Vector3d pos, double rad, double[] intens) : base(pos, intens) => radius = rad;
+
+  /// <summary>The stratification dimension of this light: from its position and radius, the same in every clone and run.</summary>
+  uint Dimension()
+  {
+    Vector3d c = position ?? Vector3d.Zero;
+    long h = BitConverter.DoubleToInt64Bits(c.X) * 31 ^ BitConverter.DoubleToInt64Bits(c.Y) * 17 ^
+             BitConverter.DoubleToInt64Bits(c.Z) * 7 ^ BitConverter.DoubleToInt64Bits(radius);
+    return Strata.Dimension(2, (int)(h ^ (h >> 32)));
+  }
+
+  public override double[]? GetIntensity(Intersection intersection, out Vector3d dir)
+  {
+    Vector3d p = intersection.CoordWorld;
+    Vector3d c = position ?? Vector3d.Zero;
+    Vector3d toCentre = c - p;
+    double dist2 = toCentre.LengthSquared;
+    double r2 = radius * radius;
+    if (radius <= 0.0 || dist2 <= r2)
+      dir = toCentre;
+    else
+    {
+      // A direction in the cone the sphere subtends, then the nearer point of the sphere along it.
+      double dist = Math.Sqrt(dist2);
+      Vector3d axis = toCentre / dist;
+      double cosMax = Math.Sqrt(Math.Max(0.0, 1.0 - r2 / dist2));
+      Strata.Sample2D(Dimension(), out double u, out double v);
+      Vector3d w = SampleWarp.UniformCone(u, v, axis, cosMax);
+      double b = Vector3d.Dot(w, toCentre);
+      double t = b - Math.Sqrt(Math.Max(0.0, b * b - dist2 + r2));
+      dir = w * t;
+    }
+    if (Vector3d.Dot(dir, intersection.Normal) <= 0.0)
+      return null;
+    if (Dim == null || Dim.Length < 3)
+      return intensity;
+
+    double d = dir.Length;
+    double factor = 1.0 / (Dim[0] + d * (Dim[1] + d * Dim[2]));
+    dimmed ??= new System.Threading.ThreadLocal<double[]>(() => new double[intensity.Length]);
+    double[] result = dimmed.Value!;
+    if (result.Length != intensity.Length)
+      dimmed.Value = result = new double[intensity.Length];
+    for (int i = 0; i < result.Length; i++)
+      result[i] = intensity[i] * factor;
+    return result;
+  }
+}

@@ -1,0 +1,166 @@
+using System;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// The scattering a <see cref="PathTracing"/> vertex uses, read from GrCis's Phong parameters: a Lambertian
+/// lobe of albedo Kd·colour, an energy-conserving (normalised) Phong lobe of weight Ks and exponent H around
+/// the mirror direction (an ideal mirror from <see cref="PathTracing.MirrorExponent"/> on), and for Kt &gt; 0 a
+/// smooth dielectric of index n (exact Fresnel, total internal reflection) of weight Kt. When Kd·max(colour) +
+/// Ks + Kt exceeds 1 the three are scaled down to sum to 1, so no surface reflects more light than it receives.
+/// </summary>
+internal struct PathBsdf
+{
+  Vector3d nf;        // normal on the side the light leaves towards (wo's side)
+  Vector3d wo;        // towards the previous vertex
+  Vector3d mirror;    // wo mirrored about nf
+  Rgb diffuse;        // albedo of the Lambertian lobe
+  double ks, kt, eta; // weights and the relative index (inside over outside)
+  double exponent;
+  bool glossyIsMirror, entering;
+  double pD, pS, pT;  // lobe selection probabilities (sum 1)
+
+  /// <summary>False when the surface scatters nothing (black): the path ends.</summary>
+  public bool Scatters { get; private set; }
+
+  /// <summary>True when some lobe is not a delta (so light sampling can reach it).</summary>
+  public readonly bool HasSmooth => pD > 0.0 || (pS > 0.0 && !glossyIsMirror);
+
+  /// <summary>The facing normal (on the side of the outgoing direction).</summary>
+  public readonly Vector3d FacingNormal => nf;
+
+  /// <summary>Scattering at a point of outward normal <paramref name="normal"/> hit by a ray of unit direction <paramref name="direction"/>.</summary>
+  public static PathBsdf For(IMaterial? material, ReadOnlySpan<double> surface, Vector3d normal, Vector3d direction, int mirrorExponent)
+  {
+    var s = new PathBsdf { wo = -direction };
+    double cosO = Vector3d.Dot(normal, s.wo);
+    s.entering = cosO > 0.0;
+    s.nf = s.entering ? normal : -normal;
+    s.mirror = 2.0 * Math.Abs(cosO) * s.nf - s.wo;
+
+    Rgb colour = Rgb.From(surface);
+    double kd, ks, kt;
+    int h;
+    if (material is PhongMaterial pm)
+    {
+      kd = pm.Kd;
+      ks = pm.Ks;
+      kt = pm.Kt;
+      h = pm.H;
+    }
+    else
+    {
+      // A material without Phong coefficients: Lambertian in its colour, transparent by its Kt.
+      kt = material?.Kt ?? 0.0;
+      kd = 1.0 - kt;
+      ks = 0.0;
+      h = 0;
+    }
+    kd = Math.Max(kd, 0.0);
+    ks = Math.Max(ks, 0.0);
+    kt = Math.Max(kt, 0.0);
+    double sum = kd * Math.Max(colour.Max, 0.0) + ks + kt;
+    if (sum > 1.0)
+    {
+      kd /= sum;
+      ks /= sum;
+      kt /= sum;
+    }
+    s.diffuse = new Rgb(Math.Max(colour.R, 0.0), Math.Max(colour.G, 0.0), Math.Max(colour.B, 0.0)) * kd;
+    s.ks = ks;
+    s.kt = kt;
+    s.exponent = Math.Max(h, 0);
+    s.glossyIsMirror = h >= mirrorExponent;
+    double n = material?.n ?? 1.0;
+    s.eta = n > 0.0 ? n : 1.0;
+
+    double wD = s.diffuse.Average, wS = ks, wT = kt;
+    double total = wD + wS + wT;
+    s.Scatters = total > 0.0;
+    if (s.Scatters)
+    {
+      s.pD = wD / total;
+      s.pS = wS / total;
+      s.pT = wT / total;
+    }
+    return s;
+  }
+
+  /// <summary>The smooth (non-delta) part of the BSDF for light arriving from <paramref name="wi"/>, without the cosine.</summary>
+  public readonly Rgb Eval(Vector3d wi)
+  {
+    if (Vector3d.Dot(wi, nf) <= 0.0)
+      return Rgb.Zero;
+    Rgb f = diffuse * (1.0 / Math.PI);
+    if (ks > 0.0 && !glossyIsMirror)
+    {
+      double c = Vector3d.Dot(wi, mirror);
+      if (c > 0.0)
+        f += new Rgb(ks * (exponent + 2.0) / (2.0 * Math.PI) * Math.Pow(c, exponent));
+    }
+    return f;
+  }
+
+  /// <summary>Density (per steradian) with which <see cref="Sample"/> picks <paramref name="wi"/> through a smooth lobe.</summary>
+  public readonly double Pdf(Vector3d wi)
+  {
+    double cos = Vector3d.Dot(wi, nf);
+    if (cos <= 0.0)
+      return 0.0;
+    double p = pD * cos / Math.PI;
+    if (pS > 0.0 && !glossyIsMirror)
+      p += pS * SampleWarp.PowerCosinePdf(Vector3d.Dot(wi, mirror), exponent);
+    return p;
+  }
+
+  /// <summary>
+  /// Samples an incoming direction: <paramref name="choice"/> picks the lobe, (u, v) the direction in it.
+  /// <paramref name="weight"/> is f·cos/pdf; <paramref name="delta"/> says a mirror or dielectric chose it (then
+  /// <paramref name="pdf"/> is 0). False when the sample carries nothing (it fell below the surface).
+  /// </summary>
+  public readonly bool Sample(double choice, double u, double v, out Vector3d wi, out Rgb weight, out double pdf, out bool delta)
+  {
+    weight = Rgb.Zero;
+    pdf = 0.0;
+    delta = false;
+    wi = mirror;
+    if (choice < pD || (choice < pD + pS && !glossyIsMirror))
+    {
+      wi = choice < pD ? SampleWarp.PowerCosine(u, v, nf, 1.0) : SampleWarp.PowerCosine(u, v, mirror, exponent);
+      double cos = Vector3d.Dot(wi, nf);
+      if (cos <= 0.0)
+        return false;
+      pdf = Pdf(wi);
+      if (pdf <= 0.0)
+        return false;
+      weight = Eval(wi) * (cos / pdf);
+      return true;
+    }
+    delta = true;
+    if (choice < pD + pS)
+    {
+      weight = new Rgb(ks / pS);
+      return true;
+    }
+    // Smooth dielectric: reflect with the Fresnel probability, else refract; the weights cancel to kt / pT.
+    double cosI = Vector3d.Dot(wo, nf);
+    double ratio = entering ? 1.0 / eta : eta;   // outside over inside index when entering
+    double sin2T = ratio * ratio * Math.Max(0.0, 1.0 - cosI * cosI);
+    double fresnel = sin2T >= 1.0 ? 1.0 : Fresnel(cosI, Math.Sqrt(1.0 - sin2T), ratio);
+    weight = new Rgb(kt / pT);
+    if (u < fresnel)
+      return true;
+    double cosT = Math.Sqrt(1.0 - sin2T);
+    wi = -ratio * wo + (ratio * cosI - cosT) * nf;
+    return true;
+  }
+
+  /// <summary>Unpolarised Fresnel reflectance; <paramref name="ratio"/> = incident over transmitted index.</summary>
+  internal static double Fresnel(double cosI, double cosT, double ratio)
+  {
+    double rs = (ratio * cosI - cosT) / (ratio * cosI + cosT);
+    double rp = (ratio * cosT - cosI) / (ratio * cosT + cosI);
+    return 0.5 * (rs * rs + rp * rp);
+  }
+}

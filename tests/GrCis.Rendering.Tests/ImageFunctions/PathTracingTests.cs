@@ -1,0 +1,185 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using OpenTK.Mathematics;
+using Rendering;
+using Rendering.Accel;
+using Rendering.Execution;
+using Rendering.Imaging;
+
+namespace GrCis.Rendering.Tests.ImageFunctions;
+
+/// <summary>Path tracing checked against analytic answers (white furnaces), Whitted's direct light, itself (convergence, MIS) and its determinism.</summary>
+public class PathTracingTests
+{
+  internal static FloatImage Render(IRayScene sc, RayCasting f, int size, int spp, int threads = 2, long seed = 0, AccelMode accel = AccelMode.Bvh)
+  {
+    f.Accel = accel;
+    var synth = new SupersamplingImageSynthesizer { Width = size, Height = size, Supersampling = spp };
+    return TileRenderer.Render(sc, f, synth, new RenderOptions { Threads = threads, Seed = seed, TileSize = 8 });
+  }
+
+  static double Mean(FloatImage image, int band = 1)
+  {
+    double sum = 0.0;
+    for (int i = band; i < image.Data.Length; i += image.Bands)
+      sum += image.Data[i];
+    return sum / (image.Data.Length / image.Bands);
+  }
+
+  /// <summary>A closed cube [-1,1]³ of inward-facing emissive Lambertian walls (radiance le, albedo a), seen from its centre.</summary>
+  static IRayScene Furnace(double a, double le)
+  {
+    var root = new CSGInnerNode(SetOperation.Union);
+    root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { a, a, a }, 0.0, 1.0, 0.0, 1) { Emission = new[] { le, le, le } });
+    Matrix4d[] faces =
+    {
+      Matrix4d.CreateTranslation(0, 0, -1),
+      Matrix4d.RotateX(Math.PI) * Matrix4d.CreateTranslation(0, 0, 1),
+      Matrix4d.RotateY(MathHelper.PiOver2) * Matrix4d.CreateTranslation(-1, 0, 0),
+      Matrix4d.RotateY(-MathHelper.PiOver2) * Matrix4d.CreateTranslation(1, 0, 0),
+      Matrix4d.RotateX(-MathHelper.PiOver2) * Matrix4d.CreateTranslation(0, -1, 0),
+      Matrix4d.RotateX(MathHelper.PiOver2) * Matrix4d.CreateTranslation(0, 1, 0),
+    };
+    foreach (Matrix4d f in faces)
+      root.InsertChild(new Plane(-1, 1, -1, 1), f);
+    return new DefaultRayScene
+    {
+      Intersectable = root,
+      BackgroundColor = new[] { 0.0, 0.0, 0.0 },
+      Camera = new StaticCamera(new Vector3d(0.1, -0.2, 0.05), new Vector3d(0.2, 0.1, 1.0), 90.0),
+      Sources = new LinkedList<ILightSource>(),
+    };
+  }
+
+  [Theory]
+  [InlineData(true, true)]
+  [InlineData(true, false)]
+  [InlineData(false, false)]
+  public void White_furnace_closed_emissive_box_gives_le_over_one_minus_albedo(bool nee, bool mis)
+  {
+    // Every path sees emission le at each bounce and keeps a fraction a: L = le (1 + a + a² + …) = le / (1 − a).
+    const double a = 0.5, le = 1.0;
+    var pt = new PathTracing { NextEventEstimation = nee, MultipleImportanceSampling = mis, MaxLevel = 200 };
+    // Light sampling alone has a heavy tail near the cube's edges (1/r² to the next face): it needs more samples.
+    FloatImage image = Render(Furnace(a, le), pt, 32, nee && !mis ? 1024 : 64);
+    Assert.Equal(le / (1.0 - a), Mean(image), 2.0 * 0.01);   // within 1 %
+  }
+
+  [Fact]
+  public void Convex_diffuse_sphere_in_a_uniform_environment_reflects_albedo_times_the_environment()
+  {
+    const double a = 0.6, env = 2.0;
+    var root = new CSGInnerNode(SetOperation.Union);
+    root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { a, a, a }, 0.0, 1.0, 0.0, 1));
+    root.InsertChild(new Sphere(), Matrix4d.Identity);
+    var sc = new DefaultRayScene
+    {
+      Intersectable = root,
+      BackgroundColor = new[] { env, env, env },
+      Camera = new StaticCamera(new Vector3d(0, 0, -4), Vector3d.UnitZ, 40.0),
+      Sources = new LinkedList<ILightSource>(),
+    };
+    FloatImage image = Render(sc, new PathTracing(), 16, 4);
+    // A convex surface sees only the environment: each sample is exactly a·env; the corners see env itself.
+    Assert.Equal(a * env, image.Data[(8 * 16 + 8) * 3 + 1], 5);
+    Assert.Equal(env, image.Data[1], 12);
+  }
+
+  [Fact]
+  public void Direct_light_from_a_GrCis_point_light_equals_Whitted_diffuse_shading()
+  {
+    // One diffuse plane, no ambient: path tracing (direct light only, nothing else to see) must agree with Phong's kd·cos·I.
+    IRayScene Scene()
+    {
+      var root = new CSGInnerNode(SetOperation.Union);
+      root.SetAttribute(PropertyName.REFLECTANCE_MODEL, new PhongModel());
+      root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { 0.9, 0.5, 0.2 }, 0.0, 0.8, 0.0, 1, 0.0));
+      root.InsertChild(new Plane(), Matrix4d.RotateX(-MathHelper.PiOver2));
+      return new DefaultRayScene
+      {
+        Intersectable = root,
+        BackgroundColor = new[] { 0.0, 0.0, 0.0 },
+        Camera = new StaticCamera(new Vector3d(0, 2, -3), new Vector3d(0, -0.6, 1), 60.0),
+        Sources = new LinkedList<ILightSource>(new ILightSource[] { new PointLightSource(new Vector3d(1, 3, 1), 1.3) }),
+      };
+    }
+    FloatImage whitted = Render(Scene(), new RayTracing(), 16, 1);
+    FloatImage path = Render(Scene(), new PathTracing(), 16, 1);
+    for (int i = 0; i < whitted.Data.Length; i++)
+      Assert.Equal(whitted.Data[i], path.Data[i], 5);
+    Assert.True(Mean(whitted) > 0.05);
+  }
+
+  [Fact]
+  public void Noise_falls_as_one_over_the_square_root_of_the_samples()
+  {
+    IRayScene Scene() => CornellScene.Create(diffuse: true);
+    FloatImage reference = Render(Scene(), new PathTracing(), 16, 1024, seed: 1000);
+    var spps = new[] { 4, 16, 64 };
+    double[] rmse = spps.Select(s => Rmse(Render(Scene(), new PathTracing(), 16, s), reference, 1.0)).ToArray();
+    double slope = (Math.Log(rmse[2]) - Math.Log(rmse[0])) / (Math.Log(64) - Math.Log(4));
+    Assert.InRange(slope, -0.75, -0.35);
+    Assert.True(rmse[0] > rmse[1] && rmse[1] > rmse[2], string.Join(", ", rmse));
+  }
+
+  /// <summary>RMSE over the pixels whose reference is at most <paramref name="limit"/> (the light's own pixels left out).</summary>
+  static double Rmse(FloatImage test, FloatImage reference, double limit)
+  {
+    double sum = 0.0;
+    int count = 0;
+    for (int p = 0; p < reference.Data.Length; p += 3)
+    {
+      if (reference.Data[p] > limit || reference.Data[p + 1] > limit || reference.Data[p + 2] > limit)
+        continue;
+      for (int b = 0; b < 3; b++)
+      {
+        double d = test.Data[p + b] - reference.Data[p + b];
+        sum += d * d;
+        count++;
+      }
+    }
+    return Math.Sqrt(sum / count);
+  }
+
+  [Fact]
+  public void Light_sampling_with_and_without_MIS_and_BSDF_sampling_alone_agree_on_the_Cornell_box()
+  {
+    // The lower half of the image: light that arrived by bounces, without the noise of pixels that see the emitter.
+    static double LowerHalf(FloatImage image)
+    {
+      double sum = 0.0;
+      for (int i = image.Data.Length / 2; i < image.Data.Length; i++)
+        sum += image.Data[i];
+      return sum / (image.Data.Length / 2);
+    }
+    double Lum(bool nee, bool mis) => LowerHalf(Render(CornellScene.Create(diffuse: true), new PathTracing { NextEventEstimation = nee, MultipleImportanceSampling = mis }, 16, 256));
+    double both = Lum(true, true), lightOnly = Lum(true, false), bsdfOnly = Lum(false, false);
+    Assert.Equal(both, lightOnly, both * 0.02);
+    Assert.Equal(both, bsdfOnly, both * 0.03);
+  }
+
+  [Fact]
+  public void Same_seed_gives_the_same_image_on_one_or_two_threads_and_on_both_query_paths()
+  {
+    FloatImage one = Render(CornellScene.Create(diffuse: false), new PathTracing(), 24, 4, threads: 1);
+    FloatImage two = Render(CornellScene.Create(diffuse: false), new PathTracing(), 24, 4, threads: 2);
+    FloatImage lists = Render(CornellScene.Create(diffuse: false), new PathTracing(), 24, 4, threads: 2, accel: AccelMode.None);
+    Assert.Equal(one.Data, two.Data);
+    Assert.Equal(one.Data, lists.Data);
+    FloatImage other = Render(CornellScene.Create(diffuse: false), new PathTracing(), 24, 4, seed: 9);
+    Assert.NotEqual(one.Data, other.Data);
+  }
+
+  [Fact]
+  public void Cornell_box_shows_the_light_at_radiance_15_red_wall_left_green_wall_right()
+  {
+    FloatImage image = Render(CornellScene.Create(diffuse: true), new PathTracing(), 64, 4);
+    float At(int x, int y, int b) => image.Data[(y * 64 + x) * 3 + b];
+    // The light spans columns ~26..38 and rows ~7..9 of 64 (the specification's 103..153 and 27..37 of 256).
+    for (int b = 0; b < 3; b++)
+      Assert.Equal(15.0, At(32, 8, b), 4);
+    Assert.True(At(2, 32, 0) > 3 * At(2, 32, 1), "left wall must be red");
+    Assert.True(At(61, 32, 1) > 2 * At(61, 32, 0), "right wall must be green");
+  }
+}
