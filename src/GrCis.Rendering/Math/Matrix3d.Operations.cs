@@ -8,7 +8,7 @@ public partial struct Matrix3d
   public readonly Vector3d Column0 => new(Row0.X, Row1.X, Row2.X);
   public readonly Vector3d Column1 => new(Row0.Y, Row1.Y, Row2.Y);
   public readonly Vector3d Column2 => new(Row0.Z, Row1.Z, Row2.Z);
-  public readonly Vector3d Diagonal => new(Row0.X, Row1.Y, Row2.Z);
+  public Vector3d Diagonal { readonly get => new(Row0.X, Row1.Y, Row2.Z); set { Row0.X = value.X; Row1.Y = value.Y; Row2.Z = value.Z; } }
   public readonly double Trace => Row0.X + Row1.Y + Row2.Z;
 
   public double this[int rowIndex, int columnIndex]

@@ -36,7 +36,10 @@ public partial struct Matrix3d : IEquatable<Matrix3d>
   public double M32 { readonly get => Row2.Y; set => Row2.Y = value; }
   public double M33 { readonly get => Row2.Z; set => Row2.Z = value; }
 
-  public readonly double Determinant => Vector3d.Dot(Row0, Vector3d.Cross(Row1, Row2));
+  /// <summary>The six-term expansion OpenTK 3 evaluates, so <see cref="Inverted"/> finds the same matrices singular.</summary>
+  public readonly double Determinant =>
+    Row0.X * Row1.Y * Row2.Z + Row0.Y * Row1.Z * Row2.X + Row0.Z * Row1.X * Row2.Y
+    - Row0.Z * Row1.Y * Row2.X - Row0.X * Row1.Z * Row2.Y - Row0.Y * Row1.X * Row2.Z;
 
   readonly Matrix4d To4() => new(new Vector4d(Row0, 0), new Vector4d(Row1, 0), new Vector4d(Row2, 0), Vector4d.UnitW);
 
@@ -57,9 +60,11 @@ public partial struct Matrix3d : IEquatable<Matrix3d>
   public static Matrix3d Transpose(Matrix3d m) => new(Matrix4d.Transpose(m.To4()));
   public void Transpose() => this = Transpose(this);
   public readonly Matrix3d Transposed() => Transpose(this);
+  /// <exception cref="InvalidOperationException">The matrix is singular.</exception>
   public static Matrix3d Invert(Matrix3d m) => new(Matrix4d.Invert(m.To4()));
   public void Invert() => this = Invert(this);
-  public readonly Matrix3d Inverted() => Invert(this);
+  /// <summary>The inverse, or (as in OpenTK 3) the matrix unchanged when its determinant is 0.</summary>
+  public readonly Matrix3d Inverted() => Determinant == 0 ? this : Invert(this);
 
   public readonly bool Equals(Matrix3d other) => Row0 == other.Row0 && Row1 == other.Row1 && Row2 == other.Row2;
   public override readonly bool Equals(object? obj) => obj is Matrix3d m && Equals(m);

@@ -23,6 +23,12 @@ public partial struct Matrix4 : IEquatable<Matrix4>
   {
   }
 
+  /// <summary>A 4×4 matrix with <paramref name="topLeft"/> as its rotation/scale part and no translation.</summary>
+  public Matrix4(Matrix3 topLeft)
+    : this(new Vector4(topLeft.Row0, 0), new Vector4(topLeft.Row1, 0), new Vector4(topLeft.Row2, 0), Vector4.UnitW)
+  {
+  }
+
   public float M11 { readonly get => Row0.X; set => Row0.X = value; }
   public float M12 { readonly get => Row0.Y; set => Row0.Y = value; }
   public float M13 { readonly get => Row0.Z; set => Row0.Z = value; }
@@ -76,9 +82,11 @@ public partial struct Matrix4 : IEquatable<Matrix4>
   public static Matrix4 Transpose(Matrix4 m) => (Matrix4)Matrix4d.Transpose(m);
   public void Transpose() => this = Transpose(this);
   public readonly Matrix4 Transposed() => Transpose(this);
+  /// <exception cref="InvalidOperationException">The matrix is singular.</exception>
   public static Matrix4 Invert(Matrix4 m) => (Matrix4)Matrix4d.Invert(m);
   public void Invert() => this = Invert(this);
-  public readonly Matrix4 Inverted() => Invert(this);
+  /// <summary>The inverse, or (as in OpenTK 3) the matrix unchanged when its determinant is 0.</summary>
+  public readonly Matrix4 Inverted() => Determinant == 0 ? this : Invert(this);
 
   public readonly bool Equals(Matrix4 other) => Row0 == other.Row0 && Row1 == other.Row1 && Row2 == other.Row2 && Row3 == other.Row3;
   public override readonly bool Equals(object? obj) => obj is Matrix4 m && Equals(m);

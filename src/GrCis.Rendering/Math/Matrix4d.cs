@@ -60,7 +60,7 @@ public partial struct Matrix4d : IEquatable<Matrix4d>
   public readonly Vector4d Column1 => new(Row0.Y, Row1.Y, Row2.Y, Row3.Y);
   public readonly Vector4d Column2 => new(Row0.Z, Row1.Z, Row2.Z, Row3.Z);
   public readonly Vector4d Column3 => new(Row0.W, Row1.W, Row2.W, Row3.W);
-  public readonly Vector4d Diagonal => new(Row0.X, Row1.Y, Row2.Z, Row3.W);
+  public Vector4d Diagonal { readonly get => new(Row0.X, Row1.Y, Row2.Z, Row3.W); set { Row0.X = value.X; Row1.Y = value.Y; Row2.Z = value.Z; Row3.W = value.W; } }
   public readonly double Trace => Row0.X + Row1.Y + Row2.Z + Row3.W;
 
   public double this[int row, int column]
@@ -302,7 +302,8 @@ public partial struct Matrix4d : IEquatable<Matrix4d>
 
   public static void Invert(ref Matrix4d m, out Matrix4d result) => result = Invert(m);
   public void Invert() => this = Invert(this);
-  public readonly Matrix4d Inverted() => Invert(this);
+  /// <summary>The inverse, or (as in OpenTK 3) the matrix unchanged when its determinant is 0; <see cref="Invert(Matrix4d)"/> throws then.</summary>
+  public readonly Matrix4d Inverted() => Determinant == 0 ? this : Invert(this);
 
   public readonly Vector3d ExtractTranslation() => Row3.Xyz;
   public readonly Vector3d ExtractScale() => new(Row0.Xyz.Length, Row1.Xyz.Length, Row2.Xyz.Length);

@@ -33,6 +33,13 @@ public partial struct Quaternion
   public static void FromEulerAngles(ref Vector3 eulerAngles, out Quaternion result) => result = new Quaternion(eulerAngles);
 
   /// <summary>
+  /// The rotation of an orthonormal matrix (row vectors), the inverse of <see cref="Matrix3.CreateFromQuaternion(Quaternion)"/>
+  /// as <see cref="Quaterniond.FromMatrix(Matrix3d)"/> is; computed in double and rounded.
+  /// </summary>
+  public static Quaternion FromMatrix(Matrix3 matrix) => (Quaternion)Quaterniond.FromMatrix(matrix);
+  public static void FromMatrix(ref Matrix3 matrix, out Quaternion result) => result = FromMatrix(matrix);
+
+  /// <summary>
   /// Spherical interpolation along the shorter arc, linear when the two are within about 8° (then normalised);
   /// a zero input gives the other, equal or opposite inputs give <paramref name="q1"/>.
   /// </summary>

@@ -23,13 +23,15 @@ public partial struct Quaternion : IEquatable<Quaternion>
   /// </summary>
   public Quaternion(float rotationX, float rotationY, float rotationZ)
   {
-    float cx = MathF.Cos(0.5f * rotationX), sx = MathF.Sin(0.5f * rotationX);
-    float cy = MathF.Cos(0.5f * rotationY), sy = MathF.Sin(0.5f * rotationY);
-    float cz = MathF.Cos(0.5f * rotationZ), sz = MathF.Sin(0.5f * rotationZ);
+    // Sine and cosine in double rounded to float (not MathF), term order as OpenTK's: bit for bit its values.
+    float hx = 0.5f * rotationX, hy = 0.5f * rotationY, hz = 0.5f * rotationZ;
+    float cx = (float)Math.Cos(hx), sx = (float)Math.Sin(hx);
+    float cy = (float)Math.Cos(hy), sy = (float)Math.Sin(hy);
+    float cz = (float)Math.Cos(hz), sz = (float)Math.Sin(hz);
+    W = cx * cy * cz - sx * sy * sz;
     X = sx * cy * cz + cx * sy * sz;
     Y = cx * sy * cz - sx * cy * sz;
     Z = cx * cy * sz + sx * sy * cz;
-    W = cx * cy * cz - sx * sy * sz;
   }
 
   public Quaternion(Vector3 eulerAngles) : this(eulerAngles.X, eulerAngles.Y, eulerAngles.Z)

@@ -18,7 +18,21 @@ public partial struct Quaterniond
   public static void Conjugate(ref Quaterniond q, out Quaterniond result) => result = Conjugate(q);
   public static void Invert(ref Quaterniond q, out Quaterniond result) => result = q.Inverted();
   public static void Normalize(ref Quaterniond q, out Quaterniond result) => result = q.Normalized();
-  public static void FromEulerAngles(ref Vector3d eulerAngles, out Quaterniond result) => result = new Quaterniond(eulerAngles);
+
+  /// <summary>
+  /// OpenTK 3's ref form of the Euler angles (X pitch, Y yaw, Z roll) builds <c>qY(yaw) · qZ(pitch) · qX(roll)</c>,
+  /// not the constructor's order; kept as OpenTK 3 has it.
+  /// </summary>
+  public static void FromEulerAngles(ref Vector3d eulerAngles, out Quaterniond result)
+  {
+    double cp = Math.Cos(0.5 * eulerAngles.X), sp = Math.Sin(0.5 * eulerAngles.X);
+    double cy = Math.Cos(0.5 * eulerAngles.Y), sy = Math.Sin(0.5 * eulerAngles.Y);
+    double cr = Math.Cos(0.5 * eulerAngles.Z), sr = Math.Sin(0.5 * eulerAngles.Z);
+    result.W = cy * cp * cr - sy * sp * sr;
+    result.X = sy * sp * cr + cy * cp * sr;
+    result.Y = sy * cp * cr + cy * sp * sr;
+    result.Z = cy * sp * cr - sy * cp * sr;
+  }
 
   /// <summary>The rotation of an orthonormal matrix (row vectors, as <see cref="Matrix3d.CreateFromQuaternion"/> builds).</summary>
   public static Quaterniond FromMatrix(Matrix3d m)

@@ -14,10 +14,21 @@ public partial struct Quaterniond : IEquatable<Quaterniond>
   public Quaterniond(double x, double y, double z, double w) { X = x; Y = y; Z = z; W = w; }
   public Quaterniond(Vector3d v, double w) { X = v.X; Y = v.Y; Z = v.Z; W = w; }
 
-  /// <summary>From Euler angles in radians (applied about X, then Y, then Z).</summary>
-  public Quaterniond(double rotationX, double rotationY, double rotationZ)
+  /// <summary>
+  /// From Euler angles in radians with OpenTK 3's double formula: the product <c>qX(roll) · qY(yaw) · qZ(pitch)</c>
+  /// (pitch turns about Z and roll about X; a vector turns by pitch first). The float <see cref="Quaternion"/>'s
+  /// constructor is <c>qX · qY · qZ</c> of its three angles, and <see cref="FromEulerAngles(ref Vector3d, out Quaterniond)"/>
+  /// has a third order: OpenTK 3's own, kept so old code gets the rotations it got.
+  /// </summary>
+  public Quaterniond(double pitch, double yaw, double roll)
   {
-    this = FromAxisAngle(Vector3d.UnitZ, rotationZ) * FromAxisAngle(Vector3d.UnitY, rotationY) * FromAxisAngle(Vector3d.UnitX, rotationX);
+    double cp = Math.Cos(0.5 * pitch), sp = Math.Sin(0.5 * pitch);
+    double cy = Math.Cos(0.5 * yaw), sy = Math.Sin(0.5 * yaw);
+    double cr = Math.Cos(0.5 * roll), sr = Math.Sin(0.5 * roll);
+    W = cy * cp * cr - sy * sp * sr;
+    X = sy * sp * cr + cy * cp * sr;
+    Y = sy * cp * cr - cy * sp * sr;
+    Z = cy * sp * cr + sy * cp * sr;
   }
 
   public Vector3d Xyz { readonly get => new(X, Y, Z); set { X = value.X; Y = value.Y; Z = value.Z; } }

@@ -1,7 +1,7 @@
 namespace OpenTK.Mathematics;
 
 // OpenTK 3's remaining transforms of Vector3: by a float Matrix4 (row vectors) with the perspective divide, the
-// viewport projection, and the rotation by a float Quaternion.
+// viewport projection, the rotation by a float Quaternion, and the products with a float Matrix3.
 public partial struct Vector3
 {
   public static void TransformNormalInverse(ref Vector3 norm, ref Matrix4 invMat, out Vector3 result) => result = TransformNormalInverse(norm, invMat);
@@ -50,4 +50,28 @@ public partial struct Vector3
 
   public static void Transform(ref Vector3 vec, ref Quaternion quat, out Vector3 result) => result = Transform(vec, quat);
   public static Vector3 operator *(Quaternion quat, Vector3 vec) => Transform(vec, quat);
+
+  // By a Matrix3, in float and in OpenTK's order of terms. "Row" is v · M (this port's convention), "column" is M · v.
+  // Kept as OpenTK 3.3.3 has them: Transform(Matrix3, Vector3) is v · M, while its ref twin is M · v, and
+  // TransformRow(Vector3, Matrix3) is M · v, while its ref twin is v · M (OpenTK 4 made TransformRow v · M).
+  static Vector3 RowTimes(Vector3 v, Matrix3 m) => new(
+    v.X * m.Row0.X + v.Y * m.Row1.X + v.Z * m.Row2.X,
+    v.X * m.Row0.Y + v.Y * m.Row1.Y + v.Z * m.Row2.Y,
+    v.X * m.Row0.Z + v.Y * m.Row1.Z + v.Z * m.Row2.Z);
+
+  static Vector3 TimesColumn(Matrix3 m, Vector3 v) => new(Dot(m.Row0, v), Dot(m.Row1, v), Dot(m.Row2, v));
+
+  public static Vector3 Transform(Vector3 vec, Matrix3 mat) => RowTimes(vec, mat);
+  public static void Transform(ref Vector3 vec, ref Matrix3 mat, out Vector3 result) => result = RowTimes(vec, mat);
+  /// <summary>v · M despite the order of the arguments (OpenTK 3 marks it obsolete for that); see <see cref="TransformColumn(Matrix3, Vector3)"/>.</summary>
+  public static Vector3 Transform(Matrix3 mat, Vector3 vec) => RowTimes(vec, mat);
+  /// <summary>M · v, unlike <see cref="Transform(Matrix3, Vector3)"/>: OpenTK 3's ref twin disagrees with it.</summary>
+  public static void Transform(ref Matrix3 mat, ref Vector3 vec, out Vector3 result) => result = TimesColumn(mat, vec);
+  public static Vector3 TransformColumn(Matrix3 mat, Vector3 vec) => TimesColumn(mat, vec);
+  public static void TransformColumn(ref Matrix3 mat, ref Vector3 vec, out Vector3 result) => result = TimesColumn(mat, vec);
+  /// <summary>M · v, as in OpenTK 3.3.3 (a slip there: the ref twin and <c>v * M</c> give v · M).</summary>
+  public static Vector3 TransformRow(Vector3 vec, Matrix3 mat) => TimesColumn(mat, vec);
+  public static void TransformRow(ref Vector3 vec, ref Matrix3 mat, out Vector3 result) => result = RowTimes(vec, mat);
+  public static Vector3 operator *(Vector3 vec, Matrix3 mat) => RowTimes(vec, mat);
+  public static Vector3 operator *(Matrix3 mat, Vector3 vec) => TimesColumn(mat, vec);
 }

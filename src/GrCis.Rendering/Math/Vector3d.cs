@@ -136,8 +136,8 @@ public partial struct Vector3d : IEquatable<Vector3d>
     v.X * m.Row0.Z + v.Y * m.Row1.Z + v.Z * m.Row2.Z + m.Row3.Z);
   public static void TransformPosition(ref Vector3d v, ref Matrix4d m, out Vector3d result) => result = TransformPosition(v, m);
 
-  /// <summary>Transforms a normal by the inverse transpose of <paramref name="m"/>.</summary>
-  public static Vector3d TransformNormal(Vector3d n, Matrix4d m) => TransformNormalInverse(n, m.Inverted());
+  /// <summary>Transforms a normal by the inverse transpose of <paramref name="m"/>; a singular m throws, as in OpenTK 3.</summary>
+  public static Vector3d TransformNormal(Vector3d n, Matrix4d m) => TransformNormalInverse(n, Matrix4d.Invert(m));
 
   /// <summary>Transforms a normal, given the already inverted matrix: <c>invM * n</c> as a column.</summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]

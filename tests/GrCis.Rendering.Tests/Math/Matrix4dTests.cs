@@ -53,9 +53,36 @@ public class Matrix4dTests
   }
 
   [Fact]
-  public void Singular_matrix_cannot_be_inverted()
+  public void A_singular_matrix_is_Inverted_unchanged_but_Invert_throws_as_in_OpenTK_3()
   {
-    Assert.Throws<System.InvalidOperationException>(() => Matrix4d.Scale(1, 0, 1).Inverted());
+    Matrix4d flat = Matrix4d.Scale(1, 0, 1) * Matrix4d.CreateTranslation(1, 2, 3);
+    Assert.Equal(0.0, flat.Determinant);
+    Assert.Equal(flat, flat.Inverted());
+    Assert.Throws<System.InvalidOperationException>(() => Matrix4d.Invert(flat));
+    Assert.Throws<System.InvalidOperationException>(() => Matrix4d.Invert(ref flat, out _));
+    Assert.Throws<System.InvalidOperationException>(() => flat.Invert());
+    Assert.Throws<System.InvalidOperationException>(() => Vector3d.TransformNormal(Vector3d.UnitY, flat));   // OpenTK inverts with Invert
+    Assert.Equal(Matrix4d.Zero, Matrix4d.Zero.Inverted());
+
+    Matrix4 flatF = (Matrix4)flat;
+    Assert.Equal(flatF, flatF.Inverted());
+    Assert.Throws<System.InvalidOperationException>(() => Matrix4.Invert(flatF));
+
+    Matrix3d flat3 = new(1, 2, 3, 4, 5, 6, 5, 7, 9);   // third row = first + second
+    Assert.Equal(0.0, flat3.Determinant);
+    Assert.Equal(flat3, flat3.Inverted());
+    Assert.Throws<System.InvalidOperationException>(() => Matrix3d.Invert(Matrix3d.Zero));
+  }
+
+  [Fact]
+  public void Diagonal_setters_write_the_main_diagonal()
+  {
+    Matrix3d m3 = Matrix3d.Identity;
+    m3.Diagonal = new Vector3d(2, 3, 4);
+    Assert.Equal(Matrix3d.CreateScale(2, 3, 4), m3);
+    Matrix4d m4 = Matrix4d.CreateTranslation(1, 2, 3);
+    m4.Diagonal = new Vector4d(2, 3, 4, 5);
+    Assert.Equal(new Matrix4d(2, 0, 0, 0, 0, 3, 0, 0, 0, 0, 4, 0, 1, 2, 3, 5), m4);
   }
 
   [Fact]

@@ -1,8 +1,8 @@
 # Lists OpenTK 3.3.3's public members of the math types GrCis uses, as TSV (type, kind, member).
-# Run once from this folder: python3 opentk3-api.py <git dir of github.com/opentk/opentk> > opentk3-api.tsv
+# Run from this folder: python3 opentk3-api.py <git dir of github.com/opentk/opentk> > opentk3-api.tsv
 import re, subprocess, sys
 gitdir = sys.argv[1]
-types = ["Vector2", "Vector3", "Vector4", "Vector2d", "Vector3d", "Vector4d", "Matrix3d", "Matrix4", "Matrix4d",
+types = ["Vector2", "Vector3", "Vector4", "Vector2d", "Vector3d", "Vector4d", "Matrix3", "Matrix3d", "Matrix4", "Matrix4d",
          "Quaternion", "Quaterniond", "MathHelper"]
 
 def source(t):

@@ -1,0 +1,65 @@
+using System;
+
+namespace OpenTK.Mathematics;
+
+// OpenTK 3's remaining members of the float Matrix3: columns, indexer, out-parameter creators, decomposition.
+public partial struct Matrix3
+{
+  public readonly Vector3 Column0 => new(Row0.X, Row1.X, Row2.X);
+  public readonly Vector3 Column1 => new(Row0.Y, Row1.Y, Row2.Y);
+  public readonly Vector3 Column2 => new(Row0.Z, Row1.Z, Row2.Z);
+  public Vector3 Diagonal { readonly get => new(Row0.X, Row1.Y, Row2.Z); set { Row0.X = value.X; Row1.Y = value.Y; Row2.Z = value.Z; } }
+  public readonly float Trace => Row0.X + Row1.Y + Row2.Z;
+
+  public float this[int rowIndex, int columnIndex]
+  {
+    readonly get => rowIndex switch
+    {
+      0 => Row0[columnIndex], 1 => Row1[columnIndex], 2 => Row2[columnIndex],
+      _ => throw new IndexOutOfRangeException($"Matrix3 row {rowIndex} is outside 0..2."),
+    };
+    set
+    {
+      switch (rowIndex)
+      {
+        case 0: Row0[columnIndex] = value; break;
+        case 1: Row1[columnIndex] = value; break;
+        case 2: Row2[columnIndex] = value; break;
+        default: throw new IndexOutOfRangeException($"Matrix3 row {rowIndex} is outside 0..2.");
+      }
+    }
+  }
+
+  /// <summary>OpenTK's "normalisation": every element divided by the determinant.</summary>
+  public void Normalize()
+  {
+    float d = Determinant;
+    Row0 /= d; Row1 /= d; Row2 /= d;
+  }
+
+  public readonly Matrix3 Normalized() { Matrix3 m = this; m.Normalize(); return m; }
+  public readonly Matrix3 ClearScale() => new(Row0.Normalized(), Row1.Normalized(), Row2.Normalized());
+  public readonly Matrix3 ClearRotation() => CreateScale(Row0.Length, Row1.Length, Row2.Length);
+  public readonly Vector3 ExtractScale() => new(Row0.Length, Row1.Length, Row2.Length);
+
+  /// <summary>The rotation as a quaternion; <paramref name="row_normalise"/> first removes a scale of the rows.</summary>
+  public readonly Quaternion ExtractRotation(bool row_normalise = true) => (Quaternion)((Matrix3d)this).ExtractRotation(row_normalise);
+
+  /// <summary>The rotation of <paramref name="q"/> for row vectors; q need not be unit length.</summary>
+  public static Matrix3 CreateFromQuaternion(Quaternion q) => new(Matrix4.CreateFromQuaternion(q));
+
+  public static void CreateFromAxisAngle(Vector3 axis, float angle, out Matrix3 result) => result = CreateFromAxisAngle(axis, angle);
+  public static void CreateFromQuaternion(ref Quaternion q, out Matrix3 result) => result = CreateFromQuaternion(q);
+  public static void CreateRotationX(float angle, out Matrix3 result) => result = CreateRotationX(angle);
+  public static void CreateRotationY(float angle, out Matrix3 result) => result = CreateRotationY(angle);
+  public static void CreateRotationZ(float angle, out Matrix3 result) => result = CreateRotationZ(angle);
+  public static void CreateScale(float scale, out Matrix3 result) => result = CreateScale(scale);
+  public static void CreateScale(ref Vector3 scale, out Matrix3 result) => result = CreateScale(scale);
+  public static void CreateScale(float x, float y, float z, out Matrix3 result) => result = CreateScale(x, y, z);
+
+  public static Matrix3 Add(Matrix3 left, Matrix3 right) => new(left.Row0 + right.Row0, left.Row1 + right.Row1, left.Row2 + right.Row2);
+  public static void Add(ref Matrix3 left, ref Matrix3 right, out Matrix3 result) => result = Add(left, right);
+  public static void Mult(ref Matrix3 left, ref Matrix3 right, out Matrix3 result) => result = left * right;
+  public static void Invert(ref Matrix3 mat, out Matrix3 result) => result = Invert(mat);
+  public static void Transpose(ref Matrix3 mat, out Matrix3 result) => result = Transpose(mat);
+}
