@@ -43,6 +43,7 @@ public class ScriptsFolderTests
     "Glow.cs",           // SphereFront + RecursionFunction producing RayRecursion
     "TexturedTorus.cs",  // texture class declared in the script
     "MeshVase.cs",       // OBJ mesh shipped in scripts/data, found via CTX_SCRIPT_PATH
+    "ImageTexture.cs",   // PNG shipped in scripts/data, a relative path found beside the script
     "Spiral.cs",         // parameters (strict), tooltip, size and supersampling from the script
     "GlossyReflections.cs", // DistributedRayTracing: glossy reflections by Phong exponent
     "SoftShadows.cs",    // DistributedRayTracing: SphereLightSource penumbrae

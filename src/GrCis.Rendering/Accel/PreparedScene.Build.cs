@@ -204,7 +204,8 @@ public sealed partial class PreparedScene
 
   /// <summary>
   /// The surface-only completion a member allows: an exact library Sphere, Plane or Cube, shaded by the library's Phong
-  /// model and material, with no RECURSION function and no texture but checkers (which read only TextureCoord).
+  /// model and material, with no RECURSION function and no texture but checkers and image textures (which read only
+  /// TextureCoord and the surface colour).
   /// </summary>
   static HitCompletion CompletionFor(IRecordSolid f, IReflectanceModel model, IMaterial material, LinkedList<ITexture>? textures, object? recursion)
   {
@@ -214,7 +215,7 @@ public sealed partial class PreparedScene
     if (textures != null)
       foreach (ITexture t in textures)
       {
-        if (!SubclassCheck.OverridesNothing(t, typeof(CheckerTexture)))
+        if (!SubclassCheck.OverridesNothing(t, typeof(CheckerTexture)) && !SubclassCheck.OverridesNothing(t, typeof(ImageTexture)))
           return HitCompletion.Full;
         textured = true;
       }

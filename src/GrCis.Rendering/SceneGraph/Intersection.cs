@@ -136,12 +136,12 @@ public class Intersection : IComparable<Intersection>
   /// Sets the surface colour to a copy of <paramref name="color"/> by overwriting this hit's own pooled
   /// copy when it holds the current colour (same values as a fresh clone, no allocation); false otherwise.
   /// </summary>
-  internal bool TryCopySurfaceColor(double[] color)
+  internal bool TryCopySurfaceColor(ReadOnlySpan<double> color)
   {
     double[]? own = spareColor;
     if (own == null || !ReferenceEquals(SurfaceColor, own) || own.Length != color.Length)
       return false;
-    Array.Copy(color, own, color.Length);
+    color.CopyTo(own);
     return true;
   }
 
@@ -223,7 +223,7 @@ public class Intersection : IComparable<Intersection>
 
   /// <summary>
   /// <see cref="CompleteCached"/> for a hit only the library's own shading reads (see <see cref="Accel.HitCompletion"/>):
-  /// the world point, normal, attributes and (when a checker reads them) texture coordinates, computed as the full
+  /// the world point, normal, attributes and (when a checker or image texture reads them) texture coordinates, computed as the full
   /// completion computes them; tangents, object coordinates and the three matrices are left as they are.
   /// </summary>
   internal void CompleteSurface(in Matrix4d localToWorld, in Matrix4d worldToLocal, IReflectanceModel model, IMaterial material,

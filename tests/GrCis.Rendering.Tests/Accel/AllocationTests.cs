@@ -108,6 +108,37 @@ public class AllocationTests
     Assert.True(perPixel <= 8, $"{perPixel:F1} B/pixel");
   }
 
+  [Theory]
+  [InlineData(typeof(Sphere), 180, 200)]   // bilinear
+  [InlineData(typeof(Cube), 440, 200)]     // multiplying COLOR, mirrored repeat
+  [InlineData(typeof(Plane), 300, 440)]    // nearest
+  public void Image_texture_pixels_allocate_nothing_per_hit(Type solid, int x0, int y0)
+  {
+    // The texel goes into the hit's own colour array, as the checker's Color2 does.
+    IRayScene scene = GrCis.Rendering.Tests.Textures.ImageTextureTests.TexturedSolids(GrCis.Rendering.Tests.Textures.ImageTextureTests.Pattern());
+    int textured = TexturedHits(scene, solid, x0, y0, 16);
+    var f = new RayTracing(scene) { DoReflections = false, DoRefractions = false };
+    double perPixel = BytesPerPixel(scene, f, x0, y0, 16);
+    output.WriteLine($"image texture on a {solid.Name}: {textured} of 256 pixels, {perPixel:F1} B/pixel");
+    Assert.True(textured == 256, $"only {textured} of 256 pixels hit the textured {solid.Name}");
+    Assert.True(perPixel <= 8, $"{perPixel:F1} B/pixel");
+  }
+
+  /// <summary>How many of the block's pixel centres hit a textured solid of type <paramref name="solid"/> first.</summary>
+  static int TexturedHits(IRayScene scene, Type solid, int x0, int y0, int size)
+  {
+    PreparedScene p = PreparedScene.Prepare(scene.Intersectable);
+    scene.Camera!.Width = 640;
+    scene.Camera.Height = 480;
+    int n = 0;
+    for (int y = y0; y < y0 + size; y++)
+      for (int x = x0; x < x0 + size; x++)
+        if (scene.Camera.GetRay(x + 0.5, y + 0.5, out Vector3d p0, out Vector3d p1) &&
+            p.FirstHit(p0, p1)?.Solid is ISolid s && s.GetType() == solid && s.GetTextures() is { Count: > 0 })
+          n++;
+    return n;
+  }
+
   /// <summary>How many of the block's pixel centres hit a leaf of a non-union CSG subtree first.</summary>
   static int CsgHits(IRayScene scene, int x0, int y0, int size)
   {
