@@ -125,7 +125,7 @@ public class PathTracing : RayTracing
       throughput *= weight;
       if (throughput.IsBlack)
         break;
-      if (bounce + 1 >= RussianRouletteStart + 1)
+      if (bounce >= RussianRouletteStart)
       {
         double survive = Math.Min(1.0, Math.Sqrt(throughput.Max));
         if (rnd.UniformNumber() >= survive)
@@ -218,7 +218,8 @@ public class PathTracing : RayTracing
     if (keep <= 0.0)
       return true;
     scratch.Rays++;
-    return !Query.AnyHit(x, toLight * keep);
+    PreparedScene? ps = PreparedFor(scratch);
+    return ps != null ? !ps.AnyHit(x, toLight * keep) : !Lists.AnyHit(x, toLight * keep);
   }
 
   /// <summary>Radiance of the background seen in <paramref name="direction"/>.</summary>
