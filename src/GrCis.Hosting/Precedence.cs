@@ -62,6 +62,9 @@ public static class Precedence
     }
 
     IImageFunction? function = null;
+    // A given algorithm the script's function already is (its exact class) keeps the script's settings.
+    if (script.ImageFunction != null && given.HasFlag(GivenSettings.Algorithm) && script.ImageFunction.GetType() == s.CreateImageFunction().GetType())
+      given &= ~GivenSettings.Algorithm;
     if (script.ImageFunction != null && given.HasFlag(GivenSettings.Algorithm))
       notes.Add($"{name(Setting.Algorithm)} given: the script's image function {script.ImageFunction.GetType().Name} is replaced by {s.CreateImageFunction().GetType().Name}");
     else if (script.ImageFunction != null)

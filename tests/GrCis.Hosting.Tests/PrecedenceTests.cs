@@ -160,6 +160,12 @@ public class PrecedenceTests
     Assert.Null(replaced.ImageFunction);
     Assert.IsType<PathTracing>(replaced.CreateImageFunction());
     Assert.Contains(replaced.Notes, n => n.Contains("DistributedRayTracing") && n.Contains("PathTracing"));
+
+    // Asking for what the script already chose keeps the script's object and its settings, without a note.
+    var own = new PathTracing { MaxLevel = 5 };
+    RenderPlan same = Precedence.Resolve(Defaults with { Algorithm = RenderAlgorithm.Path }, GivenSettings.Algorithm, new ScriptChoices { ImageFunction = own });
+    Assert.Same(own, same.ImageFunction);
+    Assert.Empty(same.Notes);
   }
 
   [Theory]
