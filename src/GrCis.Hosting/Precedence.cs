@@ -62,11 +62,10 @@ public static class Precedence
     }
 
     IImageFunction? function = null;
-    // A given algorithm the script's function already is (its exact class) keeps the script's settings.
-    if (script.ImageFunction != null && given.HasFlag(GivenSettings.Algorithm) && script.ImageFunction.GetType() == s.CreateImageFunction().GetType())
-      given &= ~GivenSettings.Algorithm;
-    if (script.ImageFunction != null && given.HasFlag(GivenSettings.Algorithm))
-      notes.Add($"{name(Setting.Algorithm)} given: the script's image function {script.ImageFunction.GetType().Name} is replaced by {s.CreateImageFunction().GetType().Name}");
+    // A given algorithm replaces the script's function, unless that already is its exact class (then it keeps its settings).
+    Type? chosen = script.ImageFunction != null && given.HasFlag(GivenSettings.Algorithm) ? s.CreateImageFunction().GetType() : null;
+    if (chosen != null && script.ImageFunction!.GetType() != chosen)
+      notes.Add($"{name(Setting.Algorithm)} given: the script's image function {script.ImageFunction.GetType().Name} is replaced by {chosen.Name}");
     else if (script.ImageFunction != null)
     {
       if (given.HasFlag(GivenSettings.Accel) && script.ImageFunction is RayCasting rc)

@@ -26,8 +26,8 @@ public class ThinLensCamera : StaticCamera
   double lensRadius;
   double focusDistance = 1.0;
 
-  // Lens-plane axes (to the right and up in the image), kept by prepare().
-  Vector3d lensRight, lensUp;
+  // Lens-plane axes (to the right and up in the image) and the unit viewing direction, kept by prepare().
+  Vector3d lensRight, lensUp, viewAxis;
 
   /// <summary>For subclasses that set the fields themselves and then call prepare() (as with <see cref="StaticCamera()"/>).</summary>
   public ThinLensCamera()
@@ -80,6 +80,7 @@ public class ThinLensCamera : StaticCamera
     base.prepare();
     lensRight = dx.Normalized();
     lensUp = -dy.Normalized();
+    viewAxis = direction.Normalized();
   }
 
   public override bool GetRay(double x, double y, out Vector3d p0, out Vector3d p1)
@@ -89,7 +90,7 @@ public class ThinLensCamera : StaticCamera
       return true;
 
     // The pinhole ray meets the focal plane at the point every lens ray of this sample aims at.
-    double along = Vector3d.Dot(p1, direction.Normalized());
+    double along = Vector3d.Dot(p1, viewAxis);
     if (along <= 0.0)
       return true;
     Vector3d focus = center + p1 * (focusDistance / along);

@@ -39,18 +39,16 @@ internal sealed class EmitterSet
 
   EmitterSet((ISolid Solid, Vector3d Corner, Vector3d Edge1, Vector3d Edge2, Vector3d Normal, Rgb Radiance)[] found)
   {
-    double total = 0.0;
-    foreach (var f in found)
-      total += Vector3d.Cross(f.Edge1, f.Edge2).Length * f.Radiance.Average;
-    emitters = new Emitter[found.Length];
+    // cdf holds the running power (area × mean radiance) first, then is divided by the total.
     cdf = new double[found.Length];
-    double running = 0.0;
+    double total = 0.0;
+    for (int k = 0; k < found.Length; k++)
+      cdf[k] = total += Vector3d.Cross(found[k].Edge1, found[k].Edge2).Length * found[k].Radiance.Average;
+    emitters = new Emitter[found.Length];
     for (int k = 0; k < found.Length; k++)
     {
       var f = found[k];
-      double power = Vector3d.Cross(f.Edge1, f.Edge2).Length * f.Radiance.Average;
-      running += power;
-      cdf[k] = running / total;
+      cdf[k] /= total;
       // Picked with probability power/total, then uniform over the area: density mean radiance / total per unit area.
       double density = f.Radiance.Average / total;
       emitters[k] = new Emitter(f.Corner, f.Edge1, f.Edge2, f.Normal, f.Radiance, density);

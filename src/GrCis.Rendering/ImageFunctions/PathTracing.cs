@@ -203,7 +203,7 @@ public class PathTracing : RayTracing
     if (cos <= 0.0)
       return Rgb.Zero;
     Rgb f = bsdf.Eval(wi);
-    if (f.IsBlack || (DoShadows && !Visible(scratch, i.CoordWorld, dir, dist)))
+    if (f.IsBlack || !Visible(scratch, i.CoordWorld, dir, dist))
       return Rgb.Zero;
     return f * Rgb.From(intensity) * (Math.PI * cos);
   }
@@ -215,11 +215,7 @@ public class PathTracing : RayTracing
       return true;
     // Stop short of the light's surface, so that surface is not taken for an occluder.
     double keep = 1.0 - 4.0 * Intersection.RAY_EPSILON / dist;
-    if (keep <= 0.0)
-      return true;
-    scratch.Rays++;
-    PreparedScene? ps = PreparedFor(scratch);
-    return ps != null ? !ps.AnyHit(x, toLight * keep) : !Lists.AnyHit(x, toLight * keep);
+    return keep <= 0.0 || !Blocked(scratch, x, toLight * keep);
   }
 
   /// <summary>Radiance of the background seen in <paramref name="direction"/>.</summary>

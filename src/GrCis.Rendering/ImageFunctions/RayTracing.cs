@@ -82,6 +82,13 @@ public class RayTracing : RayCasting
   /// <summary>True when something (not marked NO_SHADOW) lies between the point and the light at <c>p0 + dir</c>.</summary>
   protected virtual bool Occluded(Vector3d p0, Vector3d dir) => Occluded(ShadingScratch.Current, p0, dir);
 
+  /// <summary>
+  /// The shadow query every shading path asks: a subclass's own <see cref="Occluded(Vector3d, Vector3d)"/> when it
+  /// overrides it, else the scratch at hand answers (and counts the ray).
+  /// </summary>
+  private protected bool Blocked(ShadingScratch scratch, Vector3d p0, Vector3d dir) =>
+    occludedOverridden ? Occluded(p0, dir) : Occluded(scratch, p0, dir);
+
   bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
   {
     scratch.Rays++;
@@ -310,7 +317,7 @@ public class RayTracing : RayCasting
         transmit = ShadowTransmittance(i.CoordWorld, dir);
       }
       else
-        transmit = (occludedOverridden ? Occluded(i.CoordWorld, dir) : Occluded(scratch, i.CoordWorld, dir)) ? 0.0 : 1.0;
+        transmit = Blocked(scratch, i.CoordWorld, dir) ? 0.0 : 1.0;
       scratch.Observer?.ShadowRay(i.CoordWorld, dir, transmit <= 0.0);
       if (transmit <= 0.0)
       {

@@ -35,11 +35,7 @@ public static class SampleWarp
   /// </summary>
   public static Vector3d PowerCosine(double u, double v, in Vector3d axis, double exponent)
   {
-    double cos = Math.Pow(1.0 - u, 1.0 / (exponent + 1.0));
-    double sin = Math.Sqrt(Math.Max(0.0, 1.0 - cos * cos));
-    double phi = 2.0 * Math.PI * v;
-    Frame(axis, out Vector3d t, out Vector3d b);
-    return t * (sin * Math.Cos(phi)) + b * (sin * Math.Sin(phi)) + axis * cos;
+    return AroundAxis(Math.Pow(1.0 - u, 1.0 / (exponent + 1.0)), v, axis);
   }
 
   /// <summary>Density of <see cref="PowerCosine"/> for a direction at cosine <paramref name="cos"/> from the axis.</summary>
@@ -49,7 +45,12 @@ public static class SampleWarp
   /// <summary>A direction inside the cone around the unit <paramref name="axis"/> with cosine ≥ <paramref name="cosMax"/>, uniform by solid angle.</summary>
   public static Vector3d UniformCone(double u, double v, in Vector3d axis, double cosMax)
   {
-    double cos = 1.0 - u * (1.0 - cosMax);
+    return AroundAxis(1.0 - u * (1.0 - cosMax), v, axis);
+  }
+
+  /// <summary>The unit direction at cosine <paramref name="cos"/> from <paramref name="axis"/>, turned by 2π·<paramref name="v"/> about it.</summary>
+  static Vector3d AroundAxis(double cos, double v, in Vector3d axis)
+  {
     double sin = Math.Sqrt(Math.Max(0.0, 1.0 - cos * cos));
     double phi = 2.0 * Math.PI * v;
     Frame(axis, out Vector3d t, out Vector3d b);

@@ -182,17 +182,18 @@ internal static class ScriptCompiler
   /// <summary><see cref="DefaultImports"/>, and <see cref="YieldingImport"/> unless a module declares a type it holds.</summary>
   static ImmutableArray<string> ScriptImports(IReadOnlyList<ScriptModule> modules)
   {
-    ImmutableArray<string> imports = DefaultImports.Add(YieldingImport);
-    if (modules.Count == 0)
-      return imports;
-    var yielding = new HashSet<string>(typeof(Rendering.RayTracing).Assembly.GetExportedTypes()
-      .Where(t => t.Namespace == YieldingImport).Select(t => t.Name), StringComparer.Ordinal);
     foreach (ScriptModule m in modules)
       foreach (Type t in m.Assembly.GetExportedTypes())
-        if (yielding.Contains(t.Name))
+        if (YieldingNames.Contains(t.Name))
           return DefaultImports;
-    return imports;
+    return ImportsWithYielding;
   }
+
+  static readonly ImmutableArray<string> ImportsWithYielding = DefaultImports.Add(YieldingImport);
+
+  // The simple names of the library's types in YieldingImport, read once.
+  static readonly HashSet<string> YieldingNames = new(typeof(Rendering.RayTracing).Assembly.GetExportedTypes()
+    .Where(t => t.Namespace == YieldingImport).Select(t => t.Name), StringComparer.Ordinal);
 
   static IEnumerable<MetadataReference> References(IReadOnlyList<ScriptModule> modules) =>
     modules.Count == 0 ? FrameworkReferences.All : FrameworkReferences.All.Concat(modules.Select(m => m.Reference));
