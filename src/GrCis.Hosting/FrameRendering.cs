@@ -14,14 +14,14 @@ namespace GrCis.Hosting;
 public static class FrameRendering
 {
   /// <summary>Renders <paramref name="scene"/>; the tiles of <see cref="RenderOptions.Tiles"/> only, when set.</summary>
-  /// <param name="context">Where the rays go (an observer); null = a fresh context, counts only.</param>
+  /// <param name="context">Where the rays go (an observer) and the noise estimate; null = a fresh context with a noise estimate.</param>
   /// <exception cref="RenderException">The scene's code failed (the first failing tile in tile order).</exception>
   public static FrameResult Render(IRayScene scene, IImageFunction function, ImageSynthesizer renderer, RenderOptions options,
     Action<RenderProgress>? progress = null, CancellationToken cancel = default, RenderContext? context = null)
   {
     ArgumentNullException.ThrowIfNull(renderer);
     ArgumentNullException.ThrowIfNull(options);
-    context ??= new RenderContext();
+    context ??= new RenderContext { Noise = new NoiseImage(renderer.Width, renderer.Height) };
     int tilesTotal = options.Tiles?.Count ?? TileRenderer.MakeTiles(renderer.Width, renderer.Height, options.TileSize).Count;
     int tilesDone = 0;
     var clock = Stopwatch.StartNew();
@@ -31,7 +31,7 @@ public static class FrameRendering
       progress?.Invoke(p);
     }, cancel, context);
     clock.Stop();
-    return new FrameResult(image, RenderStatistics.Of(renderer, options, context, clock.Elapsed, tilesDone, tilesTotal),
-                           cancel.IsCancellationRequested);
+    return new FrameResult(image, RenderStatistics.Of(renderer, options, context, clock.Elapsed, tilesDone, tilesTotal, image),
+                           cancel.IsCancellationRequested) { Noise = context.Noise };
   }
 }

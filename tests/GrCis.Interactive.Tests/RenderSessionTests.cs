@@ -175,4 +175,87 @@ public class RenderSessionTests
     Assert.NotEqual(plain.Data, cli.Data);   // the two settings change this scene
     Assert.Equal(cli.Data, result.Image.Data);
   }
+
+  [Fact]
+  public async Task Coarse_pixels_are_not_rendered_twice_so_rays_equal_the_cli_renders()
+  {
+    RenderJob job = RenderJob.Create(TestScenes.SphereOnPlane(glass: true), Small);
+    var cli = new RenderContext();
+    FloatImage reference = TileRenderer.Render(job.Scene, job.ImageFunction, job.Renderer, Small.ToRenderOptions(), context: cli);
+    using var session = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(glass: true), Small)) { CoarseBlock = 8 };
+    RenderResult result = await session.Start();
+    Assert.Equal(reference.Data, result.Image.Data);
+    Assert.Equal(cli.Rays, result.Statistics.Rays);
+  }
+
+  static readonly RenderSettings Sixteen = Small with { SamplesPerPixel = 16, Jitter = 1.0 };
+
+  [Fact]
+  public async Task Progressive_passes_add_samples_and_end_in_the_cli_image_bit_for_bit()
+  {
+    RenderJob job = RenderJob.Create(TestScenes.SphereOnPlane(glass: true), Sixteen);
+    var cli = new RenderContext();
+    FloatImage reference = TileRenderer.Render(job.Scene, job.ImageFunction, job.Renderer, Sixteen.ToRenderOptions(), context: cli);
+    using var session = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(glass: true), Sixteen)) { Progressive = true };
+    var previews = new List<RenderPreviewEventArgs>();
+    session.PreviewReady += (_, e) => { lock (previews) previews.Add(e); };
+
+    RenderResult result = await session.Start();
+
+    Assert.True(result.Succeeded);
+    Assert.Equal(reference.Data, result.Image.Data);
+    Assert.Equal(cli.Rays, result.Statistics.Rays);
+    // One pass per sample count of 4×4: 1, 4, 8, then the final 16.
+    int[] passes = previews.Where(p => p.Pass == PreviewPass.Samples && p.Samples != null).Select(p => p.Samples!.Value).ToArray();
+    Assert.Equal(new[] { 1, 4, 8 }, passes);
+    Assert.Equal(PreviewPass.Final, previews[^1].Pass);
+    Assert.Equal(result.Image.Data, previews[^1].Image.Data);
+    // The noise estimate needs two diagonals; it then shrinks as samples are added.
+    RenderPreviewEventArgs eight = previews.Single(p => p.Samples == 8);
+    Assert.Null(previews.Single(p => p.Samples == 4).Noise);
+    Assert.NotNull(eight.Noise);
+    Assert.NotNull(previews[^1].Noise);
+    Assert.True(previews[^1].Noise < eight.Noise, $"noise {previews[^1].Noise} at 16 spp, {eight.Noise} at 8");
+    Assert.Equal(result.Statistics.Noise, previews[^1].Noise);
+    // Each pass's preview is every pixel's mean so far: closer to the final image the more samples it has.
+    double Distance(FloatImage a) => a.Data.Zip(result.Image.Data, (u, v) => Math.Abs(u - v)).Average();
+    Assert.True(Distance(eight.Image) < Distance(previews.Single(p => p.Samples == 1).Image));
+  }
+
+  [Fact]
+  public async Task Progressive_render_of_one_thread_or_four_gives_the_same_image()
+  {
+    using var one = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(glass: true), Sixteen with { Threads = 1 })) { Progressive = true };
+    using var four = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(glass: true), Sixteen with { Threads = 4 })) { Progressive = true };
+    Assert.Equal((await one.Start()).Image.Data, (await four.Start()).Image.Data);
+  }
+
+  [Fact]
+  public async Task Stopped_progressive_render_keeps_every_pixels_mean_so_far()
+  {
+    RenderSettings s = Sixteen with { Threads = 1 };
+    using var session = new RenderSession(RenderJob.Create(TestScenes.SphereOnPlane(), s)) { Progressive = true };
+    FloatImage? firstPass = null;
+    session.PreviewReady += (_, e) => { if (e.Samples == 1) firstPass = e.Image; };
+    // Stop early in the second pass: the first pass covered every pixel with one sample.
+    session.ProgressChanged += (_, e) => { if (e.Fraction > 1.0 / 16 + 0.01) session.Stop(); };
+
+    RenderResult result = await session.Start();
+
+    Assert.True(result.Cancelled);
+    Assert.NotNull(firstPass);
+    FloatImage full = Reference(s);
+    // Every pixel has a value (no black holes), some already past the first pass's single sample.
+    int changed = 0;
+    for (int y = 0; y < s.Height; y++)
+      for (int x = 0; x < s.Width; x++)
+      {
+        double[] kept = result.Image.GetPixel(x, y), first = firstPass!.GetPixel(x, y);
+        if (full.GetPixel(x, y).Sum() > 0)
+          Assert.True(kept.Sum() > 0, $"pixel {x},{y} lost");
+        if (!kept.SequenceEqual(first))
+          changed++;
+      }
+    Assert.InRange(changed, 1, s.Width * s.Height - 1);
+  }
 }

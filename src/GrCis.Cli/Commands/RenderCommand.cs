@@ -10,6 +10,7 @@ using GrCis.Cli.ProgressViews;
 using GrCis.Cli.SceneSources;
 using GrCis.Scripting;
 using Rendering;
+using Rendering.Imaging;
 using Rendering.Parts;
 using GrCis.Hosting;
 
@@ -43,6 +44,12 @@ public sealed class RenderCommand
     HelpName = "i/n",
   };
 
+  readonly Option<string?> noise = new("--noise")
+  {
+    Description = "Also write the estimated noise: each pixel's standard error (linear, one-band .pfm; needs 2x2 spp or more)",
+    HelpName = "file.pfm",
+  };
+
   readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
   readonly ScriptOptions scriptOptions = new();
 
@@ -50,7 +57,7 @@ public sealed class RenderCommand
   {
     var cmd = new Command("render", "Render a still image of a scene")
     {
-      scene, output, format, tiles, quiet,
+      scene, output, format, tiles, noise, quiet,
     };
     render.AddTo(cmd);
     scriptOptions.AddTo(cmd);
@@ -68,6 +75,8 @@ public sealed class RenderCommand
     using var scriptHost = source as IDisposable;
     OutputTarget target = ResolveTarget(parse, source, part, env);
     target.CheckWritable();
+    OutputTarget? noiseTarget = ResolveNoiseTarget(parse, part, target, env);
+    noiseTarget?.CheckWritable();
 
     // Command line, then the script's context values, then the defaults.
     PreparedRender setup = PrepareScene(new RenderRequest(source, settings, render.Given(parse), scriptOptions.Time(parse)));
@@ -105,6 +114,12 @@ public sealed class RenderCommand
       target.SavePart(StillPart.Header(source, setup, shard, Modules(parse, env), result.Statistics.SamplesPerPixel), result.Image);
     else
       target.Save(result.Image, settings.Gamma);
+    if (noiseTarget != null)
+    {
+      if (result.Noise?.Rmse() == null)
+        env.Error.WriteLine($"grcis: warning: no noise estimate at {result.Statistics.SamplesPerPixel} spp (it needs 2x2 supersampling or more); '{noiseTarget.FullPath}' holds NaN");
+      noiseTarget.Save(result.Noise?.StandardError() ?? NoNoise(result.Image), 1.0);
+    }
     env.Out.WriteLine(Summary(target, settings, result) + (part is ShardSpec sp ? $", part {sp} (merge with 'grcis merge')" : ""));
     return ExitCodes.Success;
   }
@@ -127,6 +142,28 @@ public sealed class RenderCommand
     return target;
   }
 
+  /// <summary><c>--noise</c>: a .pfm file beside the image, not with <c>--tiles</c>, not the image itself.</summary>
+  OutputTarget? ResolveNoiseTarget(ParseResult parse, ShardSpec? part, OutputTarget image, CliEnvironment env)
+  {
+    if (parse.GetValue(noise) is not string n)
+      return null;
+    if (part != null)
+      throw new UsageException("--noise is not written with --tiles (a part has no whole image to estimate)");
+    OutputTarget target = OutputTarget.Resolve(n, null, "noise", env.WorkingDirectory);
+    if (target.Format != OutputFormat.Pfm)
+      throw new UsageException($"--noise writes linear floats: name it *.pfm (got '{n}')");
+    if (string.Equals(target.FullPath, image.FullPath, StringComparison.Ordinal))
+      throw new UsageException($"--noise '{n}' is the image's own output file");
+    return target;
+  }
+
+  static FloatImage NoNoise(FloatImage image)
+  {
+    var none = new FloatImage(image.Width, image.Height, 1);
+    Array.Fill(none.Data, float.NaN);
+    return none;
+  }
+
   IEnumerable<string> Modules(ParseResult parse, CliEnvironment env) =>
     (parse.GetValue(scriptOptions.Modules) ?? []).Select(m => System.IO.Path.GetFullPath(m, env.WorkingDirectory));
 
@@ -137,6 +174,8 @@ public sealed class RenderCommand
     // Rays per second only when the time is long enough to say.
     if (r.Statistics.Elapsed.TotalSeconds > 1e-3 && r.Statistics.Rays > 0)
       line += string.Create(CultureInfo.InvariantCulture, $", {r.Statistics.RaysPerSecond / 1e6:0.00} Mrays/s");
+    if (r.Statistics.Noise is double noise)
+      line += string.Create(CultureInfo.InvariantCulture, $", noise {noise:0.####} RMSE");
     return line;
   }
 

@@ -9,6 +9,9 @@ public enum PreviewPass
   /// <summary>Finished tiles exact, the rest still coarse.</summary>
   Tiles,
 
+  /// <summary>Every pixel with part of its samples (a progressive render's pass).</summary>
+  Samples,
+
   /// <summary>The complete (or stopped) image.</summary>
   Final,
 }

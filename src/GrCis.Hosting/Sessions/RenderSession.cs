@@ -12,8 +12,10 @@ namespace GrCis.Hosting;
 /// <summary>
 /// One render of a <see cref="RenderJob"/> as the demo shows it: a coarse preview first (every
 /// <see cref="CoarseBlock"/>-th pixel filling its block), then the exact image tile by tile with a
-/// preview at least every <see cref="PreviewInterval"/>, then <see cref="Completed"/>. The final image
-/// is the one <see cref="TileRenderer"/> produces for the job; <see cref="Stop"/> keeps finished tiles.
+/// preview at least every <see cref="PreviewInterval"/>, then <see cref="Completed"/>; or, when
+/// <see cref="Progressive"/>, passes that add samples to every pixel. The final image is the one
+/// <see cref="TileRenderer"/> produces for the job; <see cref="Stop"/> keeps finished tiles (or, progressive,
+/// every pixel's mean so far).
 /// Events come from a worker thread unless <see cref="EventContext"/> is set (e.g. the UI's context).
 /// </summary>
 public sealed class RenderSession : IDisposable
@@ -26,6 +28,8 @@ public sealed class RenderSession : IDisposable
   int sequence;
   int started;
   bool tilesOver;
+  double fraction;   // of the work done, under the finished list's lock
+  int passes;        // progressive passes begun
 
   public RenderSession(RenderJob job) => Job = job ?? throw new ArgumentNullException(nameof(job));
 
@@ -33,6 +37,13 @@ public sealed class RenderSession : IDisposable
 
   /// <summary>Longest time between two previews while tiles are being rendered.</summary>
   public TimeSpan PreviewInterval { get; set; } = TimeSpan.FromMilliseconds(500);
+
+  /// <summary>
+  /// Render in passes over the whole image, each adding samples to every pixel (1, then n, 2n, … of n×n), like
+  /// Cycles' viewport, instead of tile by tile; the final image is the same, bit for bit. Used when the job's
+  /// renderer is n×n supersampling with n ≥ 2; otherwise the render goes by tiles.
+  /// </summary>
+  public bool Progressive { get; set; }
 
   /// <summary>Block size of the coarse first pass; 1 or less skips it.</summary>
   public int CoarseBlock { get; set; } = 8;
@@ -88,7 +99,7 @@ public sealed class RenderSession : IDisposable
       done.TrySetException(ex);
       return;
     }
-    Publish(PreviewPass.Final, result.Image, force: true);
+    Publish(PreviewPass.Final, result.Image, force: true, noise: result.Statistics.Noise);
     Raise(Completed, new RenderCompletedEventArgs(result));
     done.TrySetResult(result);
   }
@@ -105,27 +116,14 @@ public sealed class RenderSession : IDisposable
     ImageSynthesizer inner = job.Renderer;
     FloatImage? image = null;
     Exception? error = null;
-    var context = new RenderContext();
+    var context = new RenderContext { Noise = new NoiseImage(job.Width, job.Height) };
     PreviewTicker? ticker = null;
     try
     {
-      if (CoarseBlock > 1)
-      {
-        CoarsePass(job, options, live, CoarseBlock, new RenderContext { Queries = context.Queries }, token);
-        if (!token.IsCancellationRequested)
-          Publish(PreviewPass.Coarse, live, force: false);
-      }
-
-      TimeSpan interval = PreviewInterval > TimeSpan.Zero ? PreviewInterval : TimeSpan.FromMilliseconds(500);
-      ticker = new PreviewTicker(interval, () => Publish(PreviewPass.Tiles, live, force: false));
-
-      var synth = new PreviewSynthesizer(inner, live);
-      image = TileRenderer.Render(job.Scene, job.ImageFunction, synth, options, p =>
-      {
-        lock (finished)
-          finished.Add(p.LastTile);
-        Raise(ProgressChanged, new RenderProgressEventArgs(p, clock.Elapsed));
-      }, token, context);
+      if (Progressive && inner is SupersamplingImageSynthesizer { SuperXY: > 1 } grid)
+        image = RenderPasses(job, grid, options, context, clock, token);
+      else
+        image = RenderTiles(job, options, context, clock, token, out ticker);
     }
     catch (Exception ex) when (ex is RenderException or AggregateException)
     {
@@ -142,19 +140,88 @@ public sealed class RenderSession : IDisposable
     Tile[] tiles;
     lock (finished)
       tiles = finished.ToArray();
-    image ??= KeepTiles(live, tiles);
-
-    RenderStatistics stats = RenderStatistics.Of(inner, options, context, clock.Elapsed, tiles.Length, tilesTotal);
-    bool cancelled = token.IsCancellationRequested && tiles.Length < tilesTotal;
-    return new RenderResult(job, new FrameResult(image, stats, cancelled), tiles, error);
+    bool complete = image != null && !token.IsCancellationRequested;
+    // Stopped or failed: a progressive render keeps every pixel's mean so far, a tiled one its finished tiles.
+    if (!complete)
+      image = passes > 0 ? live : KeepTiles(live, tiles);
+    RenderStatistics stats = RenderStatistics.Of(inner, options, context, clock.Elapsed, complete ? tilesTotal : tiles.Length, tilesTotal, image!);
+    return new RenderResult(job, new FrameResult(image!, stats, !complete && error == null) { Noise = context.Noise }, tiles, error);
   }
 
-  /// <summary>Renders one pixel per block (its exact final value) and fills the block with it.</summary>
-  /// <param name="preview">The pass's own counts, sharing the render's prepared scenes.</param>
-  static void CoarsePass(RenderJob job, RenderOptions options, FloatImage target, int block, RenderContext preview, CancellationToken token)
+  /// <summary>Coarse pass, then the tiles; the coarse pass's pixels are exact and not rendered again.</summary>
+  FloatImage RenderTiles(RenderJob job, RenderOptions options, RenderContext context, Stopwatch clock, CancellationToken token, out PreviewTicker ticker)
+  {
+    bool[]? coarse = null;
+    if (CoarseBlock > 1)
+    {
+      coarse = CoarsePass(job, options, live!, CoarseBlock, context, token);
+      if (!token.IsCancellationRequested)
+        Publish(PreviewPass.Coarse, live, force: false);
+    }
+
+    TimeSpan interval = PreviewInterval > TimeSpan.Zero ? PreviewInterval : TimeSpan.FromMilliseconds(500);
+    ticker = new PreviewTicker(interval, () => Publish(PreviewPass.Tiles, live, force: false));
+
+    var synth = new PreviewSynthesizer(job.Renderer, live!, coarse, CoarseBlock);
+    return TileRenderer.Render(job.Scene, job.ImageFunction, synth, options, p =>
+    {
+      lock (finished)
+      {
+        finished.Add(p.LastTile);
+        fraction = (double)finished.Count / Math.Max(1, TileCount());
+      }
+      Raise(ProgressChanged, new RenderProgressEventArgs(p, clock.Elapsed));
+    }, token, context);
+  }
+
+  /// <summary>
+  /// Progressive rendering: passes over the whole image, each taking the next samples of every pixel
+  /// (<see cref="SamplePassSynthesizer.PassEnds"/>), with a preview after each pass and while it runs.
+  /// </summary>
+  FloatImage? RenderPasses(RenderJob job, SupersamplingImageSynthesizer grid, RenderOptions options, RenderContext context,
+    Stopwatch clock, CancellationToken token)
+  {
+    var synth = new SamplePassSynthesizer(grid, live!, context.Noise!);
+    int[] ends = SamplePassSynthesizer.PassEnds(grid.SuperXY);
+    int total = grid.SuperXY * grid.SuperXY, tilesTotal = TileCount();
+    FloatImage? image = null;
+    TimeSpan interval = PreviewInterval > TimeSpan.Zero ? PreviewInterval : TimeSpan.FromMilliseconds(500);
+    using var ticker = new PreviewTicker(interval, () => Publish(PreviewPass.Samples, live, force: false));
+    for (int k = 0; k < ends.Length && !token.IsCancellationRequested; k++)
+    {
+      synth.First = k == 0 ? 0 : ends[k - 1];
+      synth.End = ends[k];
+      double before = (double)synth.First / total, share = (double)(synth.End - synth.First) / total;
+      int done = 0;
+      lock (finished)
+        finished.Clear();
+      passes = k + 1;
+      image = TileRenderer.Render(job.Scene, job.ImageFunction, synth, options, p =>
+      {
+        lock (finished)
+        {
+          finished.Add(p.LastTile);
+          done = finished.Count;
+          fraction = before + share * done / tilesTotal;
+        }
+        Raise(ProgressChanged, new RenderProgressEventArgs(p, clock.Elapsed, fraction));
+      }, token, context);
+      if (!token.IsCancellationRequested && k < ends.Length - 1)
+        Publish(PreviewPass.Samples, live, force: false, synth.End, context.Noise!.Rmse());
+    }
+    return token.IsCancellationRequested ? null : image;
+  }
+
+  /// <summary>
+  /// Renders one pixel per block (its exact final value) and fills the block with it; returns which blocks
+  /// are done, so the tile pass takes those pixels from here instead of rendering them again.
+  /// </summary>
+  /// <param name="context">The render's context: the pass's rays count toward the render, as its pixels are the render's.</param>
+  static bool[] CoarsePass(RenderJob job, RenderOptions options, FloatImage target, int block, RenderContext context, CancellationToken token)
   {
     int w = job.Width, h = job.Height;
-    int rows = (h + block - 1) / block;
+    int rows = (h + block - 1) / block, columns = (w + block - 1) / block;
+    var done = new bool[rows * columns];
     ImageSynthesizer renderer = job.Renderer;
     var po = new ParallelOptions { MaxDegreeOfParallelism = Math.Max(1, options.EffectiveThreads) };
     Parallel.For(0, rows, po,
@@ -164,7 +231,7 @@ public sealed class RenderSession : IDisposable
         MT.SetRendering(SceneCloner.CloneForWorker(job.Scene), job.ImageFunction, renderer);
         MT.seed = options.Seed;
         MT.frame = options.Frame;
-        return (Color: new double[target.Bands], Scope: preview.Enter());
+        return (Color: new double[target.Bands], Scope: context.Enter());
       },
       (row, _, state) =>
       {
@@ -183,6 +250,7 @@ public sealed class RenderSession : IDisposable
             for (int y = y0; y < y1; y++)
               for (int x = x0; x < x1; x++)
                 target.SetPixel(x, y, color);
+            done[row * columns + x0 / block] = true;
           }
         }
         catch (OperationCanceledException) when (token.IsCancellationRequested)
@@ -195,6 +263,7 @@ public sealed class RenderSession : IDisposable
         state.Scope.Dispose();
         MT.SetRendering(null, null, null);
       });
+    return done;
   }
 
   /// <summary>An image with only the given tiles copied from <paramref name="source"/> (used after a failure).</summary>
@@ -210,7 +279,7 @@ public sealed class RenderSession : IDisposable
     return image;
   }
 
-  void Publish(PreviewPass pass, FloatImage? source, bool force)
+  void Publish(PreviewPass pass, FloatImage? source, bool force, int? samples = null, double? noise = null)
   {
     if (source == null)
       return;
@@ -220,10 +289,10 @@ public sealed class RenderSession : IDisposable
       if (tilesOver && !force)
         return;
       var snapshot = new FloatImage(source.Width, source.Height, source.Bands, (float[])source.Data.Clone());
-      double fraction;
+      double shown;
       lock (finished)
-        fraction = pass == PreviewPass.Final ? 1.0 : (double)finished.Count / Math.Max(1, TileCount());
-      Raise(PreviewReady, new RenderPreviewEventArgs(snapshot, pass, fraction, sequence++, Job.Renderer.Gamma));
+        shown = pass == PreviewPass.Final ? 1.0 : fraction;
+      Raise(PreviewReady, new RenderPreviewEventArgs(snapshot, pass, shown, sequence++, Job.Renderer.Gamma) { Samples = samples, Noise = noise });
     }
   }
 

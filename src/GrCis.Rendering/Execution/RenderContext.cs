@@ -18,6 +18,9 @@ public sealed class RenderContext
   /// <summary>Receives every ray the render's <see cref="RayTracing"/> traces; null = none (no cost).</summary>
   public RayObserver? Observer { get; init; }
 
+  /// <summary>Receives the pixels' noise estimates (<see cref="SupersamplingImageSynthesizer"/>); null = none taken.</summary>
+  public NoiseImage? Noise { get; init; }
+
   /// <summary>The render's prepared scenes (fresh for each context unless shared, as a preview pass shares its render's).</summary>
   public SceneQueries Queries { get; init; } = new();
 
@@ -31,8 +34,9 @@ public sealed class RenderContext
   public Scope Enter()
   {
     ShadingScratch s = ShadingScratch.Current;
-    var scope = new Scope(this, s, s.Observer, s.Queries, s.LastPrepared, s.Rays, s.Hits);
+    var scope = new Scope(this, s, s.Observer, s.Queries, s.LastPrepared, s.Noise, s.Rays, s.Hits);
     s.Observer = Observer;
+    s.Noise = Noise;
     s.Queries = Queries;
     s.LastPrepared = null;
     return scope;
@@ -46,16 +50,18 @@ public sealed class RenderContext
     readonly RayObserver? previous;
     readonly SceneQueries? previousQueries;
     readonly PreparedScene? previousLast;
+    readonly NoiseImage? previousNoise;
     readonly long rays0, hits0;
 
     internal Scope(RenderContext context, ShadingScratch scratch, RayObserver? previous, SceneQueries previousQueries, PreparedScene? previousLast,
-                   long rays0, long hits0)
+                   NoiseImage? previousNoise, long rays0, long hits0)
     {
       this.context = context;
       this.scratch = scratch;
       this.previous = previous;
       this.previousQueries = previousQueries;
       this.previousLast = previousLast;
+      this.previousNoise = previousNoise;
       this.rays0 = rays0;
       this.hits0 = hits0;
     }
@@ -69,6 +75,7 @@ public sealed class RenderContext
       scratch.Observer = previous;
       scratch.Queries = previousQueries!;
       scratch.LastPrepared = previousLast;
+      scratch.Noise = previousNoise;
     }
   }
 }

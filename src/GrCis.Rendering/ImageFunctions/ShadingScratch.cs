@@ -24,6 +24,9 @@ internal sealed class ShadingScratch
   /// <summary>The observer of the render this thread works for (<see cref="Execution.RenderContext"/>); null = none.</summary>
   public Observation.RayObserver? Observer;
 
+  /// <summary>Where the render this thread works for keeps its noise estimate (<see cref="Execution.RenderContext.Noise"/>); null = none.</summary>
+  public Execution.NoiseImage? Noise;
+
   /// <summary>The prepared scenes of the render this thread works for (<see cref="Execution.RenderContext.Queries"/>), else the thread's own.</summary>
   public Accel.SceneQueries Queries
   {

@@ -79,7 +79,13 @@ public static class MT
   /// <summary>Clears the thread's rendering context.</summary>
   public static void ResetRendering() => SetRendering(null, null, null);
 
-  /// <summary>Starts pixel (px, py): reseeds <see cref="rnd"/> from (seed, frame, pixel), independent of thread and order.</summary>
+  /// <summary>The current pixel's hash of (seed, frame, pixel); each sample's stream is derived from it.</summary>
+  [ThreadStatic] static ulong pixelHash;
+
+  /// <summary>
+  /// Starts pixel (px, py) at sample 0: reseeds <see cref="rnd"/> from (seed, frame, pixel), independent of
+  /// thread and order.
+  /// </summary>
   public static void StartPixel(int px, int py, int samples)
   {
     x = px;
@@ -88,15 +94,23 @@ public static class MT
     rank = 0;
     ulong h = RandomStatic.Mix64((ulong)seed ^ 0x5DEECE66DUL);
     h = RandomStatic.Mix64(h ^ (uint)frame);
-    h = RandomStatic.Mix64(h ^ ((ulong)(uint)py << 32 | (uint)px));
+    pixelHash = h = RandomStatic.Mix64(h ^ ((ulong)(uint)py << 32 | (uint)px));
     rnd.ResetFast(h);
   }
 
-  /// <summary>Marks the start of sample <paramref name="r"/> of the current pixel.</summary>
-  public static void StartSample(int r) => rank = r;
+  /// <summary>
+  /// Starts sample <paramref name="r"/> of the current pixel and reseeds <see cref="rnd"/> from (pixel, r): every
+  /// sample has a stream of its own, so a pixel's samples may be taken in separate passes (progressive rendering)
+  /// and still give the numbers of one pass. Sample 0 keeps the pixel's own stream.
+  /// </summary>
+  public static void StartSample(int r)
+  {
+    rank = r;
+    rnd.ResetFast(r == 0 ? pixelHash : RandomStatic.Mix64(pixelHash ^ (ulong)(uint)r * 0xD6E8FEB86659FD93UL));
+  }
 
-  /// <summary>Advances to the next sample of the current pixel.</summary>
-  public static void NextSample() => rank++;
+  /// <summary>Advances to the next sample of the current pixel (see <see cref="StartSample"/>).</summary>
+  public static void NextSample() => StartSample(rank + 1);
 
   /// <summary>Makes sure this thread has its generator.</summary>
   public static void InitThreadData() => _ = rnd;
