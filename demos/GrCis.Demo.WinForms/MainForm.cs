@@ -33,6 +33,10 @@ sealed class MainForm : Form
   readonly CheckBox reflections = new() { Text = "Reflections", AutoSize = true, Anchor = AnchorStyles.Left };
   readonly CheckBox refractions = new() { Text = "Refractions", AutoSize = true, Anchor = AnchorStyles.Left };
   readonly CheckBox multithreading = new() { Text = "Multi-threading", AutoSize = true, Anchor = AnchorStyles.Left };
+  readonly ComboBox algorithm = new() { DropDownStyle = ComboBoxStyle.DropDownList, Width = 120 };
+
+  // The algorithm box's items, in order: null = the scene's choice (DemoController.Algorithm).
+  static readonly RenderAlgorithm?[] Algorithms = { null, RenderAlgorithm.RayTracing, RenderAlgorithm.Distributed, RenderAlgorithm.Path };
 
   readonly AnimationPanel animation;
 
@@ -72,7 +76,8 @@ sealed class MainForm : Form
   void BuildLayout()
   {
     var sceneRow = Row(Caption("Scene"), scenes, addScript, Caption("Parameters"), param, watch, overrides);
-    var settingsRow = Row(resolution, Caption("Supersampling"), supersampling, jitter, shadows, reflections, refractions, multithreading);
+    var settingsRow = Row(resolution, Caption("Supersampling"), supersampling, jitter, shadows, reflections, refractions, multithreading,
+      Caption("Algorithm"), algorithm);
     var statusRow = Row(progress, elapsed, statistics);
     var buttonRow = Row(render, stop, back, forward, save, extra, rays, pixel);
 
@@ -93,6 +98,8 @@ sealed class MainForm : Form
     tips.SetToolTip(addScript, "Add a scene script (.cs) to the list");
     tips.SetToolTip(watch, "Render again whenever the selected script changes on disk");
     tips.SetToolTip(supersampling, "Samples per pixel (rounded up to a square grid)");
+    algorithm.Items.AddRange(new object[] { "scene's choice", "ray tracing", "distributed", "path tracing" });
+    tips.SetToolTip(algorithm, "Image function: the scene's (its script's choice, else ray tracing), or one that replaces the script's, as grcis render --algorithm");
   }
 
   void Bind()
@@ -128,6 +135,7 @@ sealed class MainForm : Form
     reflections.CheckedChanged += (_, _) => Apply(s => s with { Reflections = reflections.Checked });
     refractions.CheckedChanged += (_, _) => Apply(s => s with { Refractions = refractions.Checked });
     multithreading.CheckedChanged += (_, _) => Apply(s => s with { Threads = multithreading.Checked ? 0 : 1 });
+    algorithm.SelectedIndexChanged += (_, _) => controller.Algorithm = Algorithms[Math.Max(algorithm.SelectedIndex, 0)];
 
     render.Click += async (_, _) => await RenderAsync();
     stop.Click += (_, _) => controller.Stop();
@@ -192,6 +200,7 @@ sealed class MainForm : Form
     reflections.Checked = s.Reflections;
     refractions.Checked = s.Refractions;
     multithreading.Checked = s.Threads != 1;
+    algorithm.SelectedIndex = Math.Max(Array.IndexOf(Algorithms, controller.Algorithm), 0);
   }
 
   void Apply(Func<RenderSettings, RenderSettings> change) => controller.Settings = change(controller.Settings);

@@ -50,6 +50,12 @@ public sealed class DemoController : IDisposable
 
   public RenderSettings Settings { get; set; } = new();
 
+  /// <summary>
+  /// The image function chosen in the demo, replacing the script's own (CTX_ALGORITHM) as <c>grcis render --algorithm</c>
+  /// does; null = the scene's choice: the script's function, else <see cref="RenderSettings.Algorithm"/>.
+  /// </summary>
+  public RenderAlgorithm? Algorithm { get; set; }
+
   public RenderHistory History { get; } = new();
 
   /// <summary>Where events are raised (the UI thread's context); null = whichever thread produced them.</summary>
@@ -122,7 +128,7 @@ public sealed class DemoController : IDisposable
   public async Task<RenderResult?> RenderAsync()
   {
     SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
-    RenderSettings settings = Settings;
+    (RenderSettings settings, GivenSettings given) = Requested(Settings);
     CancellationTokenSource building;
     Task? previous;
     lock (sync)
@@ -146,7 +152,7 @@ public sealed class DemoController : IDisposable
       {
         using Interruption.Scope interruption = Interruption.Use(building.Token);
         BuiltScene b = Catalog.Build(entry, entry.ParameterText, settings);
-        return (b, b.ToJob(settings));
+        return (b, b.ToJob(settings, given));
       }, building.Token, TaskCreationOptions.LongRunning, TaskScheduler.Default);
       lock (sync)
         buildTask = task;
@@ -233,9 +239,16 @@ public sealed class DemoController : IDisposable
   public AnimationRun CreateAnimation(double start, double end, double fps)
   {
     SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
-    BuiltScene built = Catalog.Build(entry, entry.ParameterText, Settings with { Time = null });
-    return new AnimationRun(built.ToJob(Settings with { Time = null }), AnimationRun.TimelineFor(built.Overrides, start, end, fps));
+    (RenderSettings settings, GivenSettings given) = Requested(Settings with { Time = null });
+    BuiltScene built = Catalog.Build(entry, entry.ParameterText, settings);
+    return new AnimationRun(built.ToJob(settings, given), AnimationRun.TimelineFor(built.Overrides, start, end, fps));
   }
+
+  // A chosen algorithm is a given setting, so the one precedence rule replaces the script's function with it.
+  (RenderSettings, GivenSettings) Requested(RenderSettings settings) =>
+    Algorithm is RenderAlgorithm a
+      ? (settings with { Algorithm = a }, RenderJob.Given | GivenSettings.Algorithm)
+      : (settings, RenderJob.Given);
 
   void RestartWatcher()
   {

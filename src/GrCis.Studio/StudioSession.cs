@@ -62,12 +62,14 @@ public sealed class StudioSession : IDisposable
   public DemoController Controller { get; }
 
   /// <summary>Starts rendering <paramref name="entry"/> with <paramref name="param"/> and <paramref name="settings"/>, stopping any render in progress.</summary>
-  public void Render(SceneEntry entry, string param, RenderSettings settings)
+  /// <param name="algorithm">The image function replacing the script's (<see cref="DemoController.Algorithm"/>); null = the scene's choice.</param>
+  public void Render(SceneEntry entry, string param, RenderSettings settings, RenderAlgorithm? algorithm = null)
   {
     Started();
     entry.ParameterText = param;
     Controller.Selected = entry;
     Controller.Settings = settings;
+    Controller.Algorithm = algorithm;
     _ = Controller.RenderAsync().ContinueWith(t =>
     {
       lock (sync)
@@ -112,7 +114,8 @@ public sealed class StudioSession : IDisposable
   {
     lock (sync)
       return new StudioStatus(busy, version, fraction, elapsed.TotalSeconds, statistics, error,
-                              Controller.LastJob?.Notes ?? Array.Empty<string>(), diagnostics);
+                              Controller.LastJob?.Notes ?? Array.Empty<string>(), diagnostics,
+                              Controller.Algorithm is RenderAlgorithm a ? RenderAlgorithmNames.Name(a) : null);
   }
 
   /// <summary>The image now on show as the 8-bit display image (gamma applied, quantised as <c>grcis render</c> saves it).</summary>

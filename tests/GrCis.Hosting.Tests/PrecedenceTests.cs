@@ -168,6 +168,17 @@ public class PrecedenceTests
     Assert.Empty(same.Notes);
   }
 
+  [Fact]
+  public void A_job_uses_the_flags_it_is_given_and_by_default_leaves_the_scripts_function()
+  {
+    var settings = new RenderSettings { Width = 8, Height = 6, Algorithm = RenderAlgorithm.Path };
+    var script = new ScriptChoices { ImageFunction = new DistributedRayTracing() };
+    Assert.IsType<DistributedRayTracing>(RenderJob.Create(Scenes.Create("Two spheres", ""), settings, choices: script).ImageFunction);
+    RenderJob given = RenderJob.Create(Scenes.Create("Two spheres", ""), settings, choices: script, given: RenderJob.Given | GivenSettings.Algorithm);
+    Assert.IsType<PathTracing>(given.ImageFunction);
+    Assert.Contains(given.Notes, n => n.Contains("PathTracing"));
+  }
+
   [Theory]
   [InlineData(RenderAlgorithm.RayTracing, typeof(RayTracing))]
   [InlineData(RenderAlgorithm.Distributed, typeof(DistributedRayTracing))]

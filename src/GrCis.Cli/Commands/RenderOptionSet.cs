@@ -59,16 +59,13 @@ public sealed class RenderOptionSet
       HelpName = "raytracing|distributed|path",
       DefaultValueFactory = _ => "raytracing",
     };
-    o.AcceptOnlyFromAmong("raytracing", "distributed", "path");
+    o.AcceptOnlyFromAmong([.. RenderAlgorithmNames.All]);
     return o;
   }
 
-  static RenderAlgorithm ParseAlgorithm(string? value) => value switch
-  {
-    "distributed" => RenderAlgorithm.Distributed,
-    "path" => RenderAlgorithm.Path,
-    _ => RenderAlgorithm.RayTracing,
-  };
+  // The option accepts only known names, so anything else is its default.
+  static RenderAlgorithm ParseAlgorithm(string? value) =>
+    RenderAlgorithmNames.TryParse(value, out RenderAlgorithm a) ? a : RenderAlgorithm.RayTracing;
 
   public void AddTo(Command command)
   {

@@ -68,10 +68,12 @@ public sealed class RenderJob
   /// </summary>
   /// <param name="choices">What the script chose through its context (size, supersampling; its function and
   /// renderer when <paramref name="function"/>/<paramref name="renderer"/> are null); null = nothing.</param>
+  /// <param name="given">Which of <paramref name="settings"/> win over the script's choices; the demo's <see cref="Given"/>
+  /// unless a front end marks more (a chosen algorithm, as <c>grcis render --algorithm</c>).</param>
   /// <exception cref="ScriptChoiceException">The script asks for an image size or supersampling out of range.</exception>
   /// <exception cref="InvalidSettingException">A setting out of range.</exception>
   public static RenderJob Create(IRayScene scene, RenderSettings settings, IImageFunction? function = null, IRenderer? renderer = null,
-    string? sceneName = null, string param = "", ScriptChoices? choices = null)
+    string? sceneName = null, string param = "", ScriptChoices? choices = null, GivenSettings given = Given)
   {
     ArgumentNullException.ThrowIfNull(scene);
     ArgumentNullException.ThrowIfNull(settings);
@@ -81,7 +83,7 @@ public sealed class RenderJob
       ImageFunction = function ?? choices?.ImageFunction,
       Renderer = renderer ?? choices?.Renderer,
     };
-    RenderPlan plan = Precedence.Resolve(settings, Given, choices);
+    RenderPlan plan = Precedence.Resolve(settings, given, choices);
     settings = plan.Settings;
 
     if (settings.Time is double t)

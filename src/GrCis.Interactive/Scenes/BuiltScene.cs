@@ -30,8 +30,9 @@ public sealed class BuiltScene
   public string? Tooltip { get; init; }
 
   /// <summary>A render job for this scene: the script's overrides and its chosen function/renderer, by the precedence rule.</summary>
+  /// <param name="given">The settings that win over the script's choices (<see cref="RenderJob.Create"/>).</param>
   /// <exception cref="SceneEvaluationException">The script asks for an image size or supersampling out of range.</exception>
-  public RenderJob ToJob(RenderSettings settings)
+  public RenderJob ToJob(RenderSettings settings, GivenSettings given = RenderJob.Given)
   {
     var choices = new ScriptChoices
     {
@@ -42,7 +43,7 @@ public sealed class BuiltScene
     };
     try
     {
-      return RenderJob.Create(Scene, settings, ImageFunction, Renderer, Entry.Name, Param, choices);
+      return RenderJob.Create(Scene, settings, ImageFunction, Renderer, Entry.Name, Param, choices, given);
     }
     catch (ScriptChoiceException e)
     {

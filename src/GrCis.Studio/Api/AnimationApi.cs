@@ -10,8 +10,9 @@ namespace GrCis.Studio;
 /// <summary>Animation: render a time range's frames (into a folder given on the command line, if asked), follow them, scrub through them.</summary>
 internal static class AnimationApi
 {
-  /// <summary>What the page sends: the scene, its parameters and settings, the range, and optionally a folder for the frames.</summary>
-  internal sealed record AnimationBody(string Scene, string? Param, RenderSettings? Settings, double Start, double End, double Fps, string? Folder);
+  /// <summary>What the page sends: the scene, its parameters and settings, the range, optionally a folder for the frames, and the algorithm (as to render).</summary>
+  internal sealed record AnimationBody(string Scene, string? Param, RenderSettings? Settings, double Start, double End, double Fps, string? Folder,
+                                       string? Algorithm = null);
 
   public static void Map(WebApplication app)
   {
@@ -33,6 +34,8 @@ internal static class AnimationApi
       return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
     if (!(body.End >= body.Start) || !(body.Fps > 0.0) || (body.End - body.Start) * body.Fps > 100_000)
       return Results.BadRequest(new { error = "the range needs start ≤ end and fps > 0 (at most 100000 frames)" });
+    if (!StudioApi.TryAlgorithm(body.Algorithm, out RenderAlgorithm? algorithm, out IResult? bad))
+      return bad;
     string? folder = null;
     if (!string.IsNullOrWhiteSpace(body.Folder))
     {
@@ -55,6 +58,7 @@ internal static class AnimationApi
     entry.ParameterText = body.Param ?? entry.ParameterText;
     s.Controller.Selected = entry;
     s.Controller.Settings = settings;
+    s.Controller.Algorithm = algorithm;
     AnimationRun run;
     try
     {

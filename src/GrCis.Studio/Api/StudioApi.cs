@@ -1,4 +1,5 @@
 using System;
+using System.Diagnostics.CodeAnalysis;
 using System.IO;
 using System.Linq;
 using System.Reflection;
@@ -94,14 +95,19 @@ internal static class StudioApi
       : Results.NotFound());
   }
 
-  /// <summary>What the page sends to render: the scene's name, its parameter text and the settings.</summary>
-  internal sealed record RenderBody(string Scene, string? Param, RenderSettings? Settings);
+  /// <summary>
+  /// What the page sends to render: the scene's name, its parameter text, the settings, and the algorithm
+  /// (<c>grcis render --algorithm</c>'s names; null or empty = the scene's choice).
+  /// </summary>
+  internal sealed record RenderBody(string Scene, string? Param, RenderSettings? Settings, string? Algorithm = null);
 
   static IResult Render(RenderBody body, StudioSession s)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
       return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
+    if (!TryAlgorithm(body.Algorithm, out RenderAlgorithm? algorithm, out IResult? bad))
+      return bad;
     RenderSettings settings = body.Settings ?? s.Controller.Settings;
     try
     {
@@ -111,8 +117,27 @@ internal static class StudioApi
     {
       return Results.BadRequest(new { error = e.Message });
     }
-    s.Render(entry, body.Param ?? entry.ParameterText, settings);
+    s.Render(entry, body.Param ?? entry.ParameterText, settings, algorithm);
     return Results.Accepted();
+  }
+
+  /// <summary>The request's <c>algorithm</c> field: null or empty = the scene's choice, else one of the CLI's names, else a 400.</summary>
+  internal static bool TryAlgorithm(string? name, out RenderAlgorithm? algorithm, [NotNullWhen(false)] out IResult? bad)
+  {
+    algorithm = null;
+    bad = null;
+    if (string.IsNullOrEmpty(name))
+      return true;
+    if (RenderAlgorithmNames.TryParse(name, out RenderAlgorithm a))
+    {
+      algorithm = a;
+      return true;
+    }
+    bad = Results.BadRequest(new
+    {
+      error = $"algorithm '{name}' is not known; use {string.Join(", ", RenderAlgorithmNames.All)}, or leave it out for the scene's choice",
+    });
+    return false;
   }
 
   static IResult Probe(StudioSession s, int x, int y)

@@ -51,6 +51,12 @@ function settings() {
   };
 }
 
+// The algorithm the studio renders with now ("" = the scene's choice), shown after a reload of the page.
+async function loadAlgorithm() {
+  const s = await (await api("status")).json();
+  $("algorithm").value = s.algorithm ?? "";
+}
+
 async function render() {
   $("messages").textContent = "";
   $("view-kind").value = "";
@@ -58,7 +64,7 @@ async function render() {
   try {
     await api("render", {
       method: "POST", headers: { "Content-Type": "application/json" },
-      body: JSON.stringify({ scene: $("scene").value, param: $("param").value, settings: settings() }),
+      body: JSON.stringify({ scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value }),
     });
   } catch (e) {
     $("messages").textContent = e.message;
@@ -128,7 +134,7 @@ async function renderFrames() {
     await api("animation", {
       method: "POST", headers: { "Content-Type": "application/json" },
       body: JSON.stringify({
-        scene: $("scene").value, param: $("param").value, settings: settings(),
+        scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value,
         start: Number($("animStart").value), end: Number($("animEnd").value), fps: Number($("animFps").value),
         folder: $("animFolder").value.trim() || null,
       }),
@@ -356,4 +362,4 @@ $("back").addEventListener("click", () => moveHistory("back"));
 $("forward").addEventListener("click", () => moveHistory("forward"));
 $("render").addEventListener("click", render);
 $("stop").addEventListener("click", () => api("stop", { method: "POST" }));
-loadScenes().then(() => pollSoon(0)).catch(e => { $("messages").textContent = e.message; });
+loadScenes().then(loadAlgorithm).then(() => pollSoon(0)).catch(e => { $("messages").textContent = e.message; });
