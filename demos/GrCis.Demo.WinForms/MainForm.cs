@@ -38,6 +38,11 @@ sealed class MainForm : Form
   // The algorithm box's items, in order: null = the scene's choice (DemoController.Algorithm).
   static readonly RenderAlgorithm?[] Algorithms = { null, RenderAlgorithm.RayTracing, RenderAlgorithm.Distributed, RenderAlgorithm.Path };
 
+  readonly ComboBox preview = new() { DropDownStyle = ComboBoxStyle.DropDownList, Width = 110 };
+
+  // The preview box's items, in order: null = automatic (DemoController.Progressive).
+  static readonly bool?[] Previews = { null, false, true };
+
   readonly AnimationPanel animation;
 
   readonly ProgressBar progress = new() { Minimum = 0, Maximum = 1000, Width = 160, Anchor = AnchorStyles.Left };
@@ -77,7 +82,7 @@ sealed class MainForm : Form
   {
     var sceneRow = Row(Caption("Scene"), scenes, addScript, Caption("Parameters"), param, watch, overrides);
     var settingsRow = Row(resolution, Caption("Supersampling"), supersampling, jitter, shadows, reflections, refractions, multithreading,
-      Caption("Algorithm"), algorithm);
+      Caption("Algorithm"), algorithm, Caption("Preview"), preview);
     var statusRow = Row(progress, elapsed, statistics);
     var buttonRow = Row(render, stop, back, forward, save, extra, rays, pixel);
 
@@ -100,13 +105,20 @@ sealed class MainForm : Form
     tips.SetToolTip(supersampling, "Samples per pixel (rounded up to a square grid)");
     algorithm.Items.AddRange(new object[] { "scene's choice", "ray tracing", "distributed", "path tracing" });
     tips.SetToolTip(algorithm, "Image function: the scene's (its script's choice, else ray tracing), or one that replaces the script's, as grcis render --algorithm");
+    preview.Items.AddRange(new object[] { "automatic", "tiles", "sample passes" });
+    tips.SetToolTip(preview, "Tile by tile, or passes adding samples to every pixel with a noise estimate (automatic: passes for distributed and path tracing); the final image is the same");
   }
 
   void Bind()
   {
     controller.Catalog.Changed += (_, _) => FillScenes();
     controller.SceneEvaluated += (_, built) => ShowSceneInfo(built.Entry);
-    controller.PreviewReady += (_, e) => view.Image = BitmapConversion.ToBitmap(e.ToRgb8());
+    controller.PreviewReady += (_, e) =>
+    {
+      view.Image = BitmapConversion.ToBitmap(e.ToRgb8());
+      if (e.Samples is int spp)
+        statistics.Text = $"{spp} spp so far" + (e.Noise is double n ? $", noise {n:0.####} RMSE" : "");
+    };
     controller.ProgressChanged += (_, e) => progress.Value = (int)Math.Round(e.Fraction * progress.Maximum);
     controller.RenderCompleted += (_, e) => Finished(e.Result);
     controller.Error += (_, message) => MessageBox.Show(this, message, Text, MessageBoxButtons.OK, MessageBoxIcon.Warning);
@@ -136,6 +148,7 @@ sealed class MainForm : Form
     refractions.CheckedChanged += (_, _) => Apply(s => s with { Refractions = refractions.Checked });
     multithreading.CheckedChanged += (_, _) => Apply(s => s with { Threads = multithreading.Checked ? 0 : 1 });
     algorithm.SelectedIndexChanged += (_, _) => controller.Algorithm = Algorithms[Math.Max(algorithm.SelectedIndex, 0)];
+    preview.SelectedIndexChanged += (_, _) => controller.Progressive = Previews[Math.Max(preview.SelectedIndex, 0)];
 
     render.Click += async (_, _) => await RenderAsync();
     stop.Click += (_, _) => controller.Stop();
@@ -201,6 +214,7 @@ sealed class MainForm : Form
     refractions.Checked = s.Refractions;
     multithreading.Checked = s.Threads != 1;
     algorithm.SelectedIndex = Math.Max(Array.IndexOf(Algorithms, controller.Algorithm), 0);
+    preview.SelectedIndex = Math.Max(Array.IndexOf(Previews, controller.Progressive), 0);
   }
 
   void Apply(Func<RenderSettings, RenderSettings> change) => controller.Settings = change(controller.Settings);

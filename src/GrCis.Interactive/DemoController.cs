@@ -56,6 +56,13 @@ public sealed class DemoController : IDisposable
   /// </summary>
   public RenderAlgorithm? Algorithm { get; set; }
 
+  /// <summary>
+  /// Render in passes that add samples to every pixel (<see cref="RenderSession.Progressive"/>) rather than tile by tile;
+  /// null = automatic: in passes for the Monte Carlo algorithms (distributed ray tracing, path tracing), whose images
+  /// are worth watching converge. The final image is the same either way.
+  /// </summary>
+  public bool? Progressive { get; set; }
+
   public RenderHistory History { get; } = new();
 
   /// <summary>Where events are raised (the UI thread's context); null = whichever thread produced them.</summary>
@@ -177,7 +184,12 @@ public sealed class DemoController : IDisposable
         return null;
       Raise(SceneEvaluated, built);
       LastJob = job;
-      s = session = new RenderSession(job) { PreviewInterval = PreviewInterval, EventContext = EventContext };
+      s = session = new RenderSession(job)
+      {
+        PreviewInterval = PreviewInterval,
+        EventContext = EventContext,
+        Progressive = Progressive ?? IsMonteCarlo(job.ImageFunction),
+      };
       s.PreviewReady += (_, e) => PreviewReady?.Invoke(this, e);
       s.ProgressChanged += (_, e) => ProgressChanged?.Invoke(this, e);
       s.Completed += (_, e) =>
@@ -193,6 +205,10 @@ public sealed class DemoController : IDisposable
     }
     return await s.Task.ConfigureAwait(false);
   }
+
+  /// <summary>Image functions whose samples differ in more than the pixel position: noise that passes show converging.</summary>
+  static bool IsMonteCarlo(Rendering.IImageFunction function) =>
+    function is Rendering.PathTracing or Rendering.Distributed.DistributedRayTracing;
 
   /// <summary>Stops the script being evaluated and the render in progress (finished tiles are kept).</summary>
   public void Stop()

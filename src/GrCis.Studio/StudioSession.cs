@@ -22,6 +22,8 @@ public sealed class StudioSession : IDisposable
   string? error;
   string statistics = "";
   bool busy;
+  int? samples;
+  double? noise;
   IReadOnlyList<ScriptError> diagnostics = Array.Empty<ScriptError>();
 
   public StudioSession(DemoController controller)
@@ -33,7 +35,16 @@ public sealed class StudioSession : IDisposable
     Controller.WatchDebounce = TimeSpan.FromMilliseconds(100);
     Controller.WatchScript = true;
     Controller.ScriptChanged += (_, _) => Started();
-    Controller.PreviewReady += (_, e) => Show(e.Image, e.Gamma, e.Fraction, final: false);
+    Controller.PreviewReady += (_, e) =>
+    {
+      if (e.Samples != null)
+        lock (sync)
+        {
+          samples = e.Samples;
+          noise = e.Noise;
+        }
+      Show(e.Image, e.Gamma, e.Fraction, final: false);
+    };
     Controller.ProgressChanged += (_, e) =>
     {
       lock (sync)
@@ -45,7 +56,11 @@ public sealed class StudioSession : IDisposable
     Controller.RenderCompleted += (_, e) =>
     {
       lock (sync)
+      {
         statistics = e.Result.Statistics.ToString();
+        samples = e.Result.Cancelled ? samples : e.Result.Statistics.SamplesPerPixel;
+        noise = e.Result.Cancelled ? noise : e.Result.Statistics.Noise;
+      }
       Show(e.Result.Image, e.Result.Gamma, 1.0, final: true);
     };
     Controller.Error += (_, message) =>
@@ -63,13 +78,15 @@ public sealed class StudioSession : IDisposable
 
   /// <summary>Starts rendering <paramref name="entry"/> with <paramref name="param"/> and <paramref name="settings"/>, stopping any render in progress.</summary>
   /// <param name="algorithm">The image function replacing the script's (<see cref="DemoController.Algorithm"/>); null = the scene's choice.</param>
-  public void Render(SceneEntry entry, string param, RenderSettings settings, RenderAlgorithm? algorithm = null)
+  /// <param name="progressive">Passes of samples or tiles (<see cref="DemoController.Progressive"/>); null = by the algorithm.</param>
+  public void Render(SceneEntry entry, string param, RenderSettings settings, RenderAlgorithm? algorithm = null, bool? progressive = null)
   {
     Started();
     entry.ParameterText = param;
     Controller.Selected = entry;
     Controller.Settings = settings;
     Controller.Algorithm = algorithm;
+    Controller.Progressive = progressive;
     _ = Controller.RenderAsync().ContinueWith(t =>
     {
       lock (sync)
@@ -92,6 +109,8 @@ public sealed class StudioSession : IDisposable
       statistics = "";
       fraction = 0.0;
       elapsed = TimeSpan.Zero;
+      samples = null;
+      noise = null;
       busy = true;
     }
   }
@@ -115,7 +134,12 @@ public sealed class StudioSession : IDisposable
     lock (sync)
       return new StudioStatus(busy, version, fraction, elapsed.TotalSeconds, statistics, error,
                               Controller.LastJob?.Notes ?? Array.Empty<string>(), diagnostics,
-                              Controller.Algorithm is RenderAlgorithm a ? RenderAlgorithmNames.Name(a) : null);
+                              Controller.Algorithm is RenderAlgorithm a ? RenderAlgorithmNames.Name(a) : null)
+      {
+        Progressive = Controller.Progressive,
+        Samples = samples,
+        Noise = noise,
+      };
   }
 
   /// <summary>The image now on show as the 8-bit display image (gamma applied, quantised as <c>grcis render</c> saves it).</summary>

@@ -7,4 +7,14 @@ namespace GrCis.Studio;
 /// <param name="Diagnostics">The last build's compiler diagnostics (empty when it compiled).</param>
 /// <param name="Algorithm">The algorithm chosen for the render (<c>--algorithm</c>'s name); null = the scene's choice.</param>
 public sealed record StudioStatus(bool Rendering, int Version, double Fraction, double Seconds, string Statistics, string? Error,
-                                  IReadOnlyList<string> Notes, IReadOnlyList<ScriptError> Diagnostics, string? Algorithm = null);
+                                  IReadOnlyList<string> Notes, IReadOnlyList<ScriptError> Diagnostics, string? Algorithm = null)
+{
+  /// <summary>Passes of samples (true), tiles (false) or by the algorithm (null), as chosen for the render.</summary>
+  public bool? Progressive { get; init; }
+
+  /// <summary>Samples per pixel in the image on show during a progressive render, and of the finished image; null = not known.</summary>
+  public int? Samples { get; init; }
+
+  /// <summary>The estimated RMSE of the image on show (<see cref="Rendering.Execution.NoiseImage"/>); null = no estimate.</summary>
+  public double? Noise { get; init; }
+}

@@ -77,4 +77,22 @@ public sealed class AlgorithmTests(StudioFixture studio) : IClassFixture<StudioF
       Assert.Contains(option, page);
     Assert.Contains("algorithm: $(\"algorithm\").value", await studio.Client.GetStringAsync("/app.js"));
   }
+
+  [Fact]
+  public async Task Progressive_render_reports_its_samples_and_noise_and_gives_the_png_of_grcis_render()
+  {
+    var sixteen = new { width = 48, height = 36, samplesPerPixel = 16, threads = 2 };
+    JsonElement done = await studio.RenderAndWait(new { scene = "Five balls", settings = sixteen, algorithm = "path", progressive = true });
+    Assert.True(done.GetProperty("progressive").GetBoolean());
+    Assert.Equal(16, done.GetProperty("samples").GetInt32());
+    Assert.True(done.GetProperty("noise").GetDouble() > 0.0);
+    Assert.Contains("noise", done.GetProperty("statistics").GetString());
+    byte[] png = await studio.Client.GetByteArrayAsync("/api/image.png");
+    string cli = Path.Combine(studio.Folder, "progressive.png");
+    var error = new StringWriter();
+    Assert.True(Program.Run(new[] { "render", "Five balls", "--size", "48x36", "--spp", "16", "-t", "2", "--algorithm", "path", "-q", "-o", cli },
+      new StringWriter(), error) == 0, error.ToString());
+    Assert.Equal(File.ReadAllBytes(cli), png);
+    Assert.Contains("id=\"progressive\"", await studio.Client.GetStringAsync("/"));
+  }
 }

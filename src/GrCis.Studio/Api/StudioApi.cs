@@ -96,10 +96,11 @@ internal static class StudioApi
   }
 
   /// <summary>
-  /// What the page sends to render: the scene's name, its parameter text, the settings, and the algorithm
-  /// (<c>grcis render --algorithm</c>'s names; null or empty = the scene's choice).
+  /// What the page sends to render: the scene's name, its parameter text, the settings, the algorithm
+  /// (<c>grcis render --algorithm</c>'s names; null or empty = the scene's choice), and whether to render in passes
+  /// of samples (true), by tiles (false) or as suits the algorithm (null).
   /// </summary>
-  internal sealed record RenderBody(string Scene, string? Param, RenderSettings? Settings, string? Algorithm = null);
+  internal sealed record RenderBody(string Scene, string? Param, RenderSettings? Settings, string? Algorithm = null, bool? Progressive = null);
 
   static IResult Render(RenderBody body, StudioSession s)
   {
@@ -117,7 +118,7 @@ internal static class StudioApi
     {
       return Results.BadRequest(new { error = e.Message });
     }
-    s.Render(entry, body.Param ?? entry.ParameterText, settings, algorithm);
+    s.Render(entry, body.Param ?? entry.ParameterText, settings, algorithm, body.Progressive);
     return Results.Accepted();
   }
 

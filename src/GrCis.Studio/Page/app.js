@@ -55,6 +55,13 @@ function settings() {
 async function loadAlgorithm() {
   const s = await (await api("status")).json();
   $("algorithm").value = s.algorithm ?? "";
+  $("progressive").value = s.progressive == null ? "" : String(s.progressive);
+}
+
+// The preview choice as the API takes it: true, false or null (automatic).
+function progressive() {
+  const v = $("progressive").value;
+  return v === "" ? null : v === "true";
 }
 
 async function render() {
@@ -64,7 +71,7 @@ async function render() {
   try {
     await api("render", {
       method: "POST", headers: { "Content-Type": "application/json" },
-      body: JSON.stringify({ scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value }),
+      body: JSON.stringify({ scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value, progressive: progressive() }),
     });
   } catch (e) {
     $("messages").textContent = e.message;
@@ -89,7 +96,10 @@ async function poll() {
   const s = await (await api("status")).json();
   $("bar").style.width = (100 * s.fraction).toFixed(1) + "%";
   $("elapsed").textContent = s.seconds.toFixed(1) + " s";
-  $("stats").textContent = s.statistics;
+  // While passes run: the samples so far and the estimated noise, so a user sees when the image has converged.
+  $("stats").textContent = s.statistics || (s.samples != null
+    ? `${s.samples} spp so far` + (s.noise != null ? `, noise ${s.noise.toPrecision(3)} RMSE` : "")
+    : "");
   $("messages").textContent = [...s.notes, s.error].filter(Boolean).join("\n");
   showDiagnostics(s.diagnostics);
   $("stop").disabled = !s.rendering;
