@@ -9,13 +9,15 @@ namespace GrCis.Studio;
 
 /// <summary>
 /// One animation run of the studio: the frames of a time range rendered in order (as the demo's
-/// <see cref="AnimationRun"/> does), kept as the PNG the page scrubs through and, when a folder is given,
-/// written there as <c>out####.png</c>; with progress and ETA.
+/// <see cref="AnimationRun"/> does), with progress and ETA. With a folder the frames are written there as
+/// <c>out####.png</c> and the page scrubs through those files (encoded once, nothing held in memory); without
+/// one each frame's PNG is kept in memory.
 /// </summary>
 public sealed class StudioAnimation
 {
   readonly object sync = new();
-  readonly List<byte[]> frames = new();
+  // Per finished frame: its PNG bytes (no folder) or the file it was saved to.
+  readonly List<(byte[]? Png, string? File)> frames = new();
   readonly CancellationTokenSource cancel = new();
   int total;
   TimeSpan elapsed, eta;
@@ -33,10 +35,10 @@ public sealed class StudioAnimation
     var animation = new StudioAnimation(folder) { total = run.Timeline.FrameCount };
     run.FrameRendered += (_, e) =>
     {
-      byte[] png = PngEncoder.Default.Encode(Rendering.Execution.RenderSetup.ToDisplayImage(e.Image, run.Job.Renderer.Gamma));
+      byte[]? png = e.File != null ? null : PngEncoder.Default.Encode(Rendering.Execution.RenderSetup.ToDisplayImage(e.Image, run.Job.Renderer.Gamma));
       lock (animation.sync)
       {
-        animation.frames.Add(png);
+        animation.frames.Add((png, e.File));
         animation.elapsed = e.Elapsed;
         animation.eta = e.Eta;
       }
@@ -66,11 +68,26 @@ public sealed class StudioAnimation
     }
   }
 
-  /// <summary>The finished frame <paramref name="k"/> as PNG, or null when it is not (yet) rendered.</summary>
+  /// <summary>The finished frame <paramref name="k"/> as PNG, or null when it is not (yet) rendered or its file is gone.</summary>
   public byte[]? Frame(int k)
   {
+    (byte[]? Png, string? File) frame;
     lock (sync)
-      return k >= 0 && k < frames.Count ? frames[k] : null;
+    {
+      if (k < 0 || k >= frames.Count)
+        return null;
+      frame = frames[k];
+    }
+    if (frame.Png != null)
+      return frame.Png;
+    try
+    {
+      return System.IO.File.ReadAllBytes(frame.File!);
+    }
+    catch (Exception e) when (e is System.IO.IOException or UnauthorizedAccessException)
+    {
+      return null;   // deleted or replaced by the user since: the page shows the frame as missing
+    }
   }
 
   /// <summary>What the page shows of the run.</summary>

@@ -45,4 +45,25 @@ public sealed class AnimationTests(StudioFixture studio) : IClassFixture<StudioF
       new { scene = "Balls", start = 2.0, end = 1.0, fps = 10.0 });
     Assert.Equal(HttpStatusCode.BadRequest, backwards.StatusCode);
   }
+
+  [Fact]
+  public async Task Frames_in_a_folder_are_served_from_their_files_and_without_one_from_memory_with_the_same_bytes()
+  {
+    string folder = Path.Combine(studio.ScriptsFolder, "served");
+    object Body(string? into) => new { scene = "Balls", settings = new { width = 24, height = 18 }, start = 0.0, end = 0.1, fps = 10.0, folder = into };
+    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation", Body(folder)))
+      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    await WaitForFrames();
+    byte[] saved = File.ReadAllBytes(Path.Combine(folder, "out0000.png"));
+    Assert.Equal(saved, await studio.Client.GetByteArrayAsync("/api/animation/frame/0.png"));
+    // The page scrubs through the files themselves: a frame deleted on disk is gone from the page too.
+    File.Delete(Path.Combine(folder, "out0001.png"));
+    using (HttpResponseMessage gone = await studio.Client.GetAsync("/api/animation/frame/1.png"))
+      Assert.Equal(HttpStatusCode.NotFound, gone.StatusCode);
+
+    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation", Body(null)))
+      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    await WaitForFrames();
+    Assert.Equal(saved, await studio.Client.GetByteArrayAsync("/api/animation/frame/0.png"));
+  }
 }
