@@ -6,6 +6,10 @@ namespace Rendering;
 /// <summary>
 /// n×n stratified supersampling: the pixel is split into a regular grid and each cell is sampled
 /// at its centre moved by up to <see cref="Jittering"/> of the cell size (0 = regular grid, 1 = full jitter).
+/// Within its cell a sample is multi-jittered (Chiu, Shirley and Wang 1994): the cells of one column take
+/// different n-ths of the column's width, and those of one row different n-ths of its height, so the samples'
+/// x and y alone are each stratified into n² strata too. An edge along either axis (a light's border, a wall)
+/// is then antialiased to within 1/n² of its exact coverage, where plain jitter leaves errors of about 1/n.
 /// </summary>
 public class SupersamplingImageSynthesizer : ImageSynthesizer
 {
@@ -65,6 +69,9 @@ public class SupersamplingImageSynthesizer : ImageSynthesizer
     var rnd = MT.rnd;
 
     MT.StartPixel(x, y, n * n);
+    // Per-pixel random rotations of the sub-cell order (below), so the early passes are not all at one side of their cells.
+    uint pattern = amplitude > 0.0 && n > 1 ? Strata.Pattern(PixelDimension) : 0u;
+    int rotateX = (int)(pattern % (uint)n), rotateY = (int)((pattern >> 16) % (uint)n);
     for (int s = first; s < end; s++)
     {
       if (s > 0)
@@ -73,8 +80,16 @@ public class SupersamplingImageSynthesizer : ImageSynthesizer
       double sx = x + origin + i * step, sy = y + origin + j * step;
       if (amplitude > 0.0)
       {
-        sx += amplitude * rnd.UniformNumber();
-        sy += amplitude * rnd.UniformNumber();
+        // The n-th of its cell the sample takes follows its diagonal d: a column (a row) meets every diagonal once,
+        // so its cells take distinct n-ths (n² strata in x and in y), and the even diagonals take every other n-th,
+        // so each half-image of the noise estimate is stratified the same way at half the resolution.
+        int d = s / n, subX = d + rotateX, subY = d + rotateY;
+        if (subX >= n)
+          subX -= n;
+        if (subY >= n)
+          subY -= n;
+        sx += amplitude * (subX + rnd.UniformNumber()) / n;
+        sy += amplitude * (subY + rnd.UniformNumber()) / n;
       }
       f.GetSample(sx, sy, color);
       for (int b = 0; b < bands; b++)
@@ -84,6 +99,9 @@ public class SupersamplingImageSynthesizer : ImageSynthesizer
           oddSum[b] += color[b];
     }
   }
+
+  /// <summary>The <see cref="Strata"/> dimension of the sample positions in the pixel (their sub-cell permutations): purpose 0.</summary>
+  static readonly uint PixelDimension = Strata.Dimension(0, 0);
 
   /// <summary>The pixel's colour from the sum of all its samples.</summary>
   public void FinishPixel(ReadOnlySpan<double> sum, double[] color)

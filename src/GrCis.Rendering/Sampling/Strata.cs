@@ -55,7 +55,7 @@ public static class Strata
   }
 
   /// <summary>The pattern of a dimension in the current pixel: a hash of seed, frame, pixel and dimension.</summary>
-  static uint Pattern(uint dimension)
+  internal static uint Pattern(uint dimension)
   {
     ulong h = RandomStatic.Mix64((ulong)MT.seed ^ 0xD1B54A32D192ED03UL);
     h = RandomStatic.Mix64(h ^ ((ulong)(uint)MT.frame << 32 | dimension));

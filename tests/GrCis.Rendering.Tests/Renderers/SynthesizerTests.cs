@@ -1,3 +1,6 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
 using Rendering;
 
 namespace GrCis.Rendering.Tests.Renderers;
@@ -81,5 +84,54 @@ public class SynthesizerTests
     // White covers 30 % of the pixel. A sub-cell whose four samples all fall on one side of the edge
     // is not refined (the price of adaptivity), so the estimate is close, not exact: here 0.25.
     Assert.InRange(c[0], 0.2, 0.4);
+  }
+
+  /// <summary>Image function that records where it was sampled.</summary>
+  sealed class RecordingFunction : IImageFunction
+  {
+    public readonly List<(double X, double Y)> Points = new();
+
+    public double Width { get; set; } = 4;
+    public double Height { get; set; } = 4;
+
+    public long GetSample(double x, double y, double[] color)
+    {
+      Points.Add((x, y));
+      color[0] = color[1] = color[2] = 0.0;
+      return 0L;
+    }
+  }
+
+  [Theory]
+  [InlineData(2)]
+  [InlineData(4)]
+  [InlineData(7)]
+  public void Full_jitter_puts_one_sample_in_each_cell_and_in_each_of_the_n2_columns_and_rows(int n)
+  {
+    var f = new RecordingFunction();
+    var s = new SupersamplingImageSynthesizer { ImageFunction = f, Supersampling = n * n };
+    MT.InitThreadData();
+    s.RenderPixelLinear(3, 1, new double[3]);
+    Assert.Equal(n * n, f.Points.Count);
+    Assert.All(f.Points, p => Assert.True(p.X >= 3 && p.X < 4 && p.Y >= 1 && p.Y < 2, $"{p} outside the pixel"));
+    Assert.Equal(n * n, f.Points.Select(p => ((int)((p.X - 3) * n), (int)((p.Y - 1) * n))).Distinct().Count());
+    Assert.Equal(n * n, f.Points.Select(p => (int)((p.X - 3) * n * n)).Distinct().Count());
+    Assert.Equal(n * n, f.Points.Select(p => (int)((p.Y - 1) * n * n)).Distinct().Count());
+  }
+
+  [Fact]
+  public void An_edge_along_an_axis_is_antialiased_within_one_n2_th_of_its_coverage()
+  {
+    // Multi-jittered x: whatever the edge's position, at most one of the n² x-strata is cut by it.
+    var rnd = new Random(5);
+    for (int k = 0; k < 200; k++)
+    {
+      double edge = 2 + rnd.NextDouble();
+      var f = new EdgeFunction { Edge = edge };
+      var s = new SupersamplingImageSynthesizer { ImageFunction = f, Supersampling = 16 };
+      double[] c = new double[3];
+      s.RenderPixelLinear(2, k % 4, c);
+      Assert.InRange(c[0], edge - 2 - 1.0 / 16, edge - 2 + 1.0 / 16);
+    }
   }
 }
