@@ -49,6 +49,7 @@ public class ScriptsFolderTests
     "SoftShadows.cs",    // DistributedRayTracing: SphereLightSource penumbrae
     "DepthOfField.cs",   // DistributedRayTracing: ThinLensCamera
     "CornellBox.cs",     // PathTracing: the benchmark's Cornell box, emissive rectangle
+    "EmissiveSpheres.cs", // PathTracing: small emissive spheres, light-sampled by their cones
   };
 
   public static IEnumerable<object[]> ClassicCases()

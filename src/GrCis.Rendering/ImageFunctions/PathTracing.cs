@@ -23,7 +23,7 @@ namespace Rendering;
 [Serializable]
 public class PathTracing : RayTracing
 {
-  /// <summary>Sample light sources and emissive rectangles at every diffuse or glossy vertex.</summary>
+  /// <summary>Sample light sources and emissive rectangles and spheres at every diffuse or glossy vertex.</summary>
   public bool NextEventEstimation = true;
 
   /// <summary>Weigh light samples and scattered rays that reach an emitter by the power heuristic (else light samples alone count).</summary>
@@ -101,12 +101,9 @@ public class PathTracing : RayTracing
       if (i.Material is PhongMaterial { Emission: double[] emission } && Vector3d.Dot(normal, direction) < 0.0)
       {
         double w = 1.0;
-        if (!afterDelta && lights.Contains(i.Solid, out double density))
-        {
-          double cosL = -Vector3d.Dot(normal, direction);
-          double lightPdf = density * (x - origin).LengthSquared / cosL;
+        // A light sample could not have found it when its density is 0 (a sphere seen from inside or on it).
+        if (!afterDelta && lights.Pdf(i.Solid, origin, x, normal, direction, out double lightPdf) && lightPdf > 0.0)
           w = MultipleImportanceSampling ? PowerHeuristic(lastPdf, lightPdf) : 0.0;
-        }
         radiance += throughput * Rgb.From(emission) * w;
       }
       if (bounce >= MaxLevel)
@@ -141,7 +138,7 @@ public class PathTracing : RayTracing
     return hash;
   }
 
-  /// <summary>Direct light at hit <paramref name="i"/>: every light source once, and one point of one emitter.</summary>
+  /// <summary>Direct light at hit <paramref name="i"/>: every light source once, and one sample of one emitter.</summary>
   Rgb SampleLights(ShadingScratch scratch, IRayScene sc, EmitterSet lights, Intersection i, in PathBsdf bsdf, int bounce)
   {
     Rgb sum = Rgb.Zero;
@@ -167,21 +164,14 @@ public class PathTracing : RayTracing
     if (lights.Count > 0)
     {
       Strata.Sample2D(Strata.Dimension(6, bounce), out double u, out double v);
-      lights.Sample(MT.rnd.UniformNumber(), u, v, out Vector3d point, out Vector3d lightNormal, out Rgb le, out double density);
-      Vector3d toLight = point - x;
-      double dist2 = toLight.LengthSquared;
-      double dist = Math.Sqrt(dist2);
-      if (dist > 1e-9)
+      if (lights.Sample(x, MT.rnd.UniformNumber(), u, v, out Vector3d toLight, out double dist, out Vector3d wi, out Rgb le, out double lightPdf))
       {
-        Vector3d wi = toLight / dist;
-        double cosL = -Vector3d.Dot(lightNormal, wi);
         double cos = Vector3d.Dot(wi, nf);
-        if (cosL > 0.0 && cos > 0.0)
+        if (cos > 0.0)
         {
           Rgb f = bsdf.Eval(wi);
           if (!f.IsBlack && Visible(scratch, x, toLight, dist))
           {
-            double lightPdf = density * dist2 / cosL;
             double w = MultipleImportanceSampling ? PowerHeuristic(lightPdf, bsdf.Pdf(wi)) : 1.0;
             sum += f * le * (cos * w / lightPdf);
           }

@@ -53,8 +53,8 @@ public class RectangleLightSource : PointLightSource
       return;
     }
 
-    states ??= new System.Threading.ThreadLocal<SamplingState>(() => new SamplingState());
-    SamplingState s = states.Value!;
+    // Created once for all threads: two threads racing to create it would lose one's strata half-way through a pixel.
+    SamplingState s = System.Threading.LazyInitializer.EnsureInitialized(ref states, () => new System.Threading.ThreadLocal<SamplingState>(() => new SamplingState())).Value!;
     bool samePixel = s.pixelX == MT.x && s.pixelY == MT.y && s.total == total;
     if (samePixel && s.rank == MT.rank)
     {

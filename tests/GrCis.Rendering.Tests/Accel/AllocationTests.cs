@@ -108,6 +108,35 @@ public class AllocationTests
     Assert.True(perPixel <= 8, $"{perPixel:F1} B/pixel");
   }
 
+  [Fact]
+  public void Path_tracing_samples_emissive_spheres_without_allocating()
+  {
+    // A floor and a ball lit by two emissive spheres only: every diffuse vertex samples a cone (EmitterSet).
+    var root = new CSGInnerNode(SetOperation.Union);
+    root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { 0.7, 0.7, 0.7 }, 0.0, 1.0, 0.0, 1));
+    root.InsertChild(new Plane(), Matrix4d.RotateX(-MathHelper.PiOver2));
+    root.InsertChild(new Sphere(), Matrix4d.Scale(0.5) * Matrix4d.CreateTranslation(0, 0.5, 0.3));
+    foreach (double x in new[] { -1.0, 1.0 })
+    {
+      var light = new Sphere();
+      light.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { 0.0, 0.0, 0.0 }, 0.0, 0.0, 0.0, 1) { Emission = new[] { 20.0, 20.0, 20.0 } });
+      root.InsertChild(light, Matrix4d.Scale(0.15) * Matrix4d.CreateTranslation(x, 0.8, 0.0));
+    }
+    var scene = new DefaultRayScene
+    {
+      Intersectable = root,
+      BackgroundColor = new[] { 0.0, 0.0, 0.0 },
+      Camera = new StaticCamera(new Vector3d(0, 2, -4), new Vector3d(0, -0.5, 1), 50.0),
+      Sources = new System.Collections.Generic.LinkedList<ILightSource>(),
+    };
+    // One bounce, so both render the same paths (a single Lambertian lobe, no Russian roulette): light sampling
+    // (a cone per vertex, its shadow ray, the MIS density of the scattered ray) must add nothing to what a vertex costs.
+    double off = BytesPerPixel(scene, new PathTracing(scene) { NextEventEstimation = false, MaxLevel = 1 }, 288, 208, 32);
+    double on = BytesPerPixel(scene, new PathTracing(scene) { MaxLevel = 1 }, 288, 208, 32);
+    output.WriteLine($"path tracing, emissive spheres, one bounce: {off:F1} B/pixel without light sampling, {on:F1} with");
+    Assert.True(on <= off + 1.0, $"light sampling allocates: {on:F1} vs {off:F1} B/pixel");
+  }
+
   [Theory]
   [InlineData(typeof(Sphere), 180, 200)]   // bilinear
   [InlineData(typeof(Cube), 440, 200)]     // multiplying COLOR, mirrored repeat
