@@ -45,7 +45,8 @@ internal sealed class SamplePassSynthesizer : ImageSynthesizer
   /// <summary>
   /// The sample counts after each pass for an n×n grid: 1 sample first (an image at once), then the first
   /// diagonal (n samples), then twice as many each pass up to n². Whole diagonals keep each pass's samples
-  /// spread over the pixel and its half-images (the noise estimate) balanced.
+  /// spread over the pixel and its half-images (the noise estimate) balanced, and every pass begins a random
+  /// stream (<see cref="SupersamplingImageSynthesizer.IsStreamStart"/>).
   /// </summary>
   public static int[] PassEnds(int n)
   {

@@ -55,12 +55,16 @@ public class SupersamplingImageSynthesizer : ImageSynthesizer
   /// <summary>
   /// Takes samples <paramref name="first"/> to <paramref name="end"/> − 1 of pixel (x, y) and adds each one's
   /// colour to <paramref name="sum"/>, in sample order, and the colours of the odd diagonals (see
-  /// <see cref="SampleCell"/>) also to <paramref name="oddSum"/>. Each sample draws from its own stream
-  /// (<see cref="MT.StartSample"/>), so the samples of a pixel may be taken in several calls and the sums are
-  /// those of one call. <paramref name="color"/> is scratch.
+  /// <see cref="SampleCell"/>) also to <paramref name="oddSum"/>. Sample 1 and each diagonal's first sample start a
+  /// random stream of their own (<see cref="MT.StartStream"/>), so the samples of a pixel may be taken in several
+  /// calls that each begin at such a sample (<see cref="IsStreamStart"/>), and the sums are those of one call.
+  /// <paramref name="color"/> is scratch.
   /// </summary>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="first"/> does not begin a stream.</exception>
   public void AccumulateSamples(int x, int y, int first, int end, double[] color, Span<double> sum, Span<double> oddSum)
   {
+    if (!IsStreamStart(first, superXY))
+      throw new ArgumentOutOfRangeException(nameof(first), first, "A pass must begin at sample 0, 1 or a diagonal's first sample.");
     IImageFunction f = Function;
     int bands = color.Length, n = superXY;
     double step = 1.0 / n;
@@ -72,35 +76,56 @@ public class SupersamplingImageSynthesizer : ImageSynthesizer
     // Per-pixel random rotations of the sub-cell order (below), so the early passes are not all at one side of their cells.
     uint pattern = amplitude > 0.0 && n > 1 ? Strata.Pattern(PixelDimension) : 0u;
     int rotateX = (int)(pattern % (uint)n), rotateY = (int)((pattern >> 16) % (uint)n);
+    // Sample s = d·n + k lies on diagonal d in row k, column (k + d) mod n (SampleCell), kept incrementally.
+    int d = first / n, k = first - d * n;
     for (int s = first; s < end; s++)
     {
-      if (s > 0)
+      if (k == 0 || s == 1)
+      {
+        if (s > 0)
+          MT.StartStream(s);
+      }
+      else
         MT.StartSample(s);
-      (int i, int j, bool oddDiagonal) = SampleCell(s, n);
-      double sx = x + origin + i * step, sy = y + origin + j * step;
+      int i = k + d;
+      if (i >= n)
+        i -= n;
+      double sx = x + origin + i * step, sy = y + origin + k * step;
       if (amplitude > 0.0)
       {
-        // The n-th of its cell the sample takes follows its diagonal d: a column (a row) meets every diagonal once,
+        // The n-th of its cell the sample takes follows its diagonal: a column (a row) meets every diagonal once,
         // so its cells take distinct n-ths (n² strata in x and in y), and the even diagonals take every other n-th,
         // so each half-image of the noise estimate is stratified the same way at half the resolution.
-        int d = s / n, subX = d + rotateX, subY = d + rotateY;
+        int subX = d + rotateX, subY = d + rotateY;
         if (subX >= n)
           subX -= n;
         if (subY >= n)
           subY -= n;
-        sx += amplitude * (subX + rnd.UniformNumber()) / n;
-        sy += amplitude * (subY + rnd.UniformNumber()) / n;
+        sx += amplitude * (subX + rnd.UniformNumber()) * step;
+        sy += amplitude * (subY + rnd.UniformNumber()) * step;
       }
       f.GetSample(sx, sy, color);
       for (int b = 0; b < bands; b++)
         sum[b] += color[b];
-      if (oddDiagonal)
+      if ((d & 1) != 0)
         for (int b = 0; b < bands; b++)
           oddSum[b] += color[b];
+      if (++k == n)
+      {
+        k = 0;
+        d++;
+      }
     }
   }
 
-  /// <summary>The <see cref="Strata"/> dimension of the sample positions in the pixel (their sub-cell permutations): purpose 0.</summary>
+  /// <summary>
+  /// Whether sample <paramref name="s"/> of an n×n grid begins a random stream: sample 0 (the pixel's), sample 1 (so a
+  /// one-sample pass can come first) and each diagonal's first. Fresh streams cost a reseed, so there is one per
+  /// diagonal, not one per sample.
+  /// </summary>
+  public static bool IsStreamStart(int s, int n) => s <= 1 || s % n == 0;
+
+  /// <summary>The <see cref="Strata"/> dimension of the sample positions in the pixel (the rotations of their sub-cell order): purpose 0.</summary>
   static readonly uint PixelDimension = Strata.Dimension(0, 0);
 
   /// <summary>The pixel's colour from the sum of all its samples.</summary>

@@ -98,19 +98,23 @@ public static class MT
     rnd.ResetFast(h);
   }
 
+  /// <summary>Marks the start of sample <paramref name="r"/> of the current pixel.</summary>
+  public static void StartSample(int r) => rank = r;
+
+  /// <summary>Advances to the next sample of the current pixel.</summary>
+  public static void NextSample() => rank++;
+
   /// <summary>
-  /// Starts sample <paramref name="r"/> of the current pixel and reseeds <see cref="rnd"/> from (pixel, r): every
-  /// sample has a stream of its own, so a pixel's samples may be taken in separate passes (progressive rendering)
-  /// and still give the numbers of one pass. Sample 0 keeps the pixel's own stream.
+  /// Starts sample <paramref name="r"/> of the current pixel on a random stream of its own, derived from (pixel, r):
+  /// the samples from here on give the same numbers whether or not the pixel's earlier samples were taken in the
+  /// same call, so a pixel's samples may be taken in separate passes (progressive rendering). Stream 0 is the
+  /// pixel's own (<see cref="StartPixel"/>).
   /// </summary>
-  public static void StartSample(int r)
+  public static void StartStream(int r)
   {
     rank = r;
     rnd.ResetFast(r == 0 ? pixelHash : RandomStatic.Mix64(pixelHash ^ (ulong)(uint)r * 0xD6E8FEB86659FD93UL));
   }
-
-  /// <summary>Advances to the next sample of the current pixel (see <see cref="StartSample"/>).</summary>
-  public static void NextSample() => StartSample(rank + 1);
 
   /// <summary>Makes sure this thread has its generator.</summary>
   public static void InitThreadData() => _ = rnd;

@@ -134,4 +134,39 @@ public class SynthesizerTests
       Assert.InRange(c[0], edge - 2 - 1.0 / 16, edge - 2 + 1.0 / 16);
     }
   }
+
+  /// <summary>Image function whose colour is the sampler's next random numbers: any change of stream shows.</summary>
+  sealed class RandomFunction : IImageFunction
+  {
+    public double Width { get; set; } = 4;
+    public double Height { get; set; } = 4;
+
+    public long GetSample(double x, double y, double[] color)
+    {
+      color[0] = MT.rnd.UniformNumber();
+      color[1] = MT.rnd.UniformNumber() + x;
+      color[2] = MT.rank;
+      return 0L;
+    }
+  }
+
+  [Fact]
+  public void Samples_taken_in_passes_that_begin_streams_sum_to_the_one_call_bits()
+  {
+    var s = new SupersamplingImageSynthesizer { ImageFunction = new RandomFunction(), Supersampling = 16 };
+    MT.InitThreadData();
+    double[] color = new double[3];
+    double[] whole = new double[3], wholeOdd = new double[3];
+    s.AccumulateSamples(1, 2, 0, 16, color, whole, wholeOdd);
+
+    double[] parts = new double[3], partsOdd = new double[3];
+    foreach ((int first, int end) in new[] { (0, 1), (1, 4), (4, 8), (8, 16) })
+      s.AccumulateSamples(1, 2, first, end, color, parts, partsOdd);
+    Assert.Equal(whole, parts);
+    Assert.Equal(wholeOdd, partsOdd);
+    Assert.Equal(Enumerable.Range(0, 16).Sum(), whole[2]);   // every rank once
+
+    Assert.True(SupersamplingImageSynthesizer.IsStreamStart(1, 4) && SupersamplingImageSynthesizer.IsStreamStart(12, 4));
+    Assert.Throws<ArgumentOutOfRangeException>(() => s.AccumulateSamples(1, 2, 5, 8, color, parts, partsOdd));
+  }
 }
