@@ -11,6 +11,7 @@
 #   THREADS [2]  SPP ["16 64 256"]  REF_SPP [2048]  VARIANTS ["diffuse spheres"]
 #   OUTDIR [bench/results/cornell-work]  CORNELL_DIR [../shared/bench/cornell beside the repository]
 #   OURS_EXTRA_SPP [1024] (one more of ours, for its converged mean)
+#   REPEAT [1] (renders per renderer and sample count, alternating; render_s is their median, all in times)
 set -euo pipefail
 
 THREADS=${THREADS:-2}
@@ -18,6 +19,7 @@ SPP=${SPP:-"16 64 256"}
 REF_SPP=${REF_SPP:-2048}
 VARIANTS=${VARIANTS:-"diffuse spheres"}
 OURS_EXTRA_SPP=${OURS_EXTRA_SPP:-1024}
+REPEAT=${REPEAT:-1}
 here=$(cd "$(dirname "$0")" && pwd)
 repo=$(dirname "$here")
 OUTDIR=${OUTDIR:-$repo/bench/results/cornell-work}
@@ -54,25 +56,33 @@ errors() {  # ref test -> "rmse rmse_le1 mean_lum"
   echo "$(echo "$all" | cut -f1) $(echo "$le1" | cut -f1) $(echo "$all" | cut -f4)"
 }
 
-printf 'variant\trenderer\tspp\trender_s\trmse\trmse_le1\tmean_lum\n'
+median() {  # numbers... -> their median (the lower middle one of an even count)
+  printf '%s\n' "$@" | sort -g | sed -n "$(( ($# + 1) / 2 ))p"
+}
+
+printf 'variant\trenderer\tspp\trender_s\trmse\trmse_le1\tmean_lum\ttimes\n'
 for v in $VARIANTS; do
   ref="$OUTDIR/$v-ref-$REF_SPP.pfm"
   if [[ ! -f "$ref" ]]; then
     echo "cornell-compare: rendering the Cycles reference $v at $REF_SPP spp (seed 1000)" >&2
     cycles "$v" "$REF_SPP" 1000 "$ref" >/dev/null
   fi
-  printf '%s\treference\t%s\t-\t-\t-\t%s\n' "$v" "$REF_SPP" "$(python3 "$cornell/pfm_error.py" "$ref" "$ref" --tsv | cut -f3)"
+  printf '%s\treference\t%s\t-\t-\t-\t%s\t-\n' "$v" "$REF_SPP" "$(python3 "$cornell/pfm_error.py" "$ref" "$ref" --tsv | cut -f3)"
   for s in $SPP; do
-    t=$(cycles "$v" "$s" 0 "$OUTDIR/$v-cycles-$s.pfm")
+    # Both are seeded, so the repeats give the same image; only their times differ.
+    tc=(); to=()
+    for ((r = 0; r < REPEAT; r++)); do
+      tc+=("$(cycles "$v" "$s" 0 "$OUTDIR/$v-cycles-$s.pfm")")
+      to+=("$(ours "$v" "$s" "$OUTDIR/$v-ours-$s.pfm")")
+    done
     read -r e1 e2 m <<< "$(errors "$ref" "$OUTDIR/$v-cycles-$s.pfm")"
-    printf '%s\tcycles\t%s\t%s\t%s\t%s\t%s\n' "$v" "$s" "$t" "$e1" "$e2" "$m"
-    t=$(ours "$v" "$s" "$OUTDIR/$v-ours-$s.pfm")
+    printf '%s\tcycles\t%s\t%s\t%s\t%s\t%s\t%s\n' "$v" "$s" "$(median "${tc[@]}")" "$e1" "$e2" "$m" "${tc[*]}"
     read -r e1 e2 m <<< "$(errors "$ref" "$OUTDIR/$v-ours-$s.pfm")"
-    printf '%s\tours\t%s\t%s\t%s\t%s\t%s\n' "$v" "$s" "$t" "$e1" "$e2" "$m"
+    printf '%s\tours\t%s\t%s\t%s\t%s\t%s\t%s\n' "$v" "$s" "$(median "${to[@]}")" "$e1" "$e2" "$m" "${to[*]}"
   done
   if [[ -n "$OURS_EXTRA_SPP" ]]; then
     t=$(ours "$v" "$OURS_EXTRA_SPP" "$OUTDIR/$v-ours-$OURS_EXTRA_SPP.pfm")
     read -r e1 e2 m <<< "$(errors "$ref" "$OUTDIR/$v-ours-$OURS_EXTRA_SPP.pfm")"
-    printf '%s\tours\t%s\t%s\t%s\t%s\t%s\n' "$v" "$OURS_EXTRA_SPP" "$t" "$e1" "$e2" "$m"
+    printf '%s\tours\t%s\t%s\t%s\t%s\t%s\t%s\n' "$v" "$OURS_EXTRA_SPP" "$t" "$e1" "$e2" "$m" "$t"
   fi
 done

@@ -126,9 +126,10 @@ public sealed partial class PreparedScene
     m.LocalToObject = f.ToObject();
     m.NoShadow = f.GetLocalAttribute(PropertyName.NO_SHADOW) != null;
 
-    // The look-ups Intersection.CompleteWith does per hit, once (only when they do not create objects).
-    if (f.GetAttribute(PropertyName.REFLECTANCE_MODEL) is IReflectanceModel model &&
-        f.GetAttribute(PropertyName.MATERIAL) is IMaterial material)
+    // The look-ups Intersection.CompleteWith does per hit, once (only when they do not create objects). Without a
+    // reflectance model GrCis makes a new PhongModel per hit; it holds no state, so one per member answers the same.
+    IReflectanceModel model = f.GetAttribute(PropertyName.REFLECTANCE_MODEL) as IReflectanceModel ?? new PhongModel();
+    if (f.GetAttribute(PropertyName.MATERIAL) is IMaterial material)
     {
       m.AttributesCached = true;
       m.Model = model;

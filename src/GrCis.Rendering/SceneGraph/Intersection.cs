@@ -87,7 +87,7 @@ public class Intersection : IComparable<Intersection>
       CompleteWith(LocalToWorld, WorldToLocal, LocalToObject);
       return;
     }
-    SurfaceColor ??= new double[] { 0.0, 0.0, 0.0 };
+    BlackIfUncoloured();
     completed = true;
   }
 
@@ -118,7 +118,7 @@ public class Intersection : IComparable<Intersection>
       if (Enter != Front)
         Normal = -Normal;
     }
-    SurfaceColor ??= new double[] { 0.0, 0.0, 0.0 };
+    BlackIfUncoloured();
     completed = true;
   }
 
@@ -195,7 +195,7 @@ public class Intersection : IComparable<Intersection>
     Normal.Normalize();
     if (Enter != Front)
       Normal = -Normal;
-    SurfaceColor ??= new double[] { 0.0, 0.0, 0.0 };
+    BlackIfUncoloured();
     completed = true;
   }
 
@@ -210,6 +210,22 @@ public class Intersection : IComparable<Intersection>
       Array.Copy(color, own, color.Length);
       SurfaceColor = own;
     }
+  }
+
+  /// <summary>
+  /// A hit with no colour gets black, an array of its own (GrCis's fresh { 0, 0, 0 }); a pooled object reuses its
+  /// spare array for it, so an uncoloured solid costs no allocation per hit either.
+  /// </summary>
+  void BlackIfUncoloured()
+  {
+    if (SurfaceColor != null)
+      return;
+    double[]? own = spareColor;
+    if (own == null || own.Length != 3)
+      spareColor = own = new double[3];
+    else
+      Array.Clear(own);
+    SurfaceColor = own;
   }
 
   /// <summary>The part of a fast-path record every solid lists the same way (T, Enter, Front, local coordinates).</summary>
@@ -248,7 +264,7 @@ public class Intersection : IComparable<Intersection>
     Normal.Normalize();
     if (Enter != Front)
       Normal = -Normal;
-    SurfaceColor ??= new double[] { 0.0, 0.0, 0.0 };
+    BlackIfUncoloured();
     completed = true;
   }
 

@@ -135,6 +135,18 @@ public class AllocationTests
     double on = BytesPerPixel(scene, new PathTracing(scene) { MaxLevel = 1 }, 288, 208, 32);
     output.WriteLine($"path tracing, emissive spheres, one bounce: {off:F1} B/pixel without light sampling, {on:F1} with");
     Assert.True(on <= off + 1.0, $"light sampling allocates: {on:F1} vs {off:F1} B/pixel");
+    // No reflectance model is set: GrCis's per-hit PhongModel comes from the prepared member, not the heap.
+    Assert.True(off <= 1.0, $"path vertices allocate: {off:F1} B/pixel");
+  }
+
+  [Fact]
+  public void Path_tracing_allocates_nothing_per_vertex_in_the_Cornell_box()
+  {
+    // Several bounces, light sampling and MIS, Russian roulette; a box built without a reflectance model.
+    IRayScene scene = GrCis.Rendering.Tests.ImageFunctions.CornellScene.Create(diffuse: false);
+    double perPixel = BytesPerPixel(scene, new PathTracing(scene), 300, 200, 32);
+    output.WriteLine($"path tracing, Cornell spheres: {perPixel:F1} B/pixel");
+    Assert.True(perPixel <= 1.0, $"{perPixel:F1} B/pixel");
   }
 
   [Theory]
