@@ -192,7 +192,6 @@ public sealed class RenderSession : IDisposable
       synth.First = k == 0 ? 0 : ends[k - 1];
       synth.End = ends[k];
       double before = (double)synth.First / total, share = (double)(synth.End - synth.First) / total;
-      int done = 0;
       lock (finished)
         finished.Clear();
       passes = k + 1;
@@ -201,8 +200,7 @@ public sealed class RenderSession : IDisposable
         lock (finished)
         {
           finished.Add(p.LastTile);
-          done = finished.Count;
-          fraction = before + share * done / tilesTotal;
+          fraction = before + share * finished.Count / tilesTotal;
         }
         Raise(ProgressChanged, new RenderProgressEventArgs(p, clock.Elapsed, fraction));
       }, token, context);
