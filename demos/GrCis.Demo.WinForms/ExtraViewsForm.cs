@@ -73,6 +73,7 @@ sealed class ExtraViewsForm : Form
     MapKind.NormalRelative => "Normals (to view)",
     MapKind.NormalAbsolute => "Normals (absolute)",
     MapKind.PrimaryRays => "Primary rays",
+    MapKind.Noise => "Noise",
     _ => "All rays",
   };
 

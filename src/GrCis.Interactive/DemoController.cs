@@ -233,7 +233,9 @@ public sealed class DemoController : IDisposable
     RenderJob job = LastJob ?? throw new InvalidOperationException("Render something first.");
     if (IsRendering)
       throw new InvalidOperationException("Wait for the render to finish (or stop it) before computing the extra views.");
-    return ExtraViews.Compute(job, cancel);
+    // The noise map is the last render's own estimate, when that render was of this job.
+    NoiseImage? noise = LastResult is RenderResult r && ReferenceEquals(r.Job, job) ? r.Frame.Noise : null;
+    return ExtraViews.Compute(job, cancel, noise);
   }
 
   /// <summary>Saves the current history image; reports a failure through <see cref="Error"/> and returns false.</summary>

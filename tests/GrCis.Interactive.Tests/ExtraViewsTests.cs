@@ -89,4 +89,33 @@ public sealed class ExtraViewsTests : IDisposable
     Assert.Equal(9, lines[body].Split(' ').Length);
     Assert.Empty(Directory.GetFiles(dir, "*.tmp-*"));
   }
+
+  [Fact]
+  public async System.Threading.Tasks.Task Noise_view_is_the_renders_own_standard_error_and_says_when_there_is_none()
+  {
+    var catalog = new SceneCatalog();
+    catalog.AddBuiltIn("Glass ball", _ => TestScenes.SphereOnPlane(glass: true));
+    using var demo = new DemoController(catalog) { Settings = Odd with { SamplesPerPixel = 16 }, Algorithm = RenderAlgorithm.Path, Selected = catalog.Entries[0] };
+    RenderResult? result = await demo.RenderAsync();
+    Assert.NotNull(result?.Frame.Noise);
+    ExtraViews views = demo.ComputeExtraViews();
+
+    float[] variance = result!.Frame.Noise!.Variance.Data;
+    for (int y = 0; y < Odd.Height; y += 4)
+      for (int x = 0; x < Odd.Width; x += 4)
+        Assert.Equal(Math.Sqrt(variance[y * Odd.Width + x]), views.ValueAt(MapKind.Noise, x, y), 12);
+    Assert.True(views.Range(MapKind.Noise).Max > 0.0);
+    Assert.Contains("noise ±", views.Describe(MapKind.Noise, 16, 16));
+    string csv = Path.Combine(dir, "noise.csv");
+    views.SaveCsv(MapKind.Noise, csv);
+    Assert.Equal("x,y,standard_error", File.ReadLines(csv).First());
+
+    // One sample per pixel: no estimate, and the read-out says why.
+    demo.Settings = Odd;
+    await demo.RenderAsync();
+    ExtraViews single = demo.ComputeExtraViews();
+    Assert.True(double.IsNaN(single.ValueAt(MapKind.Noise, 16, 16)));
+    Assert.Contains("no noise estimate", single.Describe(MapKind.Noise, 16, 16));
+    Assert.Equal(0.0, single.ToImage(MapKind.Noise).Data.Max());
+  }
 }

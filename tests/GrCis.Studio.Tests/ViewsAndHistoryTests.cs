@@ -1,3 +1,4 @@
+using System.Linq;
 using System.Net;
 using System.Net.Http;
 using System.Net.Http.Json;
@@ -34,6 +35,20 @@ public sealed class ViewsAndHistoryTests(StudioFixture studio) : IClassFixture<S
     Assert.Equal(HttpStatusCode.BadRequest, outside.StatusCode);
     using HttpResponseMessage unknown = await studio.Client.GetAsync("/api/views/Colour.png");
     Assert.Equal(HttpStatusCode.NotFound, unknown.StatusCode);
+  }
+
+  [Fact]
+  public async Task Noise_view_reads_out_the_path_traced_renders_standard_error()
+  {
+    await studio.RenderAndWait(new { scene = "Five balls", settings = new { width = 32, height = 24, samplesPerPixel = 16 }, algorithm = "path" });
+    using HttpResponseMessage computed = await studio.Client.PostAsync("/api/views", null);
+    Assert.Equal(HttpStatusCode.OK, computed.StatusCode);
+    Assert.Contains("Noise", (await computed.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("kinds").EnumerateArray().Select(k => k.GetString()));
+    JsonElement value = await studio.Client.GetFromJsonAsync<JsonElement>("/api/views/value?kind=Noise&x=16&y=12");
+    Assert.Contains("noise ±", value.GetProperty("text").GetString());
+    Assert.StartsWith("x,y,standard_error", await studio.Client.GetStringAsync("/api/views/noise.csv"));
+    Assert.Equal(0x89, (await studio.Client.GetByteArrayAsync("/api/views/Noise.png"))[0]);
+    Assert.Contains("value=\"Noise\"", await studio.Client.GetStringAsync("/"));
   }
 
   [Fact]

@@ -15,18 +15,20 @@ namespace GrCis.Interactive;
 /// Depth, normals and rays-per-pixel maps of a render job, with a value read-out and PNG, CSV and
 /// point-cloud (PLY) export. Computed by a separate pass of the job's own image function with an observer
 /// attached (<see cref="RenderContext"/>), sampling exactly the renderer's sample positions; the image of
-/// that pass is thrown away.
+/// that pass is thrown away. The noise map is the render's own estimate, handed in.
 /// </summary>
 public sealed class ExtraViews
 {
   readonly AovObserver maps;
+  readonly NoiseImage? noise;
 
-  ExtraViews(int width, int height, AovObserver maps, bool allRaysKnown)
+  ExtraViews(int width, int height, AovObserver maps, bool allRaysKnown, NoiseImage? noise)
   {
     Width = width;
     Height = height;
     this.maps = maps;
     AllRaysKnown = allRaysKnown;
+    this.noise = noise != null && noise.Width == width && noise.Height == height ? noise : null;
   }
 
   public int Width { get; }
@@ -37,7 +39,8 @@ public sealed class ExtraViews
   public bool AllRaysKnown { get; }
 
   /// <summary>Runs the maps pass. Do not call while the same job is rendering (it shares the renderer).</summary>
-  public static ExtraViews Compute(RenderJob job, CancellationToken cancel = default)
+  /// <param name="noise">The noise estimate of the job's render (<see cref="FrameResult.Noise"/>) for <see cref="MapKind.Noise"/>; null = none.</param>
+  public static ExtraViews Compute(RenderJob job, CancellationToken cancel = default, NoiseImage? noise = null)
   {
     ArgumentNullException.ThrowIfNull(job);
     var observer = new AovObserver(job.Width, job.Height);
@@ -56,7 +59,7 @@ public sealed class ExtraViews
     {
       renderer.ImageFunction = saved;
     }
-    return new ExtraViews(job.Width, job.Height, observer, known);
+    return new ExtraViews(job.Width, job.Height, observer, known, noise);
   }
 
   int Index(int x, int y)
@@ -98,6 +101,7 @@ public sealed class ExtraViews
       MapKind.NormalRelative or MapKind.NormalAbsolute => maps.Hits[i] > 0 ? maps.AngleSum[i] / maps.Hits[i] : double.NaN,
       MapKind.PrimaryRays => maps.Primary[i],
       MapKind.AllRays => maps.All[i],
+      MapKind.Noise => noise != null ? Math.Sqrt(noise.Variance.Data[i]) : double.NaN,
       _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "Unknown map."),
     };
   }
@@ -114,6 +118,8 @@ public sealed class ExtraViews
       MapKind.NormalRelative => double.IsNaN(ValueAt(kind, x, y)) ? $"[{x},{y}] no hit"
         : string.Create(c, $"[{x},{y}] {ValueAt(kind, x, y):0.#}° from the view direction"),
       MapKind.PrimaryRays => $"[{x},{y}] {ValueAt(kind, x, y)} primary rays",
+      MapKind.Noise => double.IsNaN(ValueAt(kind, x, y)) ? $"[{x},{y}] no noise estimate (it needs 2x2 samples per pixel or more)"
+        : string.Create(c, $"[{x},{y}] noise ±{ValueAt(kind, x, y):0.#####} (standard error of the linear value)"),
       _ => $"[{x},{y}] {ValueAt(kind, x, y)} rays" + (AllRaysKnown ? "" : " (primary only: not a ray tracer)"),
     };
   }
@@ -151,6 +157,11 @@ public sealed class ExtraViews
           case MapKind.NormalRelative:
             if (!double.IsNaN(v))
               HeatPalette.Color(v / 90.0, rgb);
+            break;
+          case MapKind.Noise:
+            // No estimate stays black.
+            if (!double.IsNaN(v))
+              HeatPalette.Color(max > min ? (v - min) / (max - min) : 0.0, rgb);
             break;
           default:
             HeatPalette.Color(max > min ? (v - min) / (max - min) : 0.0, rgb);
@@ -196,6 +207,7 @@ public sealed class ExtraViews
       MapKind.NormalRelative => "x,y,angle_deg",
       MapKind.NormalAbsolute => "x,y,nx,ny,nz",
       MapKind.PrimaryRays => "x,y,primary_rays",
+      MapKind.Noise => "x,y,standard_error",
       _ => "x,y,all_rays",
     });
     for (int y = 0; y < Height; y++)

@@ -17,4 +17,10 @@ public enum MapKind
 
   /// <summary>All rays per pixel: primary, shadow and secondary.</summary>
   AllRays,
+
+  /// <summary>
+  /// The render's estimated standard error of each pixel's value (<see cref="Rendering.Execution.NoiseImage"/>): where
+  /// the image is still noisy. None below 2×2 samples per pixel.
+  /// </summary>
+  Noise,
 }
