@@ -16,7 +16,6 @@ internal sealed class SamplePassSynthesizer : ImageSynthesizer
   readonly SupersamplingImageSynthesizer inner;
   readonly FloatImage live;
   readonly double[] sums, oddSums;
-  readonly int[] taken;
 
   public SamplePassSynthesizer(SupersamplingImageSynthesizer inner, FloatImage live, NoiseImage noise)
   {
@@ -29,7 +28,6 @@ internal sealed class SamplePassSynthesizer : ImageSynthesizer
     Adaptive = inner.Adaptive;
     sums = new double[live.Data.Length];
     oddSums = new double[live.Data.Length];
-    taken = new int[live.Width * live.Height];
   }
 
   /// <summary>First sample of this pass.</summary>
@@ -64,7 +62,6 @@ internal sealed class SamplePassSynthesizer : ImageSynthesizer
     int p = y * Width + x, bands = color.Length;
     Span<double> sum = sums.AsSpan(p * bands, bands), odd = oddSums.AsSpan(p * bands, bands);
     inner.AccumulateSamples(x, y, First, End, color, sum, odd);
-    taken[p] = End;
     int n = inner.SuperXY;
     if (End == n * n)
       inner.FinishPixel(sum, color);   // the renderer's own last step, so the final pixel is its value exactly
@@ -75,12 +72,4 @@ internal sealed class SamplePassSynthesizer : ImageSynthesizer
     live.SetPixel(x, y, color);
   }
 
-  /// <summary>Fewest samples any pixel has so far.</summary>
-  public int SamplesTaken()
-  {
-    int least = int.MaxValue;
-    foreach (int t in taken)
-      least = Math.Min(least, t);
-    return least == int.MaxValue ? 0 : least;
-  }
 }
