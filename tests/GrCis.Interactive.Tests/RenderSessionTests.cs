@@ -258,4 +258,24 @@ public class RenderSessionTests
       }
     Assert.InRange(changed, 1, s.Width * s.Height - 1);
   }
+
+  [Fact]
+  public async Task Progressive_soft_shadows_of_an_area_light_equal_the_cli_image()
+  {
+    // The area light stratifies each pixel's points by rank: the passes must give the one-pass strata.
+    static IRayScene Scene()
+    {
+      IRayScene scene = TestScenes.SphereOnPlane();
+      scene.Sources = new System.Collections.Generic.LinkedList<ILightSource>(new ILightSource[]
+      {
+        new AmbientLightSource(0.5),
+        new RectangleLightSource(new OpenTK.Mathematics.Vector3d(-3, 4, -3), new OpenTK.Mathematics.Vector3d(2, 0, 0), new OpenTK.Mathematics.Vector3d(0, 0, 2), 1.0),
+      });
+      return scene;
+    }
+    RenderJob job = RenderJob.Create(Scene(), Sixteen, new global::Rendering.Distributed.DistributedRayTracing());
+    FloatImage reference = TileRenderer.Render(job.Scene, job.ImageFunction, job.Renderer, Sixteen.ToRenderOptions());
+    using var session = new RenderSession(RenderJob.Create(Scene(), Sixteen, new global::Rendering.Distributed.DistributedRayTracing())) { Progressive = true };
+    Assert.Equal(reference.Data, (await session.Start()).Image.Data);
+  }
 }

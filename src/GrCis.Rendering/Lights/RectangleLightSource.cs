@@ -7,8 +7,10 @@ namespace Rendering;
 /// <summary>
 /// A parallelogram area light (corner <see cref="PointLightSource.position"/>, edges
 /// <see cref="width"/> and <see cref="height"/>). Each sample of a pixel picks a point of the light,
-/// stratified by the pixel's sample rank (<see cref="MT.rank"/> of <see cref="MT.total"/>) through
-/// two independent random permutations of the strata.
+/// stratified by the pixel's sample rank (<see cref="MT.rank"/> of <see cref="MT.total"/>): one per stratum of
+/// the light in 2D and in each edge's direction (<see cref="Strata"/>), a pure function of the pixel, the rank and
+/// the light, so the samples of a pixel may be taken in any order or in several passes. With one sample per pixel
+/// the point is uniform from <see cref="MT.rnd"/>, as in GrCis.
 /// </summary>
 [Serializable]
 public class RectangleLightSource : PointLightSource
@@ -19,15 +21,8 @@ public class RectangleLightSource : PointLightSource
   /// <summary>Attenuation 1 / (d0 + d1·r + d2·r²); null = none.</summary>
   public double[]? Dim = { 0.5, 1.0, 0.1 };
 
-  // Stratification state per light and thread: the strata belong to the pixel being sampled.
-  [NonSerialized] System.Threading.ThreadLocal<SamplingState>? states;
-
-  sealed class SamplingState
-  {
-    public int total = -1, rank = -1, pixelX = -1, pixelY = -1;
-    public RandomJames.Permutation? permU, permV;
-    public double u, v;
-  }
+  // Per-thread result buffer for attenuated intensities (no array per shadow ray).
+  [NonSerialized] System.Threading.ThreadLocal<double[]>? dimmed;
 
   public RectangleLightSource(Vector3d pos, Vector3d wid, Vector3d hei, double intens) : base(pos, intens)
   {
@@ -44,43 +39,25 @@ public class RectangleLightSource : PointLightSource
   /// <summary>Position of the light point used by the current sample, as (u, v) in [0,1)².</summary>
   void SampleUV(out double u, out double v)
   {
-    RandomJames rnd = MT.rnd;
-    int total = MT.total;
-    if (total <= 1)
+    if (MT.total <= 1)
     {
+      RandomJames rnd = MT.rnd;
       u = rnd.UniformNumber();
       v = rnd.UniformNumber();
       return;
     }
-
-    // Created once for all threads: two threads racing to create it would lose one's strata half-way through a pixel.
-    SamplingState s = System.Threading.LazyInitializer.EnsureInitialized(ref states, () => new System.Threading.ThreadLocal<SamplingState>(() => new SamplingState())).Value!;
-    bool samePixel = s.pixelX == MT.x && s.pixelY == MT.y && s.total == total;
-    if (samePixel && s.rank == MT.rank)
-    {
-      u = s.u;
-      v = s.v;
-      return;
-    }
-
-    int uCell, vCell;
-    if (!samePixel || MT.rank < s.rank)
-    {
-      s.pixelX = MT.x;
-      s.pixelY = MT.y;
-      s.total = total;
-      uCell = rnd.PermutationFirst(total, ref s.permU);
-      vCell = rnd.PermutationFirst(total, ref s.permV);
-    }
-    else
-    {
-      uCell = Math.Max(rnd.PermutationNext(ref s.permU), 0);
-      vCell = Math.Max(rnd.PermutationNext(ref s.permV), 0);
-    }
-    s.rank = MT.rank;
-    s.u = u = (uCell + rnd.UniformNumber()) / total;
-    s.v = v = (vCell + rnd.UniformNumber()) / total;
+    Strata.Sample2D(Dimension(), out u, out v);
   }
+
+  /// <summary>The stratification dimension of this light: from its corner and edges, the same in every clone and run.</summary>
+  uint Dimension()
+  {
+    long h = Mix(Mix(Mix(17, position ?? Vector3d.Zero), width), height);
+    return Strata.Dimension(7, (int)(h ^ (h >> 32)));
+  }
+
+  static long Mix(long h, in Vector3d v) =>
+    ((h * 31 ^ BitConverter.DoubleToInt64Bits(v.X)) * 31 ^ BitConverter.DoubleToInt64Bits(v.Y)) * 31 ^ BitConverter.DoubleToInt64Bits(v.Z);
 
   public override double[]? GetIntensity(Intersection intersection, out Vector3d dir)
   {
@@ -94,7 +71,11 @@ public class RectangleLightSource : PointLightSource
 
     double dist = dir.Length;
     double factor = 1.0 / (Dim[0] + dist * (Dim[1] + dist * Dim[2]));
-    double[] result = new double[intensity.Length];
+    System.Threading.ThreadLocal<double[]> buffers = System.Threading.LazyInitializer.EnsureInitialized(ref dimmed,
+      () => new System.Threading.ThreadLocal<double[]>(() => new double[intensity.Length]));
+    double[] result = buffers.Value!;
+    if (result.Length != intensity.Length)
+      buffers.Value = result = new double[intensity.Length];
     for (int i = 0; i < result.Length; i++)
       result[i] = intensity[i] * factor;
     return result;
