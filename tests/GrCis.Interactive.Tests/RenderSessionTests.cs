@@ -278,4 +278,18 @@ public class RenderSessionTests
     using var session = new RenderSession(RenderJob.Create(Scene(), Sixteen, new global::Rendering.Distributed.DistributedRayTracing())) { Progressive = true };
     Assert.Equal(reference.Data, (await session.Start()).Image.Data);
   }
+
+  [Fact]
+  public async Task A_renderer_of_its_own_is_not_split_into_passes()
+  {
+    // Adaptive supersampling derives from the n×n grid but takes its samples its own way: tiles, its image.
+    static RenderJob Job() => RenderJob.Create(TestScenes.SphereOnPlane(), Sixteen, renderer: new AdaptiveSupersamplingJR { Supersampling = 16 });
+    RenderJob job = Job();
+    FloatImage reference = TileRenderer.Render(job.Scene, job.ImageFunction, job.Renderer, Sixteen.ToRenderOptions());
+    using var session = new RenderSession(Job()) { Progressive = true };
+    var passes = new List<PreviewPass>();
+    session.PreviewReady += (_, e) => { lock (passes) passes.Add(e.Pass); };
+    Assert.Equal(reference.Data, (await session.Start()).Image.Data);
+    Assert.DoesNotContain(PreviewPass.Samples, passes);
+  }
 }

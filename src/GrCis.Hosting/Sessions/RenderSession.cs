@@ -41,7 +41,7 @@ public sealed class RenderSession : IDisposable
   /// <summary>
   /// Render in passes over the whole image, each adding samples to every pixel (1, then n, 2n, … of n×n), like
   /// Cycles' viewport, instead of tile by tile; the final image is the same, bit for bit. Used when the job's
-  /// renderer is n×n supersampling with n ≥ 2; otherwise the render goes by tiles.
+  /// renderer is the library's n×n supersampling with n ≥ 2 (not a subclass); otherwise the render goes by tiles.
   /// </summary>
   public bool Progressive { get; set; }
 
@@ -120,7 +120,8 @@ public sealed class RenderSession : IDisposable
     PreviewTicker? ticker = null;
     try
     {
-      if (Progressive && inner is SupersamplingImageSynthesizer { SuperXY: > 1 } grid)
+      // Only the library's own n×n grid takes its samples in passes; a subclass (adaptive, a student's) renders its own way.
+      if (Progressive && inner is SupersamplingImageSynthesizer { SuperXY: > 1 } grid && inner.GetType() == typeof(SupersamplingImageSynthesizer))
         image = RenderPasses(job, grid, options, context, clock, token);
       else
         image = RenderTiles(job, options, context, clock, token, out ticker);
