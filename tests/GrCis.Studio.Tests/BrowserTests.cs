@@ -14,7 +14,8 @@ namespace GrCis.Studio.Tests;
 /// <summary>
 /// The studio in a real browser (Debian's chromium and chromium-driver, headless): render Five balls and
 /// compare the shown pixels with <c>grcis render</c>'s PNG, click a pixel for its ray tree and 3D view,
-/// save a script with a typo and see the error at its line, fix it and see a new image. Screenshots of
+/// save a script with a typo and see the error at its line, fix it and see a new image; path-trace it in passes
+/// and look at its noise. Screenshots of
 /// each step are written beside the test assembly (<c>screenshots/</c>).
 /// </summary>
 public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFixture>
@@ -121,5 +122,17 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
                          (string)Js(browser, "return document.getElementById('messages').textContent;")! == "", "the fixed script's image");
     Shot(browser, "studio-editor-fixed.png");
     File.WriteAllText(Path.Combine(studio.ScriptsFolder, "Balls.cs"), "Rendering.Scenes.FiveBalls(scene);\n");
+    browser.FindElement(By.Id("closeEditor")).Click();
+
+    // 4. Path tracing, shown in passes of samples, then where its noise is.
+    Js(browser, "document.getElementById('algorithm').value = 'path'; document.getElementById('spp').value = 16;");
+    RenderIn(browser, "Five balls", 320, 240);
+    Assert.Contains("noise", browser.FindElement(By.Id("stats")).Text);
+    Js(browser, "const k = document.getElementById('view-kind'); k.value = 'Noise'; k.dispatchEvent(new Event('change'));");
+    Until(browser, () => (string?)Js(browser, "return document.getElementById('viewPng').getAttribute('href');") == "api/views/Noise.png" &&
+                         (string)Js(browser, "return document.getElementById('messages').textContent;")! == "", "the noise view");
+    System.Threading.Thread.Sleep(300);
+    Shot(browser, "studio-noise.png");
+    Js(browser, "document.getElementById('algorithm').value = ''; document.getElementById('spp').value = 1;");
   }
 }
