@@ -10,7 +10,7 @@ using GrCis.Cli.ProgressViews;
 using GrCis.Cli.SceneSources;
 using GrCis.Scripting;
 using Rendering;
-using Rendering.Imaging;
+using Rendering.Execution;
 using Rendering.Parts;
 using GrCis.Hosting;
 
@@ -116,9 +116,9 @@ public sealed class RenderCommand
       target.Save(result.Image, settings.Gamma);
     if (noiseTarget != null)
     {
-      if (result.Noise?.Rmse() == null)
+      if (result.Statistics.Noise == null)
         env.Error.WriteLine($"grcis: warning: no noise estimate at {result.Statistics.SamplesPerPixel} spp (it needs 2x2 supersampling or more); '{noiseTarget.FullPath}' holds NaN");
-      noiseTarget.Save(result.Noise?.StandardError() ?? NoNoise(result.Image), 1.0);
+      noiseTarget.Save((result.Noise ?? new NoiseImage(result.Image.Width, result.Image.Height)).StandardError(), 1.0);
     }
     env.Out.WriteLine(Summary(target, settings, result) + (part is ShardSpec sp ? $", part {sp} (merge with 'grcis merge')" : ""));
     return ExitCodes.Success;
@@ -155,13 +155,6 @@ public sealed class RenderCommand
     if (string.Equals(target.FullPath, image.FullPath, StringComparison.Ordinal))
       throw new UsageException($"--noise '{n}' is the image's own output file");
     return target;
-  }
-
-  static FloatImage NoNoise(FloatImage image)
-  {
-    var none = new FloatImage(image.Width, image.Height, 1);
-    Array.Fill(none.Data, float.NaN);
-    return none;
   }
 
   IEnumerable<string> Modules(ParseResult parse, CliEnvironment env) =>

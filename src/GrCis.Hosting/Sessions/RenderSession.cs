@@ -45,6 +45,9 @@ public sealed class RenderSession : IDisposable
   /// </summary>
   public bool Progressive { get; set; }
 
+  // The preview interval in force: a non-positive one means the default.
+  TimeSpan Cadence => PreviewInterval > TimeSpan.Zero ? PreviewInterval : TimeSpan.FromMilliseconds(500);
+
   /// <summary>Block size of the coarse first pass; 1 or less skips it.</summary>
   public int CoarseBlock { get; set; } = 8;
 
@@ -160,8 +163,7 @@ public sealed class RenderSession : IDisposable
         Publish(PreviewPass.Coarse, live, force: false);
     }
 
-    TimeSpan interval = PreviewInterval > TimeSpan.Zero ? PreviewInterval : TimeSpan.FromMilliseconds(500);
-    ticker = new PreviewTicker(interval, () => Publish(PreviewPass.Tiles, live, force: false));
+    ticker = new PreviewTicker(Cadence, () => Publish(PreviewPass.Tiles, live, force: false));
 
     var synth = new PreviewSynthesizer(job.Renderer, live!, coarse, CoarseBlock);
     return TileRenderer.Render(job.Scene, job.ImageFunction, synth, options, p =>
@@ -186,8 +188,7 @@ public sealed class RenderSession : IDisposable
     int[] ends = SamplePassSynthesizer.PassEnds(grid.SuperXY);
     int total = grid.SuperXY * grid.SuperXY, tilesTotal = TileCount();
     FloatImage? image = null;
-    TimeSpan interval = PreviewInterval > TimeSpan.Zero ? PreviewInterval : TimeSpan.FromMilliseconds(500);
-    using var ticker = new PreviewTicker(interval, () => Publish(PreviewPass.Samples, live, force: false));
+    using var ticker = new PreviewTicker(Cadence, () => Publish(PreviewPass.Samples, live, force: false));
     for (int k = 0; k < ends.Length && !token.IsCancellationRequested; k++)
     {
       synth.First = k == 0 ? 0 : ends[k - 1];

@@ -101,7 +101,7 @@ public sealed class ExtraViews
       MapKind.NormalRelative or MapKind.NormalAbsolute => maps.Hits[i] > 0 ? maps.AngleSum[i] / maps.Hits[i] : double.NaN,
       MapKind.PrimaryRays => maps.Primary[i],
       MapKind.AllRays => maps.All[i],
-      MapKind.Noise => noise != null ? Math.Sqrt(noise.Variance.Data[i]) : double.NaN,
+      MapKind.Noise => noise?.StandardErrorAt(x, y) ?? double.NaN,
       _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "Unknown map."),
     };
   }

@@ -65,12 +65,16 @@ public sealed class NoiseImage
     return count > 0 ? Math.Sqrt(total / count) : null;
   }
 
+  /// <summary>The estimated error of pixel (x, y): the standard deviation of its value; NaN = none.</summary>
+  public double StandardErrorAt(int x, int y) => Math.Sqrt(variance[y * Width + x]);
+
   /// <summary>The estimated error of each pixel (standard deviation of its value; NaN = none), as a one-band image.</summary>
   public FloatImage StandardError()
   {
     var image = new FloatImage(Width, Height, 1);
-    for (int k = 0; k < variance.Length; k++)
-      image.Data[k] = MathF.Sqrt(variance[k]);
+    for (int y = 0; y < Height; y++)
+      for (int x = 0; x < Width; x++)
+        image.Data[y * Width + x] = (float)StandardErrorAt(x, y);
     return image;
   }
 }

@@ -21,9 +21,6 @@ public class RectangleLightSource : PointLightSource
   /// <summary>Attenuation 1 / (d0 + d1·r + d2·r²); null = none.</summary>
   public double[]? Dim = { 0.5, 1.0, 0.1 };
 
-  // Per-thread result buffer for attenuated intensities (no array per shadow ray).
-  [NonSerialized] System.Threading.ThreadLocal<double[]>? dimmed;
-
   public RectangleLightSource(Vector3d pos, Vector3d wid, Vector3d hei, double intens) : base(pos, intens)
   {
     width = wid;
@@ -66,18 +63,6 @@ public class RectangleLightSource : PointLightSource
     dir = sample - intersection.CoordWorld;
     if (Vector3d.Dot(dir, intersection.Normal) <= 0.0)
       return null;
-    if (Dim == null || Dim.Length < 3)
-      return intensity;
-
-    double dist = dir.Length;
-    double factor = 1.0 / (Dim[0] + dist * (Dim[1] + dist * Dim[2]));
-    System.Threading.ThreadLocal<double[]> buffers = System.Threading.LazyInitializer.EnsureInitialized(ref dimmed,
-      () => new System.Threading.ThreadLocal<double[]>(() => new double[intensity.Length]));
-    double[] result = buffers.Value!;
-    if (result.Length != intensity.Length)
-      buffers.Value = result = new double[intensity.Length];
-    for (int i = 0; i < result.Length; i++)
-      result[i] = intensity[i] * factor;
-    return result;
+    return Attenuated(Dim, dir.Length);
   }
 }

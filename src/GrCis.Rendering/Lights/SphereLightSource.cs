@@ -17,9 +17,6 @@ public class SphereLightSource : PointLightSource
   /// <summary>Attenuation 1 / (d0 + d1·r + d2·r²) as for <see cref="RectangleLightSource.Dim"/>; null = none.</summary>
   public double[]? Dim;
 
-  // Per-thread result buffer for attenuated intensities (no array per shadow ray).
-  [NonSerialized] System.Threading.ThreadLocal<double[]>? dimmed;
-
   public SphereLightSource(Vector3d pos, double rad, double intens) : base(pos, intens) => radius = rad;
 
   public SphereLightSource(Vector3d pos, double rad, double[] intens) : base(pos, intens) => radius = rad;
@@ -56,17 +53,6 @@ public class SphereLightSource : PointLightSource
     }
     if (Vector3d.Dot(dir, intersection.Normal) <= 0.0)
       return null;
-    if (Dim == null || Dim.Length < 3)
-      return intensity;
-
-    double d = dir.Length;
-    double factor = 1.0 / (Dim[0] + d * (Dim[1] + d * Dim[2]));
-    dimmed ??= new System.Threading.ThreadLocal<double[]>(() => new double[intensity.Length]);
-    double[] result = dimmed.Value!;
-    if (result.Length != intensity.Length)
-      dimmed.Value = result = new double[intensity.Length];
-    for (int i = 0; i < result.Length; i++)
-      result[i] = intensity[i] * factor;
-    return result;
+    return Attenuated(Dim, dir.Length);
   }
 }

@@ -80,13 +80,13 @@ public class SupersamplingImageSynthesizer : ImageSynthesizer
     int d = first / n, k = first - d * n;
     for (int s = first; s < end; s++)
     {
-      if (k == 0 || s == 1)
+      if (s > 0)
       {
-        if (s > 0)
+        if (IsStreamStart(s, n))
           MT.StartStream(s);
+        else
+          MT.StartSample(s);
       }
-      else
-        MT.StartSample(s);
       int i = k + d;
       if (i >= n)
         i -= n;
