@@ -30,6 +30,14 @@ internal struct PreparedMember
   public Vector3d CullCenter;
   public double CullRadius2;
 
+  /// <summary>
+  /// For a bounded plane (an open member): a padded world box around the rectangle or triangle. Its one record,
+  /// at any t, lies in it, so a line that misses the box has no record and the member is skipped without its
+  /// transform chain (exact: conservative).
+  /// </summary>
+  public Aabb LineBox;
+  public bool HasLineBox;
+
   /// <summary>The solid's local NO_SHADOW attribute was set at prepare time.</summary>
   public bool NoShadow;
 

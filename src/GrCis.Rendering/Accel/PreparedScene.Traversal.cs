@@ -12,17 +12,25 @@ public sealed partial class PreparedScene
   /// <summary>Closest first-valid record over all members; false when the fast rule does not apply.</summary>
   bool Closest(ref Query q, in Vector3d p0, in Vector3d p1)
   {
-    for (int k = 0; k < always.Length; k++)
-      if (!TestMember(always[k], ref q, p0, p1))
-        return false;
-    if (bvh == null)
-      return true;
-
     // Zero direction components become tiny ones: no NaN from 0 · ∞ in the slab test, and the
     // padded boxes absorb the difference.
     double dx = p1.X == 0.0 ? 1e-300 : p1.X, dy = p1.Y == 0.0 ? 1e-300 : p1.Y, dz = p1.Z == 0.0 ? 1e-300 : p1.Z;
     double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
     double ox = p0.X, oy = p0.Y, oz = p0.Z;
+
+    // The whole-line test of a bounded plane needs every slab: a zero component would turn one into a half-line.
+    bool lineCull = p1.X != 0.0 && p1.Y != 0.0 && p1.Z != 0.0;
+    for (int k = 0; k < always.Length; k++)
+    {
+      int item = always[k];
+      if (lineCull && members[item].HasLineBox && LineMisses(members[item].LineBox, ox, oy, oz, ix, iy, iz))
+        continue;
+      if (!TestMember(item, ref q, p0, p1))
+        return false;
+    }
+    if (bvh == null)
+      return true;
+
     BvhNode[] nodes = bvh.Nodes;
     BvhChildBoxes[] children = bvh.Children;
     int[] items = bvh.Items;
@@ -89,6 +97,19 @@ public sealed partial class PreparedScene
       }
       ni = stack[sp];
     }
+  }
+
+  /// <summary>True when the whole line (every t, negative ones too) misses the box.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static bool LineMisses(in Aabb box, double ox, double oy, double oz, double ix, double iy, double iz)
+  {
+    double ax = (box.Min.X - ox) * ix, bx = (box.Max.X - ox) * ix;
+    double ay = (box.Min.Y - oy) * iy, by = (box.Max.Y - oy) * iy;
+    double az = (box.Min.Z - oz) * iz, bz = (box.Max.Z - oz) * iz;
+    double near = Math.Max(Math.Max(Math.Min(ax, bx), Math.Min(ay, by)), Math.Min(az, bz));
+    double far = Math.Min(Math.Min(Math.Max(ax, bx), Math.Max(ay, by)), Math.Max(az, bz));
+    // Each t carries a relative rounding error of a few ulps: only a clear gap is a miss.
+    return near - far > 1.0e-12 * (Math.Abs(near) + Math.Abs(far));
   }
 
   /// <summary>True when the line misses the member's (enlarged) world bounding sphere: it has no records.</summary>

@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using GrCis.Testing;
 using OpenTK.Mathematics;
@@ -79,6 +80,58 @@ public class PreparedSceneTests
     Assert.False(ps.Occluded(p0, new Vector3d(0, 0, 6)));  // only the NO_SHADOW sphere before the light
     Assert.True(ps.Occluded(p0, new Vector3d(0, 0, 14)));  // the real sphere at z 9..11 blocks a light at z 11
     Assert.False(ps.Occluded(p0, new Vector3d(0, 0, 11.5))); // light before the real sphere
+  }
+
+  [Fact]
+  public void Bounded_planes_skipped_by_their_line_box_answer_as_the_lists_do()
+  {
+    // Rectangles and triangles (open members, tested for every ray unless the whole line misses their box),
+    // placed by random rotations and scales, beside a sphere; rays from anywhere, also from behind the planes
+    // (where the union's inside state comes from records at negative t) and aimed at the planes' corners.
+    var r = new Random(5);
+    var root = new CSGInnerNode(SetOperation.Union);
+    var corners = new List<Vector3d>();
+    for (int k = 0; k < 12; k++)
+    {
+      Plane plane = k % 3 == 2 ? new Plane(0.4 + r.NextDouble(), 0.4 + r.NextDouble()) : new Plane(-r.NextDouble(), r.NextDouble(), -r.NextDouble(), r.NextDouble());
+      var axis = new Vector3d(r.NextDouble() - 0.5, r.NextDouble() - 0.5, r.NextDouble() - 0.5);
+      Matrix4d toParent = Matrix4d.Scale(0.5 + r.NextDouble()) * Matrix4d.Rotate(axis, r.NextDouble() * 6.0) *
+                          Matrix4d.CreateTranslation(4.0 * r.NextDouble() - 2.0, 4.0 * r.NextDouble() - 2.0, 4.0 * r.NextDouble() - 2.0);
+      root.InsertChild(plane, toParent);
+      double x1 = plane.Triangle ? 1.0 / plane.XMax : plane.XMax, y1 = plane.Triangle ? 1.0 / plane.YMax : plane.YMax;
+      corners.Add(Vector3d.TransformPosition(new Vector3d(plane.XMin, plane.YMin, 0.0), toParent));
+      corners.Add(Vector3d.TransformPosition(new Vector3d(x1, plane.YMin, 0.0), toParent));
+      corners.Add(Vector3d.TransformPosition(new Vector3d(plane.XMin, y1, 0.0), toParent));
+    }
+    root.InsertChild(new Sphere(), Matrix4d.Scale(0.7));
+    PreparedScene ps = PreparedScene.Prepare(root);
+    Assert.Equal(12, ps.UnboundedCount);
+    var lists = new SceneLists(root);
+
+    int hits = 0, blocked = 0;
+    for (int n = 0; n < 20000; n++)
+    {
+      var p0 = new Vector3d(8.0 * r.NextDouble() - 4.0, 8.0 * r.NextDouble() - 4.0, 8.0 * r.NextDouble() - 4.0);
+      Vector3d p1 = n % 4 == 0
+        ? corners[r.Next(corners.Count)] - p0
+        : new Vector3d(r.NextDouble() - 0.5, r.NextDouble() - 0.5, r.NextDouble() - 0.5);
+      if (n % 7 == 0)
+        p1.Y = 0.0;   // a zero component: the line test steps aside
+      Intersection? a = lists.FirstHit(p0, p1);
+      Intersection? b = ps.FirstHit(p0, p1);
+      Assert.Equal(a == null, b == null);
+      if (a != null && b != null)
+      {
+        hits++;
+        Assert.Same(a.Solid, b.Solid);
+        Assert.Equal(a.T, b.T);
+      }
+      bool blocks = lists.AnyHit(p0, p1);
+      Assert.Equal(blocks, ps.AnyHit(p0, p1));
+      if (blocks)
+        blocked++;
+    }
+    Assert.True(hits > 2000 && blocked > 1000, $"{hits} hits, {blocked} blocked");
   }
 
   [Fact]
