@@ -10,7 +10,7 @@
 # in OUTDIR. Settings through the environment (defaults in brackets):
 #   THREADS [2]  SPP ["16 64 256"]  REF_SPP [2048]  VARIANTS ["diffuse spheres"]
 #   OUTDIR [bench/results/cornell-work]  CORNELL_DIR [../shared/bench/cornell beside the repository]
-#   OURS_EXTRA_SPP [1024] (one more of ours, for its converged mean)
+#   OURS_EXTRA_SPP [1024] (one more of ours, for its converged mean; empty: none)
 #   REPEAT [1] (renders per renderer and sample count, alternating; render_s is their median, all in times)
 set -euo pipefail
 
@@ -18,7 +18,7 @@ THREADS=${THREADS:-2}
 SPP=${SPP:-"16 64 256"}
 REF_SPP=${REF_SPP:-2048}
 VARIANTS=${VARIANTS:-"diffuse spheres"}
-OURS_EXTRA_SPP=${OURS_EXTRA_SPP:-1024}
+OURS_EXTRA_SPP=${OURS_EXTRA_SPP-1024}
 REPEAT=${REPEAT:-1}
 here=$(cd "$(dirname "$0")" && pwd)
 repo=$(dirname "$here")

@@ -207,7 +207,9 @@ public class Intersection : IComparable<Intersection>
       double[]? own = spareColor;
       if (own == null || own.Length != color.Length)
         spareColor = own = new double[color.Length];
-      Array.Copy(color, own, color.Length);
+      // A loop: Array.Copy's call and GC poll cost more than three doubles.
+      for (int k = 0; k < own.Length; k++)
+        own[k] = color[k];
       SurfaceColor = own;
     }
   }
