@@ -33,7 +33,8 @@ fi
 command -v blender >/dev/null 2>&1 || { echo "cornell-compare: needs Blender (Debian package blender)" >&2; exit 2; }
 mkdir -p "$OUTDIR"
 
-dotnet build "$repo/src/GrCis.Cli" -c Release -v q -nologo >/dev/null
+# MSBuild reads environment variables as properties: OUTDIR would become its OutDir.
+env -u OUTDIR dotnet build "$repo/src/GrCis.Cli" -c Release -v q -nologo >/dev/null
 grcis=(dotnet "$repo/src/GrCis.Cli/bin/Release/net10.0/grcis.dll")
 
 cycles() {  # variant spp seed out.pfm -> prints render seconds

@@ -50,6 +50,23 @@ public sealed class ExtraViewsTests : IDisposable
   }
 
   [Fact]
+  public void Path_tracing_fills_the_views_like_ray_tracing_and_counts_its_rays()
+  {
+    ExtraViews whitted = ExtraViews.Compute(RenderJob.Create(TestScenes.SphereOnPlane(), Odd));
+    RenderJob job = RenderJob.Create(TestScenes.SphereOnPlane(), Odd with { Algorithm = RenderAlgorithm.Path });
+    ExtraViews path = ExtraViews.Compute(job);
+    foreach ((int x, int y) in new[] { (16, 16), (3, 30), (20, 25) })
+    {
+      // The camera rays are the same: same first hits.
+      Assert.Equal(whitted.DepthAt(x, y), path.DepthAt(x, y));
+      Assert.Equal(whitted.NormalAt(x, y), path.NormalAt(x, y));
+      Assert.Equal(1.0, path.ValueAt(MapKind.PrimaryRays, x, y));
+      Assert.Equal(PixelProbe.Probe(job, x, y).AllRays.Count(), path.ValueAt(MapKind.AllRays, x, y));
+    }
+    Assert.True(path.ValueAt(MapKind.AllRays, 16, 16) >= 3.0);   // camera ray, shadow ray, a bounce at least
+  }
+
+  [Fact]
   public void Background_pixels_have_infinite_depth_and_no_normal()
   {
     ExtraViews views = ExtraViews.Compute(RenderJob.Create(TestScenes.SphereOnPlane(), Odd));

@@ -17,16 +17,13 @@ public class PixelProbeTests
     Assert.True((expected - actual!.Value).Length < tol, $"expected {expected}, got {actual}");
   }
 
-  [Fact]
-  public void Centre_of_mirror_sphere_has_primary_shadow_and_reflected_rays()
+  /// <summary>The camera ray of the centre pixel hits the sphere's front, whose shadow ray reaches the light unblocked.</summary>
+  static RayNode CentreHitWithItsShadowRay(ProbeResult probe)
   {
-    RenderJob job = RenderJob.Create(TestScenes.SphereOnPlane(), Odd);
-    ProbeResult probe = PixelProbe.Probe(job, 50, 50);
-
     RayNode root = Assert.IsType<RayNode>(probe.Rays);
     Assert.Equal(RayKind.Primary, root.Kind);
     Near(new Vector3d(0, 0, -5), root.Origin);
-    Near(Vector3d.UnitZ, root.Direction);
+    Near(Vector3d.UnitZ, root.Direction.Normalized());
     Near(new Vector3d(0, 0, -1), root.Hit);
     Near(new Vector3d(0, 0, -1), root.Normal);
 
@@ -34,6 +31,16 @@ public class PixelProbeTests
     Assert.False(shadow.Blocked);
     Near(root.Hit!.Value, shadow.Origin);
     Near(new Vector3d(-5, 5, -5) - root.Hit.Value, shadow.Direction);
+    return root;
+  }
+
+  [Fact]
+  public void Centre_of_mirror_sphere_has_primary_shadow_and_reflected_rays()
+  {
+    RenderJob job = RenderJob.Create(TestScenes.SphereOnPlane(), Odd);
+    ProbeResult probe = PixelProbe.Probe(job, 50, 50);
+
+    RayNode root = CentreHitWithItsShadowRay(probe);
 
     RayNode reflected = Assert.Single(root.Children, c => c.Kind == RayKind.Reflected);
     Assert.Equal(1, reflected.Depth);
@@ -103,5 +110,57 @@ public class PixelProbeTests
   {
     RenderJob job = RenderJob.Create(TestScenes.PlaneAt(5), Odd);
     Assert.Throws<ArgumentOutOfRangeException>(() => PixelProbe.Probe(job, 101, 0));
+  }
+
+  /// <summary>The path a probe shows: bounce after bounce, each starting where the one before hit.</summary>
+  static System.Collections.Generic.List<RayNode> Chain(RayNode root)
+  {
+    var chain = new System.Collections.Generic.List<RayNode> { root };
+    while (chain[^1].Children.SingleOrDefault(c => c.Kind != RayKind.Shadow) is RayNode next)
+      chain.Add(next);
+    return chain;
+  }
+
+  [Fact]
+  public void Path_tracing_probe_shows_the_path_as_a_chain_of_bounces_with_their_shadow_rays()
+  {
+    RenderJob job = RenderJob.Create(TestScenes.SphereOnPlane(), Odd with { Algorithm = RenderAlgorithm.Path });
+    ProbeResult probe = PixelProbe.Probe(job, 50, 50);
+
+    // The point light is sampled from the hit (next-event estimation), as Whitted shades it.
+    RayNode root = CentreHitWithItsShadowRay(probe);
+
+    var chain = Chain(root);
+    Assert.True(chain.Count >= 2, "the path has no bounce");
+    for (int k = 1; k < chain.Count; k++)
+    {
+      RayNode before = chain[k - 1], ray = chain[k];
+      Assert.Equal(RayKind.Reflected, ray.Kind);
+      Assert.Equal(before.Depth + 1, ray.Depth);
+      Near(before.Hit!.Value, ray.Origin);
+      // Reflected: back to the side the ray came from.
+      Assert.True(Vector3d.Dot(ray.Direction, before.Normal!.Value) * Vector3d.Dot(before.Direction, before.Normal.Value) < 0.0);
+    }
+  }
+
+  [Fact]
+  public void Path_tracing_probe_tells_refracted_bounces_from_reflected_ones()
+  {
+    RenderJob job = RenderJob.Create(TestScenes.SphereOnPlane(glass: true), Odd with { Algorithm = RenderAlgorithm.Path });
+    int refracted = 0;
+    for (int x = 44; x <= 56; x++)
+    {
+      var chain = Chain(PixelProbe.Probe(job, x, 50).Rays!);
+      for (int k = 1; k < chain.Count; k++)
+      {
+        RayNode before = chain[k - 1], ray = chain[k];
+        double side = Vector3d.Dot(ray.Direction, before.Normal!.Value) * Vector3d.Dot(before.Direction, before.Normal.Value);
+        // Refracted: on through the surface; reflected: back.
+        Assert.Equal(ray.Kind == RayKind.Refracted, side > 0.0);
+        if (ray.Kind == RayKind.Refracted)
+          refracted++;
+      }
+    }
+    Assert.True(refracted > 0, "no refracted bounce in 13 glass-sphere paths");
   }
 }

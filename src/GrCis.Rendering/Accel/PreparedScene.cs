@@ -24,7 +24,8 @@ namespace Rendering.Accel;
 /// irregular — the query is answered by the faithful path on the whole scene. This rule is exact.</para>
 /// <para><b>Pruning.</b> A closed member (records only inside its box, list starting outside) whose box
 /// lies behind the origin or beyond the best hit so far can neither win nor be inside at the origin, so
-/// the BVH may skip it. Open members (planes, script solids) are tested for every ray.</para>
+/// the BVH may skip it. Open members (planes, script solids) are tested for every ray, except a bounded plane
+/// whose padded world box the ray's whole line misses: it has no record at any t.</para>
 /// <para>The ray is taken into each member's space through the same FromParent matrices, in the same
 /// order, as <see cref="CSGInnerNode.Intersect"/> does, so T and local coordinates are bit-identical.
 /// Shadow rays use the same query bounded by the light (<see cref="Intersection.Far"/>), and fall back to
@@ -56,7 +57,7 @@ public sealed partial class PreparedScene : ISceneQuery
   /// <summary>Members in the BVH.</summary>
   public int BoundedCount { get; }
 
-  /// <summary>Members tested for every ray (open or unknown solids).</summary>
+  /// <summary>Members tested for every ray (open or unknown solids; bounded planes only where the ray's line meets their box).</summary>
   public int UnboundedCount => always.Length;
 
   /// <summary>Members answered through the LinkedList API.</summary>

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using MathSupport;
 using OpenTK.Mathematics;
 using Rendering.Accel;
+using Rendering.Observation;
 
 namespace Rendering;
 
@@ -82,9 +83,28 @@ public class PathTracing : RayTracing
     double lastPdf = 0.0;
     long hash = 1L;
 
+    // An observer (the demo's probe and extra views) sees the path as a chain: each bounce nests in the one before.
+    RayObserver? observer = scratch.Observer;
+    RayKind kind = RayKind.Primary;
+    int observed = 0;
+    if (observer != null)
+    {
+      kind = depth == 0 ? RayKind.Primary : scratch.NextKind;
+      scratch.NextKind = RayKind.Secondary;
+    }
+
     for (int bounce = 0; ; bounce++)
     {
-      Intersection? i = FirstHitAt(scratch, depth, origin, direction);
+      Intersection? i;
+      if (observer == null)
+        i = FirstHitAt(scratch, depth, origin, direction);
+      else
+      {
+        // Each bounce fills a pooled hit of its own depth, so every hit is still valid when the chain ends.
+        observer.BeginRay(kind, depth + bounce, origin, direction);
+        i = FirstHitAt(scratch, depth + bounce, origin, direction);
+        Observed(observed++) = (kind, depth + bounce, origin, direction, i);
+      }
       if (i == null)
       {
         radiance += throughput * Environment(sc, direction, scratch.Buffer(depth + 1, color.Length));
@@ -133,9 +153,25 @@ public class PathTracing : RayTracing
       direction = wi;
       afterDelta = delta;
       lastPdf = pdf;
+      kind = Vector3d.Dot(wi, bsdf.FacingNormal) < 0.0 ? RayKind.Refracted : RayKind.Reflected;
+    }
+    while (observed > 0)
+    {
+      var (k, d, o, dir, hit) = Observed(--observed);
+      observer!.EndRay(k, d, o, dir, hit);
     }
     radiance.CopyTo(color);
     return hash;
+  }
+
+  // The rays of the path being observed on this thread, ended in reverse order when the path is done.
+  [ThreadStatic] static (RayKind Kind, int Depth, Vector3d Origin, Vector3d Direction, Intersection? Hit)[]? observedRays;
+
+  static ref (RayKind Kind, int Depth, Vector3d Origin, Vector3d Direction, Intersection? Hit) Observed(int index)
+  {
+    if (observedRays == null || index >= observedRays.Length)
+      Array.Resize(ref observedRays, Math.Max(16, 2 * index));
+    return ref observedRays![index];
   }
 
   /// <summary>Direct light at hit <paramref name="i"/>: every light source once, and one sample of one emitter.</summary>
@@ -205,7 +241,9 @@ public class PathTracing : RayTracing
       return true;
     // Stop short of the light's surface, so that surface is not taken for an occluder.
     double keep = 1.0 - 4.0 * Intersection.RAY_EPSILON / dist;
-    return keep <= 0.0 || !Blocked(scratch, x, toLight * keep);
+    bool visible = keep <= 0.0 || !Blocked(scratch, x, toLight * keep);
+    scratch.Observer?.ShadowRay(x, toLight, !visible);
+    return visible;
   }
 
   /// <summary>Radiance of the background seen in <paramref name="direction"/>.</summary>

@@ -3,7 +3,7 @@ using OpenTK.Mathematics;
 namespace Rendering.Observation;
 
 /// <summary>
-/// Receives every ray <see cref="RayTracing"/> traces while it is attached to a render
+/// Receives every ray <see cref="RayTracing"/> (or <see cref="PathTracing"/>, a path as a chain of nested bounces) traces while it is attached to a render
 /// (<see cref="Execution.RenderContext.Observer"/>): the demo's probe, extra views and statistics.
 /// With none attached the tracer pays one null test per ray. One observer serves all render threads,
 /// so implementations keep per-thread or per-pixel state only.
