@@ -12,6 +12,8 @@
 #   OUTDIR [bench/results/cornell-work]  CORNELL_DIR [../shared/bench/cornell beside the repository]
 #   OURS_EXTRA_SPP [1024] (one more of ours, for its converged mean; empty: none)
 #   REPEAT [1] (renders per renderer and sample count, alternating; render_s is their median, all in times)
+# SPP values are squares (an n×n grid per pixel; grcis rounds others up). Tables from the TSV:
+#   python3 bench/cornell-table.py results.tsv
 set -euo pipefail
 
 THREADS=${THREADS:-2}
