@@ -83,9 +83,12 @@ internal sealed class EmitterSet
   public bool Sample(in Vector3d x, double pick, double u, double v,
     out Vector3d toLight, out double dist, out Vector3d wi, out Rgb radiance, out double pdf)
   {
-    int k = Array.BinarySearch(cdf, pick);
-    k = k < 0 ? ~k : k;
-    k = Math.Min(k, emitters.Length - 1);
+    int k = 0;
+    if (emitters.Length > 1)
+    {
+      k = Array.BinarySearch(cdf, pick);
+      k = Math.Min(k < 0 ? ~k : k, emitters.Length - 1);
+    }
     ref readonly Emitter e = ref emitters[k];
     radiance = e.Radiance;
     pdf = 0.0;

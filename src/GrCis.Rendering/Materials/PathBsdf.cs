@@ -127,7 +127,7 @@ internal struct PathBsdf
     wi = mirror;
     if (choice < pD || (choice < pD + pS && !glossyIsMirror))
     {
-      wi = choice < pD ? SampleWarp.PowerCosine(u, v, nf, 1.0) : SampleWarp.PowerCosine(u, v, mirror, exponent);
+      wi = choice < pD ? SampleWarp.CosineHemisphere(u, v, nf) : SampleWarp.PowerCosine(u, v, mirror, exponent);
       double cos = Vector3d.Dot(wi, nf);
       if (cos <= 0.0)
         return false;

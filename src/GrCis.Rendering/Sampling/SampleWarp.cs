@@ -38,6 +38,9 @@ public static class SampleWarp
     return AroundAxis(Math.Pow(1.0 - u, 1.0 / (exponent + 1.0)), v, axis);
   }
 
+  /// <summary><see cref="PowerCosine"/> with exponent 1 (the Lambertian lobe): a square root where the general lobe needs a power.</summary>
+  public static Vector3d CosineHemisphere(double u, double v, in Vector3d axis) => AroundAxis(Math.Sqrt(1.0 - u), v, axis);
+
   /// <summary>Density of <see cref="PowerCosine"/> for a direction at cosine <paramref name="cos"/> from the axis.</summary>
   public static double PowerCosinePdf(double cos, double exponent) =>
     cos <= 0.0 ? 0.0 : (exponent + 1.0) / (2.0 * Math.PI) * Math.Pow(cos, exponent);
@@ -52,9 +55,9 @@ public static class SampleWarp
   static Vector3d AroundAxis(double cos, double v, in Vector3d axis)
   {
     double sin = Math.Sqrt(Math.Max(0.0, 1.0 - cos * cos));
-    double phi = 2.0 * Math.PI * v;
+    (double sinPhi, double cosPhi) = Math.SinCos(2.0 * Math.PI * v);
     Frame(axis, out Vector3d t, out Vector3d b);
-    return t * (sin * Math.Cos(phi)) + b * (sin * Math.Sin(phi)) + axis * cos;
+    return t * (sin * cosPhi) + b * (sin * sinPhi) + axis * cos;
   }
 
   /// <summary>Two unit vectors completing the unit <paramref name="n"/> to an orthonormal frame (Duff et al. 2017, no branch on a threshold).</summary>
