@@ -3,14 +3,14 @@ using Rendering.Execution;
 
 namespace GrCis.Hosting;
 
-/// <summary>A tile finished (of a progressive render's pass: <see cref="Fraction"/> counts the samples).</summary>
+/// <summary>A tile finished (of the tiles, or of a progressive render's pass: then <see cref="Fraction"/> counts the samples).</summary>
 public sealed class RenderProgressEventArgs : EventArgs
 {
-  public RenderProgressEventArgs(RenderProgress progress, TimeSpan elapsed, double? fraction = null)
+  public RenderProgressEventArgs(RenderProgress progress, TimeSpan elapsed, double fraction)
   {
     Progress = progress;
     Elapsed = elapsed;
-    Fraction = fraction ?? progress.Fraction;
+    Fraction = fraction;
   }
 
   public RenderProgress Progress { get; }

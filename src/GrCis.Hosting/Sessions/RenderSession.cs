@@ -166,15 +166,22 @@ public sealed class RenderSession : IDisposable
     ticker = new PreviewTicker(Cadence, () => Publish(PreviewPass.Tiles, live, force: false));
 
     var synth = new PreviewSynthesizer(job.Renderer, live!, coarse, CoarseBlock);
-    return TileRenderer.Render(job.Scene, job.ImageFunction, synth, options, p =>
+    return TileRenderer.Render(job.Scene, job.ImageFunction, synth, options, p => TileDone(p, clock, 0.0, 1.0), token, context);
+  }
+
+  /// <summary>
+  /// A tile finished: recorded, and reported with the fraction of the render done, for a pass that began at
+  /// <paramref name="before"/> of the work and is <paramref name="share"/> of it (the tile mode: one pass, 0 and 1).
+  /// </summary>
+  void TileDone(RenderProgress p, Stopwatch clock, double before, double share)
+  {
+    double done;
+    lock (finished)
     {
-      lock (finished)
-      {
-        finished.Add(p.LastTile);
-        fraction = (double)finished.Count / Math.Max(1, TileCount());
-      }
-      Raise(ProgressChanged, new RenderProgressEventArgs(p, clock.Elapsed));
-    }, token, context);
+      finished.Add(p.LastTile);
+      fraction = done = before + share * finished.Count / Math.Max(1, TileCount());
+    }
+    Raise(ProgressChanged, new RenderProgressEventArgs(p, clock.Elapsed, done));
   }
 
   /// <summary>
@@ -186,7 +193,7 @@ public sealed class RenderSession : IDisposable
   {
     var synth = new SamplePassSynthesizer(grid, live!, context.Noise!);
     int[] ends = SamplePassSynthesizer.PassEnds(grid.SuperXY);
-    int total = grid.SuperXY * grid.SuperXY, tilesTotal = TileCount();
+    int total = grid.SuperXY * grid.SuperXY;
     FloatImage? image = null;
     using var ticker = new PreviewTicker(Cadence, () => Publish(PreviewPass.Samples, live, force: false));
     for (int k = 0; k < ends.Length && !token.IsCancellationRequested; k++)
@@ -197,15 +204,7 @@ public sealed class RenderSession : IDisposable
       lock (finished)
         finished.Clear();
       passes = k + 1;
-      image = TileRenderer.Render(job.Scene, job.ImageFunction, synth, options, p =>
-      {
-        lock (finished)
-        {
-          finished.Add(p.LastTile);
-          fraction = before + share * finished.Count / tilesTotal;
-        }
-        Raise(ProgressChanged, new RenderProgressEventArgs(p, clock.Elapsed, fraction));
-      }, token, context);
+      image = TileRenderer.Render(job.Scene, job.ImageFunction, synth, options, p => TileDone(p, clock, before, share), token, context);
       if (!token.IsCancellationRequested && k < ends.Length - 1)
         Publish(PreviewPass.Samples, live, force: false, synth.End, context.Noise!.Rmse());
     }

@@ -176,21 +176,12 @@ public sealed partial class PreparedScene
     }
   }
 
-  /// <summary>World centre and radius of the unit sphere under the chain, when the chain is a similarity.</summary>
+  /// <summary>World centre and radius of the unit sphere under the chain, when the chain is a similarity (<see cref="EmitterSet.Similarity"/>).</summary>
   static bool TrySimilarity(List<Matrix4d> path, out Vector3d center, out double radius)
   {
     Matrix4d l2w = LocalToWorldOf(path);
     center = Vector3d.TransformPosition(Vector3d.Zero, l2w);
-    Vector3d a = Vector3d.TransformVector(Vector3d.UnitX, l2w);
-    Vector3d b = Vector3d.TransformVector(Vector3d.UnitY, l2w);
-    Vector3d c = Vector3d.TransformVector(Vector3d.UnitZ, l2w);
-    double la = a.Length, lb = b.Length, lc = c.Length;
-    radius = Math.Max(la, Math.Max(lb, lc));
-    double tol = 1.0e-9 * radius;
-    bool similar = Math.Abs(la - lb) <= tol && Math.Abs(la - lc) <= tol &&
-                   Math.Abs(Vector3d.Dot(a, b)) <= tol * radius && Math.Abs(Vector3d.Dot(a, c)) <= tol * radius &&
-                   Math.Abs(Vector3d.Dot(b, c)) <= tol * radius;
-    return similar && double.IsFinite(radius) && radius > 0.0 && double.IsFinite(center.X + center.Y + center.Z);
+    return EmitterSet.Similarity(l2w, out radius) && double.IsFinite(center.X + center.Y + center.Z);
   }
 
   /// <summary>Local box of a closed member: a closed known solid, or a library CSG node over closed members.</summary>

@@ -204,9 +204,7 @@ public class Intersection : IComparable<Intersection>
     if (SurfaceColor == null && color != null)
     {
       // GrCis copies the colour per hit (textures may change it): reuse this object's own copy.
-      double[]? own = spareColor;
-      if (own == null || own.Length != color.Length)
-        spareColor = own = new double[color.Length];
+      double[] own = Spare(color.Length);
       // A loop: Array.Copy's call and GC poll cost more than three doubles.
       for (int k = 0; k < own.Length; k++)
         own[k] = color[k];
@@ -222,12 +220,17 @@ public class Intersection : IComparable<Intersection>
   {
     if (SurfaceColor != null)
       return;
-    double[]? own = spareColor;
-    if (own == null || own.Length != 3)
-      spareColor = own = new double[3];
-    else
-      Array.Clear(own);
+    double[] own = Spare(3);
+    Array.Clear(own);
     SurfaceColor = own;
+  }
+
+  /// <summary>This object's own colour array of <paramref name="length"/> bands, made once and reused by the hits it holds.</summary>
+  double[] Spare(int length)
+  {
+    if (spareColor == null || spareColor.Length != length)
+      spareColor = new double[length];
+    return spareColor;
   }
 
   /// <summary>The part of a fast-path record every solid lists the same way (T, Enter, Front, local coordinates).</summary>
