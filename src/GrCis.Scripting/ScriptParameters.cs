@@ -1,11 +1,11 @@
 using System;
 using System.Collections.Generic;
-using Utilities;
+using Rendering;
 
 namespace GrCis.Scripting;
 
 /// <summary>
-/// Strict reading of a script's <c>param</c> string. <see cref="Util.TryParse(Dictionary{string, string}, string, ref double)"/>
+/// Strict reading of a script's <c>param</c> string. <see cref="KeyValueText.TryParse(Dictionary{string, string}, string, ref double)"/>
 /// quietly keeps the default when a value does not parse; these getters instead throw a
 /// <see cref="ScriptParameterException"/> that says which parameter, which value and what was expected.
 /// A missing key gives the default. Usable from scripts (<c>new GrCis.Scripting.ScriptParameters(param)</c>)
@@ -16,7 +16,7 @@ public sealed class ScriptParameters
   public ScriptParameters(string? param)
   {
     Text = param ?? "";
-    Values = Util.ParseKeyValueList(Text);
+    Values = KeyValueText.Parse(Text);
   }
 
   /// <summary>The original parameter text.</summary>
@@ -30,26 +30,26 @@ public sealed class ScriptParameters
   public double GetDouble(string key, double defaultValue)
   {
     double v = defaultValue;
-    return !Values.ContainsKey(key) || Util.TryParse(Values, key, ref v) ? v : throw Bad(key, "a number (e.g. 1.5)");
+    return !Values.ContainsKey(key) || KeyValueText.TryParse(Values, key, ref v) ? v : throw Bad(key, "a number (e.g. 1.5)");
   }
 
   public int GetInt(string key, int defaultValue)
   {
     int v = defaultValue;
-    return !Values.ContainsKey(key) || Util.TryParse(Values, key, ref v) ? v : throw Bad(key, "a whole number (e.g. 4)");
+    return !Values.ContainsKey(key) || KeyValueText.TryParse(Values, key, ref v) ? v : throw Bad(key, "a whole number (e.g. 4)");
   }
 
   public long GetLong(string key, long defaultValue)
   {
     long v = defaultValue;
-    return !Values.ContainsKey(key) || Util.TryParse(Values, key, ref v) ? v : throw Bad(key, "a whole number (e.g. 4)");
+    return !Values.ContainsKey(key) || KeyValueText.TryParse(Values, key, ref v) ? v : throw Bad(key, "a whole number (e.g. 4)");
   }
 
   /// <summary>A bare key means true.</summary>
   public bool GetBool(string key, bool defaultValue)
   {
     bool v = defaultValue;
-    return !Values.ContainsKey(key) || Util.TryParse(Values, key, ref v) ? v : throw Bad(key, "yes/no, true/false, 1/0 or the bare key");
+    return !Values.ContainsKey(key) || KeyValueText.TryParse(Values, key, ref v) ? v : throw Bad(key, "yes/no, true/false, 1/0 or the bare key");
   }
 
   public string GetString(string key, string defaultValue) =>

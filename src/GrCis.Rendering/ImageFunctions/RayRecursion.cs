@@ -1,6 +1,6 @@
+using System;
 using System.Collections.Generic;
 using OpenTK.Mathematics;
-using Utilities;
 
 namespace Rendering;
 
@@ -105,9 +105,10 @@ public class RayRecursion
     if (DirectContribution is { Length: > 0 } direct)
     {
       if (direct.Length == 1)
-        Util.ColorAdd(direct[0], color);
+        for (int b = 0; b < color.Length; b++)
+          color[b] += direct[0];
       else
-        Util.ColorAdd(direct, color);
+        AddScaled(direct, 1.0, color);
     }
 
     if (Rays == null || Rays.Count == 0 || depth++ >= rt.MaxLevel)
@@ -119,12 +120,28 @@ public class RayRecursion
       RayContribution rc = ray;
       hash += HASH_RAY * rt.shade(depth, rc.importance, ref rc.origin, ref rc.direction, comp);
       if (ray.coefficient == null)
-        Util.ColorAdd(comp, color);
+        AddScaled(comp, 1.0, color);
       else if (ray.coefficient.Length == 1)
-        Util.ColorAdd(comp, ray.coefficient[0], color);
+        AddScaled(comp, ray.coefficient[0], color);
       else
-        Util.ColorAdd(comp, ray.coefficient, color);
+        AddWeighted(comp, ray.coefficient, color);
     }
     return hash;
+  }
+
+  /// <summary>dst += mul * src over the bands both have (GrCis's Util.ColorAdd).</summary>
+  static void AddScaled(double[] src, double mul, double[] dst)
+  {
+    int n = Math.Min(src.Length, dst.Length);
+    for (int i = 0; i < n; i++)
+      dst[i] += mul * src[i];
+  }
+
+  /// <summary>dst += weight * src per band, over the bands all three have.</summary>
+  static void AddWeighted(double[] src, double[] weight, double[] dst)
+  {
+    int n = Math.Min(Math.Min(src.Length, weight.Length), dst.Length);
+    for (int i = 0; i < n; i++)
+      dst[i] += weight[i] * src[i];
   }
 }

@@ -2,15 +2,16 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 
-namespace Utilities;
+namespace Rendering;
 
 /// <summary>
-/// Helpers scene scripts rely on: the <c>param</c> string parser, typed look-ups in parameter
-/// and context dictionaries (invariant culture), and small colour-array operations.
+/// The <c>param</c> string parser and typed look-ups in parameter and context dictionaries (invariant
+/// culture) that the script host needs. GrCis's <c>Util.ParseKeyValueList</c> and <c>Util.TryParse</c>
+/// (in GrCis.Compatibility) forward here, so scripts and the host read a parameter the same way.
 /// </summary>
-public static partial class Util
+public static class KeyValueText
 {
-  /// <summary>Default separator of <see cref="ParseKeyValueList"/>.</summary>
+  /// <summary>Default separator of <see cref="Parse"/>.</summary>
   public const char COMMA = ',';
 
   /// <summary>
@@ -18,7 +19,7 @@ public static partial class Util
   /// key and value trimmed, a bare key gets the value "" (counts as true), later duplicates win,
   /// empty segments and segments with an empty key are skipped. Null or empty input gives an empty map.
   /// </summary>
-  public static Dictionary<string, string> ParseKeyValueList(string? str, char separator = COMMA)
+  public static Dictionary<string, string> Parse(string? str, char separator = COMMA)
   {
     var result = new Dictionary<string, string>();
     if (string.IsNullOrEmpty(str))
@@ -36,7 +37,7 @@ public static partial class Util
   }
 
   /// <summary>GrCis's "yes" test: a positive integer, or text starting with y, t or a (Czech "ano").</summary>
-  public static bool positive(string? val)
+  public static bool IsYes(string? val)
   {
     if (string.IsNullOrEmpty(val))
       return false;
@@ -51,23 +52,20 @@ public static partial class Util
   // missing or the text does not parse.
 
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref int val) =>
-    TryGet(rec, key, out string? s) && TryParseText(s, ref val);
-
-  /// <summary>GrCis's name of the integer <see cref="TryParse(Dictionary{string, string}?, string, ref int)"/> until May 2020.</summary>
-  public static bool TryParseInt(Dictionary<string, string>? rec, string key, ref int val) => TryParse(rec, key, ref val);
+    TryGet(rec, key, out string? s) && TryParseValue(s, ref val);
 
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref long val) =>
-    TryGet(rec, key, out string? s) && TryParseText(s, ref val);
+    TryGet(rec, key, out string? s) && TryParseValue(s, ref val);
 
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref float val) =>
-    TryGet(rec, key, out string? s) && TryParseText(s, ref val);
+    TryGet(rec, key, out string? s) && TryParseValue(s, ref val);
 
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref double val) =>
-    TryGet(rec, key, out string? s) && TryParseText(s, ref val);
+    TryGet(rec, key, out string? s) && TryParseValue(s, ref val);
 
-  /// <summary>A bare key (empty value) or a "yes" value (<see cref="positive"/>) is true; "no", "0", "false" are false.</summary>
+  /// <summary>A bare key (empty value) or a "yes" value (<see cref="IsYes"/>) is true; "no", "0", "false" are false.</summary>
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref bool val) =>
-    TryGet(rec, key, out string? s) && TryParseText(s, ref val);
+    TryGet(rec, key, out string? s) && TryParseValue(s, ref val);
 
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref string val)
   {
@@ -97,7 +95,7 @@ public static partial class Util
         val = i;
         return true;
       case string s:
-        return TryParseText(s, ref val);
+        return TryParseValue(s, ref val);
       case double or float:
         double d = Convert.ToDouble(o, CultureInfo.InvariantCulture);
         if (d != Math.Floor(d) || d < int.MinValue || d > int.MaxValue)
@@ -119,7 +117,7 @@ public static partial class Util
         val = l;
         return true;
       case string s:
-        return TryParseText(s, ref val);
+        return TryParseValue(s, ref val);
       case double or float:
         double d = Convert.ToDouble(o, CultureInfo.InvariantCulture);
         if (d != Math.Floor(d) || d < long.MinValue || d > long.MaxValue)
@@ -136,7 +134,7 @@ public static partial class Util
     if (!TryGet(rec, key, out object? o))
       return false;
     return o is string s
-      ? TryParseText(s, ref val)
+      ? TryParseValue(s, ref val)
       : TryConvert(o, ref val, static c => Convert.ToSingle(c, CultureInfo.InvariantCulture));
   }
 
@@ -145,7 +143,7 @@ public static partial class Util
     if (!TryGet(rec, key, out object? o))
       return false;
     return o is string s
-      ? TryParseText(s, ref val)
+      ? TryParseValue(s, ref val)
       : TryConvert(o, ref val, static c => Convert.ToDouble(c, CultureInfo.InvariantCulture));
   }
 
@@ -159,7 +157,7 @@ public static partial class Util
         val = b;
         return true;
       case string s:
-        return TryParseText(s, ref val);
+        return TryParseValue(s, ref val);
       case IConvertible c when o.GetType().IsPrimitive:
         val = Convert.ToDouble(c, CultureInfo.InvariantCulture) != 0.0;
         return true;
@@ -183,84 +181,8 @@ public static partial class Util
     return TryParse(rec, key, ref b) && b;
   }
 
-  // ---- Colours ---------------------------------------------------------------------------
-
-  /// <summary>A copy of <paramref name="src"/>, optionally multiplied by <paramref name="coeff"/> (null stays null).</summary>
-  public static double[]? ColorClone(double[]? src, double coeff = 1.0)
-  {
-    if (src == null)
-      return null;
-    var result = new double[src.Length];
-    ColorCopy(src, coeff, result);
-    return result;
-  }
-
-  /// <summary>dst := src over the common bands; extra bands of dst are cleared.</summary>
-  public static void ColorCopy(double[] src, double[] dst)
-  {
-    int n = Math.Min(src.Length, dst.Length);
-    Array.Copy(src, dst, n);
-    if (n < dst.Length)
-      Array.Clear(dst, n, dst.Length - n);
-  }
-
-  /// <summary>dst := mul * src over the common bands; extra bands of dst are cleared.</summary>
-  public static void ColorCopy(double[] src, double mul, double[] dst)
-  {
-    int n = Math.Min(src.Length, dst.Length);
-    for (int i = 0; i < n; i++)
-      dst[i] = mul * src[i];
-    if (n < dst.Length)
-      Array.Clear(dst, n, dst.Length - n);
-  }
-
-  /// <summary>dst += v in every band.</summary>
-  public static void ColorAdd(double v, double[] dst)
-  {
-    for (int i = 0; i < dst.Length; i++)
-      dst[i] += v;
-  }
-
-  /// <summary>dst += src over the common bands.</summary>
-  public static void ColorAdd(double[] src, double[] dst)
-  {
-    int n = Math.Min(src.Length, dst.Length);
-    for (int i = 0; i < n; i++)
-      dst[i] += src[i];
-  }
-
-  /// <summary>dst += mul * src over the common bands.</summary>
-  public static void ColorAdd(double[] src, double mul, double[] dst)
-  {
-    int n = Math.Min(src.Length, dst.Length);
-    for (int i = 0; i < n; i++)
-      dst[i] += mul * src[i];
-  }
-
-  /// <summary>dst += src ⊙ weight (per band) over the common bands.</summary>
-  public static void ColorAdd(double[] src, double[] weight, double[] dst)
-  {
-    int n = Math.Min(Math.Min(src.Length, weight.Length), dst.Length);
-    for (int i = 0; i < n; i++)
-      dst[i] += weight[i] * src[i];
-  }
-
-  /// <summary>dst *= mul in every band.</summary>
-  public static void ColorMul(double mul, double[] dst)
-  {
-    for (int i = 0; i < dst.Length; i++)
-      dst[i] *= mul;
-  }
-
-  /// <summary>dst *= weight (per band) over the common bands.</summary>
-  public static void ColorMul(double[] weight, double[] dst)
-  {
-    int n = Math.Min(weight.Length, dst.Length);
-    for (int i = 0; i < n; i++)
-      dst[i] *= weight[i];
-  }
-
-  // ---- Internals -------------------------------------------------------------------------
+  // ---- One value ---------------------------------------------------------------------------
+  // Invariant culture; false and 'val' unchanged when the text does not parse.
 
   static bool TryGet<T>(Dictionary<string, T>? rec, string key, out T value)
   {
@@ -273,7 +195,7 @@ public static partial class Util
     return false;
   }
 
-  static bool TryParseText(string s, ref int val)
+  public static bool TryParseValue(string s, ref int val)
   {
     if (!int.TryParse(s, NumberStyles.Integer, CultureInfo.InvariantCulture, out int v))
       return false;
@@ -281,7 +203,7 @@ public static partial class Util
     return true;
   }
 
-  static bool TryParseText(string s, ref long val)
+  public static bool TryParseValue(string s, ref long val)
   {
     if (!long.TryParse(s, NumberStyles.Integer, CultureInfo.InvariantCulture, out long v))
       return false;
@@ -289,7 +211,7 @@ public static partial class Util
     return true;
   }
 
-  static bool TryParseText(string s, ref float val)
+  public static bool TryParseValue(string s, ref float val)
   {
     if (!float.TryParse(s, NumberStyles.Float, CultureInfo.InvariantCulture, out float v))
       return false;
@@ -297,7 +219,7 @@ public static partial class Util
     return true;
   }
 
-  static bool TryParseText(string s, ref double val)
+  public static bool TryParseValue(string s, ref double val)
   {
     if (!double.TryParse(s, NumberStyles.Float, CultureInfo.InvariantCulture, out double v))
       return false;
@@ -305,10 +227,10 @@ public static partial class Util
     return true;
   }
 
-  static bool TryParseText(string s, ref bool val)
+  public static bool TryParseValue(string s, ref bool val)
   {
     s = s.Trim();
-    if (s.Length == 0 || positive(s) || s.Equals("on", StringComparison.OrdinalIgnoreCase))
+    if (s.Length == 0 || IsYes(s) || s.Equals("on", StringComparison.OrdinalIgnoreCase))
     {
       val = true;
       return true;
