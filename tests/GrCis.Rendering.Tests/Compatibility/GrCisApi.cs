@@ -13,7 +13,8 @@ namespace GrCis.Rendering.Tests.Compatibility;
 /// </summary>
 static class GrCisApi
 {
-  static readonly Assembly[] assemblies = { typeof(RayTracing).Assembly };
+  // GrCis's common/ lives in two houses: the core (GrCis.Rendering) and GrCis.Compatibility.
+  static readonly Assembly[] assemblies = { typeof(RayTracing).Assembly, typeof(global::Utilities.Util).Assembly };
 
   public sealed record Entry(string File, string Kind, string Type, string Member)
   {
