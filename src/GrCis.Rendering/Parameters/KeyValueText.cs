@@ -184,17 +184,6 @@ public static class KeyValueText
   // ---- One value ---------------------------------------------------------------------------
   // Invariant culture; false and 'val' unchanged when the text does not parse.
 
-  static bool TryGet<T>(Dictionary<string, T>? rec, string key, out T value)
-  {
-    if (rec != null && key != null && rec.TryGetValue(key, out T? v) && v != null)
-    {
-      value = v;
-      return true;
-    }
-    value = default!;
-    return false;
-  }
-
   public static bool TryParseValue(string s, ref int val)
   {
     if (!int.TryParse(s, NumberStyles.Integer, CultureInfo.InvariantCulture, out int v))
@@ -246,6 +235,19 @@ public static class KeyValueText
       val = false;
       return true;
     }
+    return false;
+  }
+
+  // ---- Internals -------------------------------------------------------------------------
+
+  static bool TryGet<T>(Dictionary<string, T>? rec, string key, out T value)
+  {
+    if (rec != null && key != null && rec.TryGetValue(key, out T? v) && v != null)
+    {
+      value = v;
+      return true;
+    }
+    value = default!;
     return false;
   }
 
