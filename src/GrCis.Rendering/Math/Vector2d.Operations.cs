@@ -50,6 +50,8 @@ public partial struct Vector2d
   /// <summary>Rotates (x, y, 0) by the quaternion and keeps x and y.</summary>
   public static Vector2d Transform(Vector2d vec, Quaterniond quat) => Vector3d.Transform(new Vector3d(vec.X, vec.Y, 0), quat).Xy;
   public static void Transform(in Vector2d vec, in Quaterniond quat, out Vector2d result) => result = Transform(vec, quat);
+  /// <summary>OpenTK 4's operator form of <see cref="Transform(Vector2d, Quaterniond)"/>.</summary>
+  public static Vector2d operator *(Quaterniond quat, Vector2d vec) => Transform(vec, quat);
 
   public static explicit operator Vector2d(Vector2 v) => new(v.X, v.Y);
   public static explicit operator Vector2(Vector2d v) => new((float)v.X, (float)v.Y);
