@@ -96,4 +96,49 @@ public class OpenTk4TypesTests
     BezierCurve shifted = new(1f, Vector2.Zero, new Vector2(4, 0));
     Assert.Equal(new Vector2(0, -1), shifted.CalculatePoint(0));
   }
+
+  static void Near(Color4 expected, Color4 actual, float eps = 1e-5f) =>
+    Assert.True(MathF.Abs(expected.R - actual.R) <= eps && MathF.Abs(expected.G - actual.G) <= eps
+      && MathF.Abs(expected.B - actual.B) <= eps && expected.A == actual.A, $"{expected} != {actual}");
+
+  [Theory]
+  [InlineData(0.2f, 0.5f, 0.9f)]
+  [InlineData(1f, 0f, 0f)]
+  [InlineData(0.3f, 0.3f, 0.3f)]
+  [InlineData(0.9f, 0.8f, 0.1f)]
+  public void Color4_round_trips_through_every_colour_space(float r, float g, float b)
+  {
+    Color4 c = new(r, g, b, 0.5f);
+    Near(c, Color4.FromSrgb(Color4.ToSrgb(c)));
+    Near(c, Color4.FromHsl(Color4.ToHsl(c)));
+    Near(c, Color4.FromHsv(Color4.ToHsv(c)));
+    Near(c, Color4.FromHcy(Color4.ToHcy(c)));
+    Near(c, Color4.FromYcbcr(Color4.ToYcbcr(c)));
+    Near(c, Color4.FromXyz(Color4.ToXyz(c)), 1e-4f);
+  }
+
+  [Fact]
+  public void Color4_spaces_give_the_textbook_values()
+  {
+    // Float literals: integer constants would pick the byte constructor (as with OpenTK's Color4).
+    Vector4 hsv = Color4.ToHsv(new Color4(0f, 1f, 0f, 1f));
+    Assert.Equal((MathF.Round(1f / 3, 6), 1f, 1f, 1f), (MathF.Round(hsv.X, 6), hsv.Y, hsv.Z, hsv.W));
+    Vector4 hsl = Color4.ToHsl(new Color4(1f, 0f, 0f, 1f));
+    Assert.Equal(new Vector4(0, 1, 0.5f, 1), hsl);
+    Assert.Equal(0.5f, Color4.ToSrgb(new Color4(0.21404114f, 0f, 0f, 1f)).R, 5);
+    Assert.Equal(1, Color4.ToYcbcr(new Color4(1f, 1f, 1f, 1f)).X, 5);
+  }
+
+  [Fact]
+  public void Color4_named_colours_bytes_and_argb()
+  {
+    Assert.Equal(new Color4(1f, 0f, 0f, 1f), Color4.Red);
+    Assert.Equal(new Color4((byte)100, (byte)149, (byte)237, (byte)255), Color4.CornflowerBlue);
+    Assert.Equal(0, Color4.Transparent.A);
+    Assert.Equal(unchecked((int)0xFF6495ED), Color4.CornflowerBlue.ToArgb());
+    Assert.Equal(new Vector4(1, 1, 0, 1), (Vector4)Color4.Yellow);
+    Color4 fromDrawing = System.Drawing.Color.FromArgb(255, 0, 128, 255);
+    Assert.Equal(128 / 255f, fromDrawing.G);
+    Assert.Equal("{(R, G, B, A) = (1, 0, 0, 1)}", Color4.Red.ToString(CultureInfo.InvariantCulture));
+  }
 }
