@@ -3,7 +3,7 @@ using System;
 namespace OpenTK.Mathematics;
 
 /// <summary>OpenTK's scalar helpers and constants.</summary>
-public static class MathHelper
+public static partial class MathHelper
 {
   // OpenTK declares these constants in single precision, and GrCis scenes use them in double
   // expressions (e.g. RotateX(-MathHelper.PiOver2) gives -1.5707963705…). Keeping the float values

@@ -170,4 +170,18 @@ public class OpenTk4MembersTests
     Assert.Equal(s, m);
     Assert.Throws<IndexOutOfRangeException>(() => Matrix4.CreateSwizzle(0, 1, 2, 4));
   }
+
+  [Fact]
+  public void MathHelper_forwards_System_Math_and_maps_ranges()
+  {
+    Assert.Equal(2.5f, MathHelper.Abs(-2.5f));
+    Assert.Equal(3, MathHelper.Max(3, -7));
+    Assert.Equal(-1, MathHelper.Sign(-0.5));
+    Assert.Equal(2, MathHelper.Round(2.5, MidpointRounding.ToEven));
+    Assert.Equal(3, MathHelper.Log2(8), 12);
+    Assert.Equal(15f, MathHelper.MapRange(0.5f, 0f, 1f, 10f, 20f));
+    // The int form divides before it scales, so it truncates to the range's ends.
+    Assert.Equal(10, MathHelper.MapRange(5, 0, 10, 10, 20));
+    Assert.Equal(150.0, MathHelper.MapRange(5.0, 0, 10, 100, 200));
+  }
 }
