@@ -15,7 +15,8 @@ public partial struct Vector2
   public static Vector2b GreaterThanOrEqual(in Vector2 left, in Vector2 right) => new(left.X >= right.X, left.Y >= right.Y);
 
   /// <summary>Each component blended by its own weight: <c>a + blend · (b − a)</c>.</summary>
-  public static Vector2 Lerp(Vector2 a, Vector2 b, Vector2 blend) => new(blend.X * (b.X - a.X) + a.X, blend.Y * (b.Y - a.Y) + a.Y);
+  public static Vector2 Lerp(Vector2 a, Vector2 b, Vector2 blend) => new(
+    blend.X * (b.X - a.X) + a.X, blend.Y * (b.Y - a.Y) + a.Y);
   public static void Lerp(in Vector2 a, in Vector2 b, Vector2 blend, out Vector2 result) => result = Lerp(a, b, blend);
 
   /// <summary>
@@ -37,6 +38,7 @@ public partial struct Vector2
   public static void Slerp(in Vector2 a, in Vector2 b, float t, out Vector2 result) => result = Slerp(a, b, t);
 
   /// <summary>Exponential interpolation, per component <c>a^(1 − t) · b^t</c> (for positive components).</summary>
-  public static Vector2 Elerp(Vector2 a, Vector2 b, float t) => new(MathF.Pow(a.X, 1 - t) * MathF.Pow(b.X, t), MathF.Pow(a.Y, 1 - t) * MathF.Pow(b.Y, t));
+  public static Vector2 Elerp(Vector2 a, Vector2 b, float t) => new(
+    MathF.Pow(a.X, 1 - t) * MathF.Pow(b.X, t), MathF.Pow(a.Y, 1 - t) * MathF.Pow(b.Y, t));
   public static void Elerp(in Vector2 a, in Vector2 b, float t, out Vector2 result) => result = Elerp(a, b, t);
 }

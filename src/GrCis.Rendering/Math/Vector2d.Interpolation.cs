@@ -15,7 +15,8 @@ public partial struct Vector2d
   public static Vector2b GreaterThanOrEqual(in Vector2d left, in Vector2d right) => new(left.X >= right.X, left.Y >= right.Y);
 
   /// <summary>Each component blended by its own weight: <c>a + blend · (b − a)</c>.</summary>
-  public static Vector2d Lerp(Vector2d a, Vector2d b, Vector2d blend) => new(blend.X * (b.X - a.X) + a.X, blend.Y * (b.Y - a.Y) + a.Y);
+  public static Vector2d Lerp(Vector2d a, Vector2d b, Vector2d blend) => new(
+    blend.X * (b.X - a.X) + a.X, blend.Y * (b.Y - a.Y) + a.Y);
   public static void Lerp(in Vector2d a, in Vector2d b, Vector2d blend, out Vector2d result) => result = Lerp(a, b, blend);
 
   /// <summary>
@@ -37,6 +38,7 @@ public partial struct Vector2d
   public static void Slerp(in Vector2d a, in Vector2d b, double t, out Vector2d result) => result = Slerp(a, b, t);
 
   /// <summary>Exponential interpolation, per component <c>a^(1 − t) · b^t</c> (for positive components).</summary>
-  public static Vector2d Elerp(Vector2d a, Vector2d b, double t) => new(Math.Pow(a.X, 1 - t) * Math.Pow(b.X, t), Math.Pow(a.Y, 1 - t) * Math.Pow(b.Y, t));
+  public static Vector2d Elerp(Vector2d a, Vector2d b, double t) => new(
+    Math.Pow(a.X, 1 - t) * Math.Pow(b.X, t), Math.Pow(a.Y, 1 - t) * Math.Pow(b.Y, t));
   public static void Elerp(in Vector2d a, in Vector2d b, double t, out Vector2d result) => result = Elerp(a, b, t);
 }

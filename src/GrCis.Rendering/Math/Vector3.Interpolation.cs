@@ -10,12 +10,16 @@ public partial struct Vector3
   public static void Abs(in Vector3 vec, out Vector3 result) => result = Abs(vec);
 
   public static Vector3b LessThan(in Vector3 left, in Vector3 right) => new(left.X < right.X, left.Y < right.Y, left.Z < right.Z);
-  public static Vector3b LessThanOrEqual(in Vector3 left, in Vector3 right) => new(left.X <= right.X, left.Y <= right.Y, left.Z <= right.Z);
-  public static Vector3b GreaterThan(in Vector3 left, in Vector3 right) => new(left.X > right.X, left.Y > right.Y, left.Z > right.Z);
-  public static Vector3b GreaterThanOrEqual(in Vector3 left, in Vector3 right) => new(left.X >= right.X, left.Y >= right.Y, left.Z >= right.Z);
+  public static Vector3b LessThanOrEqual(in Vector3 left, in Vector3 right) => new(
+    left.X <= right.X, left.Y <= right.Y, left.Z <= right.Z);
+  public static Vector3b GreaterThan(in Vector3 left, in Vector3 right) => new(
+    left.X > right.X, left.Y > right.Y, left.Z > right.Z);
+  public static Vector3b GreaterThanOrEqual(in Vector3 left, in Vector3 right) => new(
+    left.X >= right.X, left.Y >= right.Y, left.Z >= right.Z);
 
   /// <summary>Each component blended by its own weight: <c>a + blend · (b − a)</c>.</summary>
-  public static Vector3 Lerp(Vector3 a, Vector3 b, Vector3 blend) => new(blend.X * (b.X - a.X) + a.X, blend.Y * (b.Y - a.Y) + a.Y, blend.Z * (b.Z - a.Z) + a.Z);
+  public static Vector3 Lerp(Vector3 a, Vector3 b, Vector3 blend) => new(
+    blend.X * (b.X - a.X) + a.X, blend.Y * (b.Y - a.Y) + a.Y, blend.Z * (b.Z - a.Z) + a.Z);
   public static void Lerp(in Vector3 a, in Vector3 b, Vector3 blend, out Vector3 result) => result = Lerp(a, b, blend);
 
   /// <summary>
@@ -37,6 +41,7 @@ public partial struct Vector3
   public static void Slerp(in Vector3 a, in Vector3 b, float t, out Vector3 result) => result = Slerp(a, b, t);
 
   /// <summary>Exponential interpolation, per component <c>a^(1 − t) · b^t</c> (for positive components).</summary>
-  public static Vector3 Elerp(Vector3 a, Vector3 b, float t) => new(MathF.Pow(a.X, 1 - t) * MathF.Pow(b.X, t), MathF.Pow(a.Y, 1 - t) * MathF.Pow(b.Y, t), MathF.Pow(a.Z, 1 - t) * MathF.Pow(b.Z, t));
+  public static Vector3 Elerp(Vector3 a, Vector3 b, float t) => new(
+    MathF.Pow(a.X, 1 - t) * MathF.Pow(b.X, t), MathF.Pow(a.Y, 1 - t) * MathF.Pow(b.Y, t), MathF.Pow(a.Z, 1 - t) * MathF.Pow(b.Z, t));
   public static void Elerp(in Vector3 a, in Vector3 b, float t, out Vector3 result) => result = Elerp(a, b, t);
 }

@@ -8,13 +8,18 @@ public partial struct Vector3d
 {
   public static void Abs(in Vector3d vec, out Vector3d result) => result = Abs(vec);
 
-  public static Vector3b LessThan(in Vector3d left, in Vector3d right) => new(left.X < right.X, left.Y < right.Y, left.Z < right.Z);
-  public static Vector3b LessThanOrEqual(in Vector3d left, in Vector3d right) => new(left.X <= right.X, left.Y <= right.Y, left.Z <= right.Z);
-  public static Vector3b GreaterThan(in Vector3d left, in Vector3d right) => new(left.X > right.X, left.Y > right.Y, left.Z > right.Z);
-  public static Vector3b GreaterThanOrEqual(in Vector3d left, in Vector3d right) => new(left.X >= right.X, left.Y >= right.Y, left.Z >= right.Z);
+  public static Vector3b LessThan(in Vector3d left, in Vector3d right) => new(
+    left.X < right.X, left.Y < right.Y, left.Z < right.Z);
+  public static Vector3b LessThanOrEqual(in Vector3d left, in Vector3d right) => new(
+    left.X <= right.X, left.Y <= right.Y, left.Z <= right.Z);
+  public static Vector3b GreaterThan(in Vector3d left, in Vector3d right) => new(
+    left.X > right.X, left.Y > right.Y, left.Z > right.Z);
+  public static Vector3b GreaterThanOrEqual(in Vector3d left, in Vector3d right) => new(
+    left.X >= right.X, left.Y >= right.Y, left.Z >= right.Z);
 
   /// <summary>Each component blended by its own weight: <c>a + blend · (b − a)</c>.</summary>
-  public static Vector3d Lerp(Vector3d a, Vector3d b, Vector3d blend) => new(blend.X * (b.X - a.X) + a.X, blend.Y * (b.Y - a.Y) + a.Y, blend.Z * (b.Z - a.Z) + a.Z);
+  public static Vector3d Lerp(Vector3d a, Vector3d b, Vector3d blend) => new(
+    blend.X * (b.X - a.X) + a.X, blend.Y * (b.Y - a.Y) + a.Y, blend.Z * (b.Z - a.Z) + a.Z);
   public static void Lerp(in Vector3d a, in Vector3d b, Vector3d blend, out Vector3d result) => result = Lerp(a, b, blend);
 
   /// <summary>
@@ -36,6 +41,7 @@ public partial struct Vector3d
   public static void Slerp(in Vector3d a, in Vector3d b, double t, out Vector3d result) => result = Slerp(a, b, t);
 
   /// <summary>Exponential interpolation, per component <c>a^(1 − t) · b^t</c> (for positive components).</summary>
-  public static Vector3d Elerp(Vector3d a, Vector3d b, double t) => new(Math.Pow(a.X, 1 - t) * Math.Pow(b.X, t), Math.Pow(a.Y, 1 - t) * Math.Pow(b.Y, t), Math.Pow(a.Z, 1 - t) * Math.Pow(b.Z, t));
+  public static Vector3d Elerp(Vector3d a, Vector3d b, double t) => new(
+    Math.Pow(a.X, 1 - t) * Math.Pow(b.X, t), Math.Pow(a.Y, 1 - t) * Math.Pow(b.Y, t), Math.Pow(a.Z, 1 - t) * Math.Pow(b.Z, t));
   public static void Elerp(in Vector3d a, in Vector3d b, double t, out Vector3d result) => result = Elerp(a, b, t);
 }
