@@ -45,6 +45,13 @@ public static class DataFiles
   /// nearest first, used only when exactly one of them has the file). When nothing exists, <paramref name="path"/> itself, so the caller's "not found" names
   /// what the script wrote.
   /// </summary>
+  /// <summary>
+  /// <see cref="Resolve"/> for a path that may be null or empty (returned as it is, so the caller's own error
+  /// stays). The script host routes the paths scripts and modules pass to <c>File.ReadAllText</c>,
+  /// <c>new StreamReader(path)</c> and the like through it.
+  /// </summary>
+  public static string? ResolveOrKeep(string? path) => string.IsNullOrEmpty(path) ? path : Resolve(path);
+
   public static string Resolve(string path)
   {
     ArgumentException.ThrowIfNullOrEmpty(path);
