@@ -33,14 +33,15 @@ public sealed class DemoController : IDisposable
   /// GrCis's default scene) selected. Unknown options and missing files or folders go to
   /// <paramref name="problems"/> as messages for the user; everything else is still loaded.
   /// </summary>
-  public static DemoController FromCommandLine(IReadOnlyList<string> args, IScriptEvaluator? evaluator, ICollection<string> problems)
+  /// <param name="scripts">Compiles and runs the scene scripts (<see cref="SceneCatalog.Scripts"/>); null = built-in scenes only.</param>
+  public static DemoController FromCommandLine(IReadOnlyList<string> args, GrCis.Scripting.ScriptHost? scripts, ICollection<string> problems)
   {
     ArgumentNullException.ThrowIfNull(args);
     ArgumentNullException.ThrowIfNull(problems);
     DemoCommandLine commandLine = DemoCommandLine.Parse(args);
     foreach (string e in commandLine.Errors)
       problems.Add(e);
-    var catalog = new SceneCatalog(evaluator);
+    var catalog = new SceneCatalog(scripts);
     SceneEntry? first = catalog.AddFromCommandLine(commandLine, problems);
     return new DemoController(catalog) { Selected = first, RenderTo = commandLine.RenderTo };
   }
@@ -49,6 +50,15 @@ public sealed class DemoController : IDisposable
   public string? RenderTo { get; init; }
 
   public RenderSettings Settings { get; set; } = new();
+
+  /// <summary>
+  /// Which of <see cref="Settings"/> the user gave, winning over the script's own values by the one precedence rule
+  /// (<see cref="Precedence"/>), exactly as options typed on the command line do; the rest are the script's when it
+  /// sets them. None by default, so an untouched window renders what <c>grcis render</c> renders; a front end marks a
+  /// setting once the user changes its field (<see cref="GivenSettings.Size"/>, <see cref="GivenSettings.SamplesPerPixel"/>,
+  /// <see cref="GivenSettings.Shadows"/>, …). A chosen <see cref="Algorithm"/> is always given.
+  /// </summary>
+  public GivenSettings Given { get; set; }
 
   /// <summary>
   /// The image function chosen in the demo, replacing the script's own (CTX_ALGORITHM) as <c>grcis render --algorithm</c>
@@ -158,8 +168,8 @@ public sealed class DemoController : IDisposable
       Task<(BuiltScene, RenderJob)> task = Task.Factory.StartNew(() =>
       {
         using Interruption.Scope interruption = Interruption.Use(building.Token);
-        BuiltScene b = Catalog.Build(entry, entry.ParameterText, settings);
-        return (b, b.ToJob(settings, given));
+        BuiltScene b = Catalog.Build(entry, entry.ParameterText, settings, given);
+        return (b, b.ToJob());
       }, building.Token, TaskCreationOptions.LongRunning, TaskScheduler.Default);
       lock (sync)
         buildTask = task;
@@ -253,20 +263,26 @@ public sealed class DemoController : IDisposable
     }
   }
 
-  /// <summary>An animation run of the selected scene over the script's range (or the given one).</summary>
-  public AnimationRun CreateAnimation(double start, double end, double fps)
+  /// <summary>
+  /// An animation run of the selected scene as <c>grcis animate</c> renders it: start, end and frame rate each as given
+  /// here, else the script's, else the scene's own range, else 0 to 10 s at 25 fps (<see cref="AnimationRange"/>).
+  /// </summary>
+  /// <exception cref="SceneEvaluationException">The scene could not be built.</exception>
+  /// <exception cref="ArgumentOutOfRangeException">The range is impossible (end before start, fps not positive).</exception>
+  public AnimationRun CreateAnimation(double? start = null, double? end = null, double? fps = null)
   {
     SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
     (RenderSettings settings, GivenSettings given) = Requested(Settings with { Time = null });
-    BuiltScene built = Catalog.Build(entry, entry.ParameterText, settings);
-    return new AnimationRun(built.ToJob(settings, given), AnimationRun.TimelineFor(built.Overrides, start, end, fps));
+    BuiltScene built = Catalog.Build(entry, entry.ParameterText, settings, given);
+    (double s, double e, double f) = AnimationRange.Resolve(start, end, fps, built.Prepared.Timing, built.Prepared.Scene);
+    return new AnimationRun(built.ToJob(), new AnimationTimeline(s, e, f));
   }
 
   // A chosen algorithm is a given setting, so the one precedence rule replaces the script's function with it.
   (RenderSettings, GivenSettings) Requested(RenderSettings settings) =>
     Algorithm is RenderAlgorithm a
-      ? (settings with { Algorithm = a }, RenderJob.Given | GivenSettings.Algorithm)
-      : (settings, RenderJob.Given);
+      ? (settings with { Algorithm = a }, Given | GivenSettings.Algorithm)
+      : (settings, Given & ~GivenSettings.Algorithm);
 
   void RestartWatcher()
   {

@@ -56,8 +56,9 @@ public sealed class StudioServer : IAsyncDisposable
     }
     if (options.NoDefault)
       args.Add("-nodefault");
-    var controller = DemoController.FromCommandLine(args, new ScriptHostEvaluator(), problems);
-    var session = new StudioSession(controller);
+    var scripts = new GrCis.Scripting.ScriptHost();
+    var controller = DemoController.FromCommandLine(args, scripts, problems);
+    var session = new StudioSession(controller) { Scripts = scripts };
     string token = options.Token ?? AccessGuard.NewToken();
 
     WebApplicationBuilder builder = WebApplication.CreateSlimBuilder();

@@ -79,12 +79,15 @@ public sealed class StudioSession : IDisposable
   /// <summary>Starts rendering <paramref name="entry"/> with <paramref name="param"/> and <paramref name="settings"/>, stopping any render in progress.</summary>
   /// <param name="algorithm">The image function replacing the script's (<see cref="DemoController.Algorithm"/>); null = the scene's choice.</param>
   /// <param name="progressive">Passes of samples or tiles (<see cref="DemoController.Progressive"/>); null = by the algorithm.</param>
-  public void Render(SceneEntry entry, string param, RenderSettings settings, RenderAlgorithm? algorithm = null, bool? progressive = null)
+  /// <param name="given">The settings the user changed, which win over the script's own values (<see cref="DemoController.Given"/>).</param>
+  public void Render(SceneEntry entry, string param, RenderSettings settings, RenderAlgorithm? algorithm = null, bool? progressive = null,
+                     GivenSettings given = GivenSettings.None)
   {
     Started();
     entry.ParameterText = param;
     Controller.Selected = entry;
     Controller.Settings = settings;
+    Controller.Given = given;
     Controller.Algorithm = algorithm;
     Controller.Progressive = progressive;
     _ = Controller.RenderAsync().ContinueWith(t =>
@@ -165,5 +168,12 @@ public sealed class StudioSession : IDisposable
   /// <summary>Shows a render of the history (back/forward).</summary>
   public void ShowRecord(RenderRecord record) => Show(record.Image, record.Gamma, 1.0, final: true);
 
-  public void Dispose() => Controller.Dispose();
+  /// <summary>The script host the session's catalog compiles with, disposed with the session (null = the caller's).</summary>
+  public GrCis.Scripting.ScriptHost? Scripts { get; init; }
+
+  public void Dispose()
+  {
+    Controller.Dispose();
+    Scripts?.Dispose();
+  }
 }
