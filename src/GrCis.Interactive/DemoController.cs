@@ -34,14 +34,16 @@ public sealed class DemoController : IDisposable
   /// <paramref name="problems"/> as messages for the user; everything else is still loaded.
   /// </summary>
   /// <param name="scripts">Compiles and runs the scene scripts (<see cref="SceneCatalog.Scripts"/>); null = built-in scenes only.</param>
-  public static DemoController FromCommandLine(IReadOnlyList<string> args, GrCis.Scripting.ScriptHost? scripts, ICollection<string> problems)
+  /// <param name="allowScript">The script files this front end may open (<see cref="SceneCatalog.AllowScript"/>); null = any.</param>
+  public static DemoController FromCommandLine(IReadOnlyList<string> args, GrCis.Scripting.ScriptHost? scripts, ICollection<string> problems,
+                                               Predicate<string>? allowScript = null)
   {
     ArgumentNullException.ThrowIfNull(args);
     ArgumentNullException.ThrowIfNull(problems);
     DemoCommandLine commandLine = DemoCommandLine.Parse(args);
     foreach (string e in commandLine.Errors)
       problems.Add(e);
-    var catalog = new SceneCatalog(scripts);
+    var catalog = new SceneCatalog(scripts) { AllowScript = allowScript };
     SceneEntry? first = catalog.AddFromCommandLine(commandLine, problems);
     return new DemoController(catalog) { Selected = first, RenderTo = commandLine.RenderTo };
   }

@@ -57,7 +57,8 @@ public sealed class StudioServer : IAsyncDisposable
     if (options.NoDefault)
       args.Add("-nodefault");
     var scripts = new GrCis.Scripting.ScriptHost();
-    var controller = DemoController.FromCommandLine(args, scripts, problems);
+    var files = new AllowedFiles(options.Paths);
+    var controller = DemoController.FromCommandLine(args, scripts, problems, files.Allows);
     var session = new StudioSession(controller) { Scripts = scripts };
     string token = options.Token ?? AccessGuard.NewToken();
 
@@ -72,7 +73,7 @@ public sealed class StudioServer : IAsyncDisposable
     });
     builder.Services.Configure<JsonOptions>(o => o.SerializerOptions.Converters.Add(new JsonStringEnumConverter()));
     builder.Services.AddSingleton(session);
-    builder.Services.AddSingleton(new AllowedFiles(options.Paths));
+    builder.Services.AddSingleton(files);
     WebApplication app = builder.Build();
 
     // The port is known only once Kestrel listens (--port 0): the guard reads the hosts it allows then.

@@ -23,6 +23,13 @@ public sealed class SceneCatalog
 
   public IReadOnlyList<SceneEntry> Entries => entries;
 
+  /// <summary>
+  /// The script files the front end may open (the studio's: nothing a link leads to outside its folders); null = any.
+  /// A refused file of a folder is not listed, a refused single file is an error, and a listed script whose file became
+  /// such a link is not built.
+  /// </summary>
+  public Predicate<string>? AllowScript { get; init; }
+
   /// <summary>Raised after entries were added.</summary>
   public event EventHandler? Changed;
 
@@ -47,7 +54,7 @@ public sealed class SceneCatalog
     Array.Sort(files, StringComparer.OrdinalIgnoreCase);
     int added = 0;
     foreach (string f in files)
-      if (AddScriptCore(f, out _))
+      if ((AllowScript == null || AllowScript(f)) && AddScriptCore(f, out _))
         added++;
     if (added > 0)
       Changed?.Invoke(this, EventArgs.Empty);
@@ -60,6 +67,8 @@ public sealed class SceneCatalog
     ArgumentException.ThrowIfNullOrEmpty(path);
     if (!File.Exists(path))
       throw new SceneEvaluationException($"{path}: scene script not found.");
+    if (AllowScript != null && !AllowScript(path))
+      throw new SceneEvaluationException($"{path}: not allowed here (a link leading outside the folders given).");
     if (AddScriptCore(path, out SceneEntry entry))
       Changed?.Invoke(this, EventArgs.Empty);
     return entry;
@@ -148,6 +157,8 @@ public sealed class SceneCatalog
     ISceneSource source;
     if (entry.Kind == SceneEntryKind.BuiltIn)
       source = new CatalogSceneSource(entry, param);
+    else if (AllowScript != null && !AllowScript(entry.Path!))
+      throw new SceneEvaluationException($"{entry.Path}: not allowed here (a link leading outside the folders given).");
     else if (Scripts == null)
       throw new SceneEvaluationException($"{entry.Path}: scene scripts need the script host, and none is configured.");
     else

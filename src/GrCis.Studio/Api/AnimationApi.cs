@@ -36,13 +36,16 @@ internal static class AnimationApi
       return Results.BadRequest(new { error = "the range needs start ≤ end and fps > 0 (at most 100000 frames)" });
     if (!StudioApi.TryAlgorithm(body.Algorithm, out RenderAlgorithm? algorithm, out IResult? bad))
       return bad;
+    if (entry.Path != null && !files.Allows(entry.Path))
+      return Results.StatusCode(StatusCodes.Status403Forbidden);
     string? folder = null;
     if (!string.IsNullOrWhiteSpace(body.Folder))
     {
-      folder = Path.GetFullPath(body.Folder);
-      // A folder for frames must lie inside a folder given on the command line.
-      if (!files.Allows(Path.Combine(folder, "out0000.png")))
+      // A folder for frames must lie inside a folder given on the command line, really (links followed); the frames
+      // are written into that real folder.
+      if (files.Resolve(Path.Combine(Path.GetFullPath(body.Folder), "out0000.png")) is not string first)
         return Results.StatusCode(StatusCodes.Status403Forbidden);
+      folder = Path.GetDirectoryName(first);
     }
     RenderSettings settings;
     try

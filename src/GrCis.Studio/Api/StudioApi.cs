@@ -48,7 +48,7 @@ internal static class StudioApi
       };
     });
     app.MapGet("/api/settings", (StudioSession s) => s.Controller.Settings);
-    app.MapPost("/api/render", (RenderBody body, StudioSession s) => Render(body, s));
+    app.MapPost("/api/render", (RenderBody body, StudioSession s, AllowedFiles files) => Render(body, s, files));
     app.MapPost("/api/stop", (StudioSession s) =>
     {
       s.Controller.Stop();
@@ -71,7 +71,7 @@ internal static class StudioApi
       SceneEntry? entry = s.Controller.Catalog.Find(scene);
       if (entry?.Path == null)
         return Results.NotFound();
-      return files.Allows(entry.Path) ? Results.Text(File.ReadAllText(entry.Path), "text/plain; charset=utf-8") : Results.StatusCode(StatusCodes.Status403Forbidden);
+      return files.Resolve(entry.Path) is string real ? Results.Text(File.ReadAllText(real), "text/plain; charset=utf-8") : Results.StatusCode(StatusCodes.Status403Forbidden);
     });
     ViewsApi.Map(app);
     HistoryApi.Map(app);
@@ -82,16 +82,17 @@ internal static class StudioApi
       SceneEntry? entry = s.Controller.Catalog.Find(scene);
       if (entry?.Path == null)
         return Results.NotFound();
-      if (!files.Allows(entry.Path))
+      // The real file is written (a link inside the folders keeps pointing at it); a link leading out is refused.
+      if (files.Resolve(entry.Path) is not string real)
         return Results.StatusCode(StatusCodes.Status403Forbidden);
       using var reader = new StreamReader(request.Body, System.Text.Encoding.UTF8);
-      SaveAtomically(entry.Path, await reader.ReadToEndAsync());
+      SaveAtomically(real, await reader.ReadToEndAsync());
       // The script's watcher re-renders it (as for a save from any other editor).
       return Results.NoContent();
     });
     app.MapGet("/api/file", (string path, AllowedFiles files) =>
-      !files.Allows(path) ? Results.StatusCode(StatusCodes.Status403Forbidden)
-      : File.Exists(path) ? Results.Text(File.ReadAllText(path), "text/plain; charset=utf-8")
+      files.Resolve(path) is not string real ? Results.StatusCode(StatusCodes.Status403Forbidden)
+      : File.Exists(real) ? Results.Text(File.ReadAllText(real), "text/plain; charset=utf-8")
       : Results.NotFound());
   }
 
@@ -102,11 +103,13 @@ internal static class StudioApi
   /// </summary>
   internal sealed record RenderBody(string Scene, string? Param, RenderSettings? Settings, string? Algorithm = null, bool? Progressive = null);
 
-  static IResult Render(RenderBody body, StudioSession s)
+  static IResult Render(RenderBody body, StudioSession s, AllowedFiles files)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
       return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
+    if (entry.Path != null && !files.Allows(entry.Path))
+      return Results.StatusCode(StatusCodes.Status403Forbidden);
     if (!TryAlgorithm(body.Algorithm, out RenderAlgorithm? algorithm, out IResult? bad))
       return bad;
     RenderSettings settings = body.Settings ?? s.Controller.Settings;
