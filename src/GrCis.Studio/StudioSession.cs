@@ -142,6 +142,9 @@ public sealed class StudioSession : IDisposable
         Progressive = Controller.Progressive,
         Samples = samples,
         Noise = noise,
+        Width = Controller.LastJob?.Width,
+        Height = Controller.LastJob?.Height,
+        SamplesPerPixel = Controller.LastJob?.Settings.SamplesPerPixel,
       };
   }
 

@@ -8,6 +8,13 @@ let scenes = [], shownVersion = -1, polling = null;
 let zoom = 1, panX = 0, panY = 0, drag = null;
 let viewsFor = -1, hoverTimer = null;
 let editor = null, editedScene = null, marks = [], lastProbe = null;
+// Settings the user changed since the scene was chosen: they win over the script's own values (as command-line
+// options do); the other fields show the script's values, marked, and are sent as not given.
+const given = new Set();
+const givenFlag = { width: "Size", height: "Size", spp: "SamplesPerPixel", jitter: "Jitter",
+  shadows: "Shadows", reflections: "Reflections", refractions: "Refractions" };
+const rangeFields = ["animStart", "animEnd", "animFps"];
+const rangeGiven = new Set();
 
 async function api(path, options) {
   const r = await fetch("api/" + path, options);
@@ -39,6 +46,57 @@ function sceneChanged() {
   $("param").value = s?.param ?? "";
   $("param").title = s?.tooltip ?? "";
   $("param").placeholder = s?.tooltip ?? "";
+  return loadScriptValues();
+}
+
+// Shows a value of the script in its field, marked as the script's (until the user changes it).
+function showScriptValue(id, value) {
+  const field = $(id);
+  // A range the previous script set, and this one does not, is the scene's again (an empty field).
+  if (value == null && field.classList.contains("script") && rangeFields.includes(id)) field.value = "";
+  field.classList.toggle("script", value != null);
+  field.title = value != null ? "the script's value; change it to use your own" : "";
+  if (value == null) return false;
+  field.value = value;
+  return true;
+}
+
+// The chosen scene's own values (built, not rendered): size, samples per pixel, algorithm, animation range.
+async function loadScriptValues() {
+  const name = $("scene").value;
+  let v = {};
+  try {
+    v = await (await api("scene/values", {
+      method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify({ scene: name, param: $("param").value }),
+    })).json();
+  } catch (e) {
+    $("messages").textContent = e.message;
+  }
+  if ($("scene").value !== name) return;   // another scene was chosen meanwhile
+  const size = v.width != null || v.height != null;
+  if (showScriptValue("width", size ? (v.width ?? $("width").value) : null) | showScriptValue("height", size ? (v.height ?? $("height").value) : null))
+    given.delete("Size");
+  if (showScriptValue("spp", v.samplesPerPixel)) given.delete("SamplesPerPixel");
+  $("algorithm").options[0].textContent = `scene's choice (${v.algorithm ?? "ray tracing"})`;
+  for (const [id, value] of [["animStart", v.start], ["animEnd", v.end], ["animFps", v.fps]])
+    if (showScriptValue(id, value)) rangeGiven.delete(id);
+  if (v.tooltip) { $("param").title = $("param").placeholder = v.tooltip; }
+}
+
+// A field the user changes is given: it wins over the script's value.
+function fieldChanged(e) {
+  const id = e.target.id;
+  if (givenFlag[id]) given.add(givenFlag[id]);
+  if (rangeFields.includes(id)) rangeGiven.add(id);
+  for (const f of id === "width" || id === "height" ? ["width", "height"] : [id]) {
+    $(f).classList.remove("script");
+    $(f).title = "";
+  }
+}
+
+// An animation field as sent: the user's value, or null for the script's (else the scene's, else 0 to 10 s at 25 fps).
+function rangeValue(id) {
+  return rangeGiven.has(id) || !$(id).classList.contains("script") && $(id).value !== "" ? Number($(id).value) : null;
 }
 
 function settings() {
@@ -71,7 +129,10 @@ async function render() {
   try {
     await api("render", {
       method: "POST", headers: { "Content-Type": "application/json" },
-      body: JSON.stringify({ scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value, progressive: progressive() }),
+      body: JSON.stringify({
+        scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value, progressive: progressive(),
+        given: [...given],
+      }),
     });
   } catch (e) {
     $("messages").textContent = e.message;
@@ -144,8 +205,8 @@ async function renderFrames() {
     await api("animation", {
       method: "POST", headers: { "Content-Type": "application/json" },
       body: JSON.stringify({
-        scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value,
-        start: Number($("animStart").value), end: Number($("animEnd").value), fps: Number($("animFps").value),
+        scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value, given: [...given],
+        start: rangeValue("animStart"), end: rangeValue("animEnd"), fps: rangeValue("animFps"),
         folder: $("animFolder").value.trim() || null,
       }),
     });
@@ -332,6 +393,11 @@ async function probe(p) {
 }
 
 $("scene").addEventListener("change", sceneChanged);
+$("param").addEventListener("change", loadScriptValues);
+for (const id of [...Object.keys(givenFlag), ...rangeFields]) {
+  $(id).addEventListener("input", fieldChanged);
+  $(id).addEventListener("change", fieldChanged);
+}
 $("view-kind").addEventListener("change", showView);
 $("edit").addEventListener("click", openEditor);
 $("open").addEventListener("click", async () => {
