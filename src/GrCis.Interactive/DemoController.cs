@@ -23,6 +23,9 @@ public sealed class DemoController : IDisposable
   ScriptWatcher? watcher;
   SceneEntry? selected;
   bool watch;
+  // The render asked for last (events of a replaced one are ignored) and whether its scene is being built.
+  long renderId;
+  bool building;
 
   public DemoController(SceneCatalog catalog) => Catalog = catalog ?? throw new ArgumentNullException(nameof(catalog));
 
@@ -104,6 +107,32 @@ public sealed class DemoController : IDisposable
     }
   }
 
+  /// <summary>True while the last render asked for builds its scene or renders (what a status line shows); false after Stop.</summary>
+  public bool IsBusy
+  {
+    get
+    {
+      lock (sync)
+        return building || (session?.IsRunning ?? false);
+    }
+  }
+
+  /// <summary>The number of the render asked for last (<see cref="RenderAsync"/>, a watched script's change); its events are the only ones raised.</summary>
+  public long RenderId => Interlocked.Read(ref renderId);
+
+  /// <summary>
+  /// Memory the renders may use, in bytes; null = what this process may use (<see cref="ImageMemory.Available"/>). A size
+  /// that does not fit is refused before any work, as <c>grcis render</c> refuses it.
+  /// </summary>
+  public long? MemoryLimit { get; set; }
+
+  /// <summary>
+  /// Images of the render's size the window holds at its peak, for the memory check: the framebuffer, the preview and
+  /// noise buffers and their 8-bit copies (a 16384x16384 render in the studio was measured at about 22 GB, 82 bytes a
+  /// pixel: five of <see cref="ImageMemory.BytesPerPixel"/>).
+  /// </summary>
+  public const int ImagesHeld = 5;
+
   public SceneEntry? Selected
   {
     get => selected;
@@ -151,15 +180,31 @@ public sealed class DemoController : IDisposable
     (RenderSettings settings, GivenSettings given) = Requested(Settings);
     CancellationTokenSource building;
     Task? previous;
+    long id;
     lock (sync)
     {
+      id = ++renderId;
+      this.building = true;
       session?.Stop();
       build?.Cancel();
       building = build = new CancellationTokenSource();
       previous = buildTask;
     }
+    try
+    {
+      return await RenderAsync(id, entry, settings, given, building, previous).ConfigureAwait(false);
+    }
+    finally
+    {
+      lock (sync)
+        if (id == renderId)
+          this.building = false;
+    }
+  }
 
-    // Let a stopped script unwind before the next one runs (it shares the script's context); one that
+  async Task<RenderResult?> RenderAsync(long id, SceneEntry entry, RenderSettings settings, GivenSettings given, CancellationTokenSource building, Task? previous)
+  {
+    // Let a stopped script unwind before the next one runs (it may hold files or state of its own); one that
     // ignores the stop (a sleep, not a loop) is left behind after a while rather than blocking the demo.
     if (previous != null)
       await Task.WhenAny(previous, Task.Delay(AbandonStuckScriptAfter)).ConfigureAwait(false);
@@ -189,12 +234,21 @@ public sealed class DemoController : IDisposable
       return null;
     }
 
+    // Refused before any work when it cannot fit, as grcis render refuses it.
+    if (ImageMemory.Shortfall(job.Width, job.Height, ImagesHeld, MemoryLimit, oneImage: true) is string shortfall)
+    {
+      if (!building.IsCancellationRequested)
+        Raise(Error, $"{shortfall}; choose a smaller size (a render here holds its previews and noise estimate too)");
+      return null;
+    }
+
     RenderSession s;
     lock (sync)
     {
       // Stopped, or another render started, while the script ran.
       if (building.IsCancellationRequested)
         return null;
+      this.building = false;
       Raise(SceneEvaluated, built);
       LastJob = job;
       s = session = new RenderSession(job)
@@ -203,10 +257,21 @@ public sealed class DemoController : IDisposable
         EventContext = EventContext,
         Progressive = Progressive ?? IsMonteCarlo(job.ImageFunction),
       };
-      s.PreviewReady += (_, e) => PreviewReady?.Invoke(this, e);
-      s.ProgressChanged += (_, e) => ProgressChanged?.Invoke(this, e);
+      // A render replaced by a newer one (Render again, a watched script saved) says nothing more.
+      s.PreviewReady += (_, e) =>
+      {
+        if (id == RenderId)
+          PreviewReady?.Invoke(this, e);
+      };
+      s.ProgressChanged += (_, e) =>
+      {
+        if (id == RenderId)
+          ProgressChanged?.Invoke(this, e);
+      };
       s.Completed += (_, e) =>
       {
+        if (id != RenderId)
+          return;
         // On the UI context when one is set, so history and the display change together.
         LastResult = e.Result;
         History.Add(RenderRecord.From(e.Result));
@@ -302,6 +367,7 @@ public sealed class DemoController : IDisposable
       build?.Cancel();
       inspecting?.Cancel();
       session?.Stop();
+      building = false;   // a script that ignores the stop is left behind (see AbandonStuckScriptAfter)
     }
   }
 
@@ -344,13 +410,18 @@ public sealed class DemoController : IDisposable
   /// </summary>
   /// <exception cref="SceneEvaluationException">The scene could not be built.</exception>
   /// <exception cref="ArgumentOutOfRangeException">The range is impossible (end before start, fps not positive).</exception>
+  /// <exception cref="InvalidSettingException">The size does not fit in memory (<see cref="MemoryLimit"/>).</exception>
   public AnimationRun CreateAnimation(double? start = null, double? end = null, double? fps = null)
   {
     SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
     (RenderSettings settings, GivenSettings given) = Requested(Settings with { Time = null });
     BuiltScene built = Catalog.Build(entry, entry.ParameterText, settings, given);
     (double s, double e, double f) = AnimationRange.Resolve(start, end, fps, built.Prepared.Timing, built.Prepared.Scene);
-    return new AnimationRun(built.ToJob(), new AnimationTimeline(s, e, f));
+    RenderJob job = built.ToJob();
+    // One frame at a time, each with its 8-bit copy (what grcis animate holds per frame, and a frame kept to show).
+    if (ImageMemory.Shortfall(job.Width, job.Height, 2, MemoryLimit, oneImage: true) is string shortfall)
+      throw new InvalidSettingException(Setting.Size, $"{job.Width}x{job.Height}", shortfall + "; choose a smaller size");
+    return new AnimationRun(job, new AnimationTimeline(s, e, f));
   }
 
   // A chosen algorithm is a given setting, so the one precedence rule replaces the script's function with it.

@@ -104,12 +104,16 @@ public sealed class StudioServer : IAsyncDisposable
     return new StudioServer(app, session, token, $"http://{shown}:{port}/?token={token}");
   }
 
-  /// <summary>Runs until <paramref name="cancel"/> is signalled (Ctrl+C), then stops the render and the server.</summary>
+  /// <summary>
+  /// Runs until <paramref name="cancel"/> is signalled (Ctrl+C) or the host is told to stop (SIGTERM, which the
+  /// host's console lifetime turns into a stop of the application), then stops the render and the server.
+  /// </summary>
   public async Task WaitAsync(CancellationToken cancel)
   {
+    using var either = CancellationTokenSource.CreateLinkedTokenSource(cancel, app.Lifetime.ApplicationStopping);
     try
     {
-      await Task.Delay(Timeout.Infinite, cancel).ConfigureAwait(false);
+      await Task.Delay(Timeout.Infinite, either.Token).ConfigureAwait(false);
     }
     catch (OperationCanceledException)
     {

@@ -53,7 +53,9 @@ internal static class StudioApi
     app.MapPost("/api/scene/values", (SceneBody body, StudioSession s, AllowedFiles files) => ScriptValues(body, s, files));
     app.MapPost("/api/stop", (StudioSession s) =>
     {
+      // Whatever runs: the script being built, the render, and an animation.
       s.Controller.Stop();
+      s.Animation?.Stop();
       return Results.NoContent();
     });
     app.MapGet("/api/status", (StudioSession s) => s.Status());

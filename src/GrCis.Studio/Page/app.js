@@ -16,6 +16,13 @@ const givenFlag = { width: "Size", height: "Size", spp: "SamplesPerPixel", jitte
 const rangeFields = ["animStart", "animEnd", "animFps"];
 const rangeGiven = new Set();
 
+// The page's own last error (a refused request): shown beside the studio's until the next action.
+let pageError = "";
+function showError(message) {
+  pageError = message;
+  $("messages").textContent = message;
+}
+
 async function api(path, options) {
   const r = await fetch("api/" + path, options);
   if (!r.ok && r.status !== 404) {
@@ -64,13 +71,14 @@ function showScriptValue(id, value) {
 // The chosen scene's own values (built, not rendered): size, samples per pixel, algorithm, animation range.
 async function loadScriptValues() {
   const name = $("scene").value;
+  showError("");
   let v = {};
   try {
     v = await (await api("scene/values", {
       method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify({ scene: name, param: $("param").value }),
     })).json();
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
   if ($("scene").value !== name) return;   // another scene was chosen meanwhile
   const size = v.width != null || v.height != null;
@@ -123,7 +131,7 @@ function progressive() {
 }
 
 async function render() {
-  $("messages").textContent = "";
+  showError("");
   $("view-kind").value = "";
   $("viewDownloads").hidden = true;
   try {
@@ -135,7 +143,7 @@ async function render() {
       }),
     });
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
     return;
   }
   $("stop").disabled = false;
@@ -161,7 +169,7 @@ async function poll() {
   $("stats").textContent = s.statistics || (s.samples != null
     ? `${s.samples} spp so far` + (s.noise != null ? `, noise ${s.noise.toPrecision(3)} RMSE` : "")
     : "");
-  $("messages").textContent = [...s.notes, s.error].filter(Boolean).join("\n");
+  $("messages").textContent = [...s.notes, s.error, pageError].filter(Boolean).join("\n");
   showDiagnostics(s.diagnostics);
   $("stop").disabled = !s.rendering;
   if (s.version !== shownVersion && s.version > 0) {
@@ -195,12 +203,12 @@ async function show3d() {
     const boxes = await (await api("scene/boxes")).json();
     RayView.show($("rays3d"), boxes, lastProbe?.rays);
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
 }
 
 async function renderFrames() {
-  $("messages").textContent = "";
+  showError("");
   try {
     await api("animation", {
       method: "POST", headers: { "Content-Type": "application/json" },
@@ -211,7 +219,7 @@ async function renderFrames() {
       }),
     });
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
     return;
   }
   $("animStop").disabled = false;
@@ -239,7 +247,7 @@ async function showFrame(k) {
 async function openEditor() {
   const name = $("scene").value;
   const r = await api("source?scene=" + encodeURIComponent(name));
-  if (!r.ok) { $("messages").textContent = `${name} is not a script file`; return; }
+  if (!r.ok) { showError(`${name} is not a script file`); return; }
   const text = await r.text();
   $("editorPane").hidden = false;
   $("editorName").textContent = scenes.find(x => x.name === name)?.file ?? name;
@@ -258,9 +266,10 @@ async function save() {
     await api("source?scene=" + encodeURIComponent(editedScene), {
       method: "PUT", headers: { "Content-Type": "text/plain; charset=utf-8" }, body: editor.getValue(),
     });
+    showError("");
     $("messages").textContent = "saved; compiling…";
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
   pollSoon(150);
 }
@@ -280,7 +289,7 @@ async function moveHistory(direction) {
     const s = await (await api("status")).json();
     await showImage(s.version);
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
 }
 
@@ -301,7 +310,7 @@ async function showView() {
     $("viewCsv").download = kind.toLowerCase() + ".csv";
     await draw(await api(`views/${kind}.png?v=${viewsFor}`));
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
 }
 
@@ -388,7 +397,7 @@ async function probe(p) {
     $("show3d").hidden = !r.rays;
     if (!$("rays3dPane").hidden) await show3d();
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
 }
 
@@ -410,7 +419,7 @@ $("open").addEventListener("click", async () => {
     select.appendChild(o);
   }
   $("picker").hidden = files.length === 0;
-  if (files.length === 0) $("messages").textContent = "no scripts in the folders given to grcis studio";
+  if (files.length === 0) showError("no scripts in the folders given to grcis studio");
 });
 $("add").addEventListener("click", async () => {
   try {
@@ -422,7 +431,7 @@ $("add").addEventListener("click", async () => {
     sceneChanged();
     $("picker").hidden = true;
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
 });
 $("animRender").addEventListener("click", renderFrames);
@@ -432,10 +441,11 @@ $("show3d").addEventListener("click", async () => { $("rays3dPane").hidden = !$(
 $("save").addEventListener("click", save);
 $("closeEditor").addEventListener("click", () => { $("editorPane").hidden = true; });
 document.addEventListener("keydown", e => {
-  if ((e.ctrlKey || e.metaKey) && e.key === "s") { e.preventDefault(); save(); }
+  // In the editor CodeMirror's own Ctrl+S has saved already (and prevented the default): one save per key press.
+  if ((e.ctrlKey || e.metaKey) && e.key === "s" && !e.defaultPrevented) { e.preventDefault(); save(); }
 });
 $("back").addEventListener("click", () => moveHistory("back"));
 $("forward").addEventListener("click", () => moveHistory("forward"));
 $("render").addEventListener("click", render);
 $("stop").addEventListener("click", () => api("stop", { method: "POST" }));
-loadScenes().then(loadAlgorithm).then(() => pollSoon(0)).catch(e => { $("messages").textContent = e.message; });
+loadScenes().then(loadAlgorithm).then(() => pollSoon(0)).catch(e => { showError(e.message); });
