@@ -196,10 +196,15 @@ public sealed class DemoController : IDisposable
     }
     finally
     {
-      lock (sync)
-        if (id == renderId)
-          this.building = false;
+      BuildEnded(id);
     }
+  }
+
+  void BuildEnded(long id)
+  {
+    lock (sync)
+      if (id == renderId)
+        building = false;
   }
 
   async Task<RenderResult?> RenderAsync(long id, SceneEntry entry, RenderSettings settings, GivenSettings given, CancellationTokenSource building, Task? previous)
@@ -229,6 +234,8 @@ public sealed class DemoController : IDisposable
     }
     catch (Exception ex) when (ex is SceneEvaluationException or ArgumentException)
     {
+      // Not busy any more when the message arrives (a window enables Render again on it).
+      BuildEnded(id);
       if (!building.IsCancellationRequested)
         Raise(Error, ex.Message);
       return null;
@@ -237,6 +244,7 @@ public sealed class DemoController : IDisposable
     // Refused before any work when it cannot fit, as grcis render refuses it.
     if (ImageMemory.Shortfall(job.Width, job.Height, ImagesHeld, MemoryLimit, oneImage: true) is string shortfall)
     {
+      BuildEnded(id);
       if (!building.IsCancellationRequested)
         Raise(Error, $"{shortfall}; choose a smaller size (a render here holds its previews and noise estimate too)");
       return null;

@@ -157,6 +157,7 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     Until(browser, () => browser.FindElements(By.CssSelector("#files option")).Count > 0, "the file picker");
     Js(browser, "document.getElementById('files').value = arguments[0];", path);
     browser.FindElement(By.Id("add")).Click();
+    Js(browser, "document.getElementById('algorithm').value = '';");   // the scene's choice, whatever an earlier test left
 
     string Value(string id) => (string)Js(browser, "return document.getElementById(arguments[0]).value;", id)!;
     bool Script(string id) => (bool)Js(browser, "return document.getElementById(arguments[0]).classList.contains('script');", id)!;
