@@ -28,6 +28,15 @@ public sealed class CliEnvironment
   /// <summary>Signalled by Ctrl+C; a cancelled render writes nothing.</summary>
   public CancellationToken Cancel { get; init; }
 
+  /// <summary>
+  /// Print the whole exception (type, message, stack, inner exceptions) after an error's one line, for a bug
+  /// report: <c>GRCIS_STACKTRACE=1</c> in the environment.
+  /// </summary>
+  public bool StackTraces { get; init; } = Environment.GetEnvironmentVariable(StackTraceVariable) is "1" or "true" or "yes";
+
+  /// <summary>The environment variable that asks for <see cref="StackTraces"/>.</summary>
+  public const string StackTraceVariable = "GRCIS_STACKTRACE";
+
   /// <summary>Scenes a test registers by name, tried before the resolver (the tests' animated scenes).</summary>
   internal Func<string, GrCis.Hosting.ISceneSource?>? ExtraScenes { get; init; }
 }

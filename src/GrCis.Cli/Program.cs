@@ -57,7 +57,7 @@ public static class Program
     }
     catch (Exception e) when (ScriptErrors.Handles(e))
     {
-      return ScriptErrors.Report(e, env);
+      return WithStack(env, e, ScriptErrors.Report(e, env));
     }
     catch (UsageException e)
     {
@@ -65,16 +65,16 @@ public static class Program
     }
     catch (CliFailure e)
     {
-      return Fail(env, ExitCodes.Failure, e.Message);
+      return WithStack(env, e, Fail(env, ExitCodes.Failure, e.Message));
     }
     catch (RenderException e)
     {
-      return Fail(env, ExitCodes.Failure, "render failed: " + ErrorMessages.OneLine(e.InnerException ?? e));
+      return WithStack(env, e, Fail(env, ExitCodes.Failure, "render failed: " + ErrorMessages.OneLine(e.InnerException ?? e)));
     }
     catch (Exception e) when (e is not OutOfMemoryException)
     {
       // Scene construction and loaders (OBJ meshes, scripts) report here, with file(line) when they know it.
-      return Fail(env, ExitCodes.Failure, ErrorMessages.OneLine(e));
+      return WithStack(env, e, Fail(env, ExitCodes.Failure, ErrorMessages.OneLine(e)));
     }
     finally
     {
@@ -96,6 +96,14 @@ public static class Program
       new StudioCommand().Build(env),
     };
     return root;
+  }
+
+  /// <summary>After the error's line, the whole exception when the user asked for it (<see cref="CliEnvironment.StackTraces"/>).</summary>
+  static int WithStack(CliEnvironment env, Exception e, int code)
+  {
+    if (env.StackTraces)
+      env.Error.WriteLine(e.ToString());
+    return code;
   }
 
   static int Fail(CliEnvironment env, int code, string message)

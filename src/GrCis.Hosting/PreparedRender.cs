@@ -63,7 +63,7 @@ public sealed class PreparedRender
       return plain;
     }
 
-    ScriptScene run = script.Load();
+    ScriptScene run = script.Load(request.ScriptContext);
     var choices = new ScriptChoices
     {
       Name = script.DisplayName,
@@ -73,7 +73,9 @@ public sealed class PreparedRender
       ImageFunction = run.Algorithm,
       Renderer = run.Synthesizer,
     };
-    var setup = new PreparedRender(run.Scene, Precedence.Resolve(request.Settings, request.Given, choices, name), run)
+    RenderPlan plan = Precedence.Resolve(request.Settings, request.Given, choices, name);
+    ScriptObjects.Wire(plan.ImageFunction, run.Scene);
+    var setup = new PreparedRender(run.Scene, plan, run)
     {
       Timing = new ScriptTiming(run.Start, run.End, run.Fps),
     };

@@ -8,6 +8,26 @@ namespace GrCis.Hosting;
 /// <param name="Time">The time a moving scene is rendered at; null = the script's choice, else the scene's start.</param>
 public sealed record RenderRequest(ISceneSource Source, RenderSettings Settings, GivenSettings Given = GivenSettings.None, double? Time = null)
 {
+  /// <summary>The animation start the user gave (a script finds it in its context); null = GrCis's 0.</summary>
+  public double? Start { get; init; }
+
+  /// <summary>The animation end the user gave; null = GrCis's 10 s.</summary>
+  public double? End { get; init; }
+
+  /// <summary>The frame rate the user gave; null = GrCis's 25.</summary>
+  public double? Fps { get; init; }
+
+  /// <summary>What a script finds in its context when it starts: the requested size and supersampling, the given animation range.</summary>
+  public GrCis.Scripting.ScriptContextInit ScriptContext => new()
+  {
+    Width = Settings.Width,
+    Height = Settings.Height,
+    SuperSampling = Settings.SamplesPerPixel,
+    Start = Start ?? GrCis.Scripting.ScriptContextInit.Default.Start,
+    End = End ?? GrCis.Scripting.ScriptContextInit.Default.End,
+    Fps = Fps ?? GrCis.Scripting.ScriptContextInit.Default.Fps,
+  };
+
   /// <summary>Builds the scene and resolves the settings against the script's choices.</summary>
   /// <param name="name">How the front end names a setting in notes (an option such as <c>--spp</c>); null = plain words.</param>
   /// <exception cref="ScriptChoiceException">The script asks for an image size or sample count out of range.</exception>

@@ -423,7 +423,7 @@ public sealed class DemoController : IDisposable
   {
     SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
     (RenderSettings settings, GivenSettings given) = Requested(Settings with { Time = null });
-    BuiltScene built = Catalog.Build(entry, entry.ParameterText, settings, given);
+    BuiltScene built = Catalog.Build(entry, entry.ParameterText, settings, given, start, end, fps);
     (double s, double e, double f) = AnimationRange.Resolve(start, end, fps, built.Prepared.Timing, built.Prepared.Scene);
     RenderJob job = built.ToJob();
     // One frame at a time, each with its 8-bit copy (what grcis animate holds per frame, and a frame kept to show).

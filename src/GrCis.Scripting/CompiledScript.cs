@@ -14,13 +14,18 @@ namespace GrCis.Scripting;
 public sealed class CompiledScript
 {
   readonly Func<object?[], Task<object?>> factory;
-  readonly InstrumentedSource source;
+  // The script's file and its modules' files, by full path: where a runtime error may be located.
+  readonly Dictionary<string, InstrumentedSource> sources;
   ScriptLoadContext? loadContext;
 
   internal CompiledScript(string path, string contentHash, Func<object?[], Task<object?>> factory,
-                          ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings, InstrumentedSource source)
+                          ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings, InstrumentedSource source,
+                          IReadOnlyList<ScriptModule> modules)
   {
-    this.source = source;
+    sources = new Dictionary<string, InstrumentedSource>(RuntimeErrors.PathComparer) { [path] = source };
+    foreach (ScriptModule m in modules)
+      foreach ((string file, InstrumentedSource s) in m.Sources)
+        sources.TryAdd(file, s);
     Path = path;
     ContentHash = contentHash;
     this.factory = factory;
@@ -58,27 +63,30 @@ public sealed class CompiledScript
     }
     catch (Exception ex)
     {
-      throw RuntimeErrors.Wrap(ex, Path, source);
+      throw RuntimeErrors.Wrap(ex, Path, sources);
     }
   }
 
   /// <summary>Runs the script with globals <c>scene</c>, <c>param</c>, <c>context</c>.</summary>
-  public void Run(IRayScene scene, string? param, Dictionary<string, object> context) =>
-    Run(new ScriptGlobals(scene, param, context));
+  public void Run(IRayScene scene, string? param, Dictionary<string, object> context)
+  {
+    var globals = new ScriptGlobals(scene, param, context);
+    if (globals.scriptFilePath.Length == 0)
+      globals.scriptFilePath = Path;
+    Run(globals);
+  }
 
   /// <summary>
-  /// For an exception thrown later by code the script created (a texture, camera or solid class declared
-  /// in it, called while rendering): the same exception wrapped with the script line that threw, or null
-  /// when no frame of the exception lies in this script.
+  /// For an exception thrown later by code the script or its modules created (a texture, camera or solid
+  /// class, called while rendering): the same exception wrapped with the innermost line of the script or a
+  /// module file that threw, or null when no frame of the exception lies in them.
   /// </summary>
   public ScriptRuntimeException? FindScriptLine(Exception ex)
   {
     ArgumentNullException.ThrowIfNull(ex);
-    if (ex is ScriptRuntimeException sre && sre.Path == Path)
+    if (ex is ScriptRuntimeException sre && sources.ContainsKey(sre.Path))
       return sre;
-    return RuntimeErrors.FindScriptFrame(ex, Path, source, out int line, out int column)
-      ? new ScriptRuntimeException(Path, line, column, ex)
-      : null;
+    return RuntimeErrors.Locate(ex, sources);
   }
 
   /// <summary>Starts unloading the script's code; it goes once no object created by the script is alive.</summary>

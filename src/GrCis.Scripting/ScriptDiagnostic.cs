@@ -12,6 +12,9 @@ public sealed class ScriptDiagnostic
   /// <summary>Id of the message about a <c>using</c> of a namespace that does not exist here (GrCis-era APIs).</summary>
   public const string MissingNamespaceId = "GRCIS004";
 
+  /// <summary>Id of the warning about an override whose access is GrCis's of another year (see docs/compatibility.md).</summary>
+  public const string OverrideAccessId = "GRCIS005";
+
   public ScriptDiagnostic(string path, int line, int column, string severity, string id, string message)
   {
     Path = path;

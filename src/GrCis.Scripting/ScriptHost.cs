@@ -30,12 +30,15 @@ public sealed class ScriptHost : IDisposable
 
   /// <param name="cacheCapacity">How many compiled scripts to keep (least recently used ones are unloaded).</param>
   /// <param name="optimizeScripts">
-  /// Compile script code with optimisations: classes declared in scripts (textures, cameras, solids)
-  /// run faster, but the JIT may inline script methods, and then a runtime error cannot always name its
-  /// script line. Off by default: readable errors first.
+  /// Compile script and module code with optimisations: classes declared in scripts and modules (textures,
+  /// cameras, solids, tracers) run faster, but the JIT may inline their methods, and then a runtime error or
+  /// a failed assertion cannot always name its line. Off by default: readable errors first, as a student's
+  /// Debug build.
   /// </param>
   public ScriptHost(int cacheCapacity = DefaultCacheCapacity, bool optimizeScripts = false)
   {
+    // Modules are built with DEBUG defined: a failed Debug.Assert must warn, not end the process.
+    Assertions.Install();
     CacheCapacity = cacheCapacity;
     OptimizeScripts = optimizeScripts;
     cache = new LruCache<string, Lazy<CompiledScript>>(cacheCapacity, static lazy =>
@@ -87,35 +90,59 @@ public sealed class ScriptHost : IDisposable
   /// </summary>
   /// <exception cref="DirectoryNotFoundException">The folder does not exist.</exception>
   /// <exception cref="ScriptCompilationException">A module file did not compile.</exception>
-  public ScriptModule AddModule(string directory)
+  public ScriptModule AddModule(string directory) => AddModules(new[] { directory });
+
+  /// <summary>
+  /// Compiles the folders together into one module assembly, as one project of the student's would have
+  /// built them: their classes may use each other, in any direction (see <see cref="AddModule"/> for
+  /// which files count). Adding the same unchanged folders again is a no-op.
+  /// </summary>
+  /// <exception cref="DirectoryNotFoundException">A folder does not exist.</exception>
+  /// <exception cref="ScriptCompilationException">A folder holds no classes, or a module file did not compile.</exception>
+  public ScriptModule AddModules(IEnumerable<string> directories)
   {
-    ArgumentException.ThrowIfNullOrEmpty(directory);
-    string dir = Path.GetFullPath(directory);
-    if (!Directory.Exists(dir))
-      throw new DirectoryNotFoundException($"Module folder not found: '{dir}'");
+    ArgumentNullException.ThrowIfNull(directories);
+    var dirs = new List<string>();
+    foreach (string directory in directories)
+    {
+      ArgumentException.ThrowIfNullOrEmpty(directory);
+      string dir = Path.GetFullPath(directory);
+      if (!Directory.Exists(dir))
+        throw new DirectoryNotFoundException($"Module folder not found: '{dir}'");
+      if (!dirs.Contains(dir))
+        dirs.Add(dir);
+    }
+    if (dirs.Count == 0)
+      throw new ArgumentException("No module folder given.", nameof(directories));
 
     // Scene scripts kept beside the classes, and build output, are not module code.
     var files = new List<string>();
     var sources = new List<string>();
     var trees = new List<SyntaxTree>();
     var scripts = new List<string>();
-    foreach (string file in ModuleFiles.Candidates(dir))
+    foreach (string dir in dirs)
     {
-      string text = File.ReadAllText(file);
-      SyntaxTree tree = ModuleFiles.Parse(file, text);
-      if (ModuleFiles.IsSceneScript(tree))
-        scripts.Add(file);
-      else
+      int before = files.Count, scriptsBefore = scripts.Count;
+      foreach (string file in ModuleFiles.Candidates(dir))
       {
-        files.Add(file);
-        sources.Add(text);
-        trees.Add(tree);
+        if (files.Contains(file) || scripts.Contains(file))
+          continue; // a folder inside another one given too
+        string text = File.ReadAllText(file);
+        SyntaxTree tree = ModuleFiles.Parse(file, text);
+        if (ModuleFiles.IsSceneScript(tree))
+          scripts.Add(file);
+        else
+        {
+          files.Add(file);
+          sources.Add(text);
+          trees.Add(tree);
+        }
       }
+      if (files.Count == before)
+        throw new ScriptCompilationException(dir, new[] { new ScriptDiagnostic(dir, 1, 1, "error", "GRCIS001",
+          scripts.Count == scriptsBefore ? "the module folder holds no *.cs file"
+                             : $"the module folder holds only scene scripts ({scripts.Count - scriptsBefore}), no classes; give a script as the scene, not as --module") });
     }
-    if (files.Count == 0)
-      throw new ScriptCompilationException(dir, new[] { new ScriptDiagnostic(dir, 1, 1, "error", "GRCIS001",
-        scripts.Count == 0 ? "the module folder holds no *.cs file"
-                           : $"the module folder holds only scene scripts ({scripts.Count}), no classes; give a script as the scene, not as --module") });
 
     var sb = new StringBuilder();
     for (int i = 0; i < files.Count; i++)
@@ -127,7 +154,7 @@ public sealed class ScriptHost : IDisposable
       ScriptModule? existing = modules.FirstOrDefault(m => m.ContentHash == hash);
       if (existing != null)
         return existing;
-      ScriptModule module = ScriptCompiler.CompileModule(dir, files, trees, hash, modules.ToArray());
+      ScriptModule module = ScriptCompiler.CompileModule(dirs, files, trees, hash, modules.ToArray(), OptimizeScripts);
       module.SkippedScripts = scripts;
       Interlocked.Increment(ref moduleCompilations);
       modules.Add(module);
@@ -187,22 +214,32 @@ public sealed class ScriptHost : IDisposable
   }
 
   /// <summary>Compiles (once) and runs the script file with the context protocol; see <see cref="Run"/>.</summary>
-  public ScriptScene Load(string path, string? param = null, Dictionary<string, object>? context = null) =>
-    Run(Compile(path), param, context);
+  public ScriptScene Load(string path, string? param = null, Dictionary<string, object>? context = null, ScriptContextInit? init = null) =>
+    Run(Compile(path), param, context, null, init);
 
   /// <summary>
-  /// Runs a compiled script with GrCis's context protocol. When <paramref name="context"/> holds fewer
-  /// than two entries, the script is first called with <c>Preprocessing = true</c> (and a throw-away
-  /// scene): it may simulate once, store results in a free context key and <c>return;</c>. Then the
-  /// regular call fills <paramref name="scene"/> (a new <see cref="DefaultRayScene"/> by default).
+  /// Runs a compiled script with GrCis's context protocol. First the context is filled as GrCis's
+  /// <c>Scripts.ContextInit</c> filled it (scene name, size, supersampling, animation range; see
+  /// <see cref="ScriptContextInit"/>). When <paramref name="context"/> held fewer than two entries, the
+  /// script is first called with <c>Preprocessing = true</c> (and a throw-away scene): it may simulate once,
+  /// store results in a free context key and <c>return;</c>. Then the regular call fills
+  /// <paramref name="scene"/> (a new <see cref="DefaultRayScene"/> by default).
   /// </summary>
+  /// <param name="init">
+  /// The values a script finds in the context: given, they replace what the context holds (GrCis refilled
+  /// them before every call); null fills only the keys the context lacks, with GrCis's defaults. A value the
+  /// script writes is its choice (a setting of the returned <see cref="ScriptScene"/>); a value it leaves
+  /// alone is not, even when it read it.
+  /// </param>
   /// <exception cref="ScriptRuntimeException">The script threw; the message names its line.</exception>
-  public ScriptScene Run(CompiledScript script, string? param = null, Dictionary<string, object>? context = null, IRayScene? scene = null)
+  public ScriptScene Run(CompiledScript script, string? param = null, Dictionary<string, object>? context = null, IRayScene? scene = null,
+                         ScriptContextInit? init = null)
   {
     ArgumentNullException.ThrowIfNull(script);
     context ??= new Dictionary<string, object>();
     bool preprocess = context.Count < 2;
     context[PropertyName.CTX_SCRIPT_PATH] = script.Path;
+    Dictionary<string, object> filled = FillContext(context, init, script.Path);
 
     if (preprocess)
     {
@@ -223,7 +260,32 @@ public sealed class ScriptHost : IDisposable
     context[PropertyName.CTX_SCENE] = scene;
     script.Run(scene, param, context);
 
-    return ReadSettings(new ScriptScene(script, scene, context, preprocess));
+    return ReadSettings(new ScriptScene(script, scene, context, preprocess), filled);
+  }
+
+  /// <summary>
+  /// Writes the values of <paramref name="init"/> (all of them), or GrCis's defaults where the context lacks
+  /// a key (no <paramref name="init"/>); returns the very objects written, so a script's own writes can be
+  /// told from them afterwards.
+  /// </summary>
+  static Dictionary<string, object> FillContext(Dictionary<string, object> context, ScriptContextInit? init, string path)
+  {
+    bool replace = init != null;
+    init ??= ScriptContextInit.Default;
+    var filled = new Dictionary<string, object>(7);
+    void Put(string key, object value)
+    {
+      if (replace || !context.ContainsKey(key))
+        filled[key] = context[key] = value;
+    }
+    Put(PropertyName.CTX_SCENE_NAME, init.SceneName ?? System.IO.Path.GetFileName(path));
+    Put(PropertyName.CTX_WIDTH, init.Width);
+    Put(PropertyName.CTX_HEIGHT, init.Height);
+    Put(PropertyName.CTX_SUPERSAMPLING, init.SuperSampling);
+    Put(PropertyName.CTX_START_ANIM, init.Start);
+    Put(PropertyName.CTX_END_ANIM, init.End);
+    Put(PropertyName.CTX_FPS, init.Fps);
+    return filled;
   }
 
   /// <summary>Unloads every cached script.</summary>
@@ -244,17 +306,20 @@ public sealed class ScriptHost : IDisposable
     }
   }
 
-  static ScriptScene ReadSettings(ScriptScene s)
+  /// <summary>The script's choices: the settings it wrote, not those the host filled in (<paramref name="filled"/>).</summary>
+  static ScriptScene ReadSettings(ScriptScene s, Dictionary<string, object> filled)
   {
     Dictionary<string, object> ctx = s.Context;
+    bool Chosen(string key) =>
+      ctx.TryGetValue(key, out object? value) && !(filled.TryGetValue(key, out object? ours) && ReferenceEquals(value, ours));
     int i = 0;
     double d = 0.0;
-    if (Util.TryParse(ctx, PropertyName.CTX_WIDTH, ref i)) s.Width = i;
-    if (Util.TryParse(ctx, PropertyName.CTX_HEIGHT, ref i)) s.Height = i;
-    if (Util.TryParse(ctx, PropertyName.CTX_SUPERSAMPLING, ref i)) s.SuperSampling = i;
-    if (Util.TryParse(ctx, PropertyName.CTX_START_ANIM, ref d)) s.Start = d;
-    if (Util.TryParse(ctx, PropertyName.CTX_END_ANIM, ref d)) s.End = d;
-    if (Util.TryParse(ctx, PropertyName.CTX_FPS, ref d)) s.Fps = d;
+    if (Chosen(PropertyName.CTX_WIDTH) && Util.TryParse(ctx, PropertyName.CTX_WIDTH, ref i)) s.Width = i;
+    if (Chosen(PropertyName.CTX_HEIGHT) && Util.TryParse(ctx, PropertyName.CTX_HEIGHT, ref i)) s.Height = i;
+    if (Chosen(PropertyName.CTX_SUPERSAMPLING) && Util.TryParse(ctx, PropertyName.CTX_SUPERSAMPLING, ref i)) s.SuperSampling = i;
+    if (Chosen(PropertyName.CTX_START_ANIM) && Util.TryParse(ctx, PropertyName.CTX_START_ANIM, ref d)) s.Start = d;
+    if (Chosen(PropertyName.CTX_END_ANIM) && Util.TryParse(ctx, PropertyName.CTX_END_ANIM, ref d)) s.End = d;
+    if (Chosen(PropertyName.CTX_FPS) && Util.TryParse(ctx, PropertyName.CTX_FPS, ref d)) s.Fps = d;
     if (Util.TryParse(ctx, PropertyName.CTX_TIME, ref d)) s.Time = d;
     if (ctx.TryGetValue(PropertyName.CTX_ALGORITHM, out object? alg) && alg is IImageFunction f) s.Algorithm = f;
     if (ctx.TryGetValue(PropertyName.CTX_SYNTHESIZER, out object? syn) && syn is IRenderer r) s.Synthesizer = r;

@@ -7,14 +7,18 @@ namespace GrCis.Scripting;
 
 /// <summary>
 /// A folder of ordinary C# files (with namespaces) compiled into an in-memory assembly that scene
-/// scripts reference: a GrCis extension module used without rebuilding the program.
+/// scripts reference: a GrCis extension module used without rebuilding the program. Several folders
+/// given together are one module (one assembly), so their classes may use each other.
 /// </summary>
 public sealed class ScriptModule
 {
-  internal ScriptModule(string directory, IReadOnlyList<string> files, string contentHash, Assembly assembly,
-                        MetadataReference reference, ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings)
+  internal ScriptModule(IReadOnlyList<string> directories, IReadOnlyList<string> files, string contentHash, Assembly assembly,
+                        MetadataReference reference, ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings,
+                        IReadOnlyDictionary<string, InstrumentedSource> sources)
   {
-    Directory = directory;
+    Directories = directories;
+    Directory = directories[0];
+    Sources = sources;
     Files = files;
     ContentHash = contentHash;
     Assembly = assembly;
@@ -23,8 +27,11 @@ public sealed class ScriptModule
     Warnings = warnings;
   }
 
-  /// <summary>Full path of the module folder.</summary>
+  /// <summary>Full path of the (first) module folder.</summary>
   public string Directory { get; }
+
+  /// <summary>Full paths of every folder compiled into this module, in the order given.</summary>
+  public IReadOnlyList<string> Directories { get; }
 
   /// <summary>The source files compiled (full paths, ordinal order).</summary>
   public IReadOnlyList<string> Files { get; }
@@ -46,4 +53,7 @@ public sealed class ScriptModule
   internal MetadataReference Reference { get; }
 
   internal ScriptLoadContext LoadContext { get; }
+
+  /// <summary>The compiled files, to map a stack frame back to the user's line.</summary>
+  internal IReadOnlyDictionary<string, InstrumentedSource> Sources { get; }
 }

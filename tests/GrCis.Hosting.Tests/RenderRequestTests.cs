@@ -32,6 +32,25 @@ public sealed class RenderRequestTests : IDisposable
     """;
 
   [Fact]
+  public void A_script_finds_the_requested_size_supersampling_and_animation_range_in_its_context_and_they_stay_the_requests()
+  {
+    using ScriptSceneSource source = Script("""
+      Rendering.Scenes.FiveBalls(scene);
+      context["seen"] = $"{context[PropertyName.CTX_SCENE_NAME]} {context[PropertyName.CTX_WIDTH]}x{context[PropertyName.CTX_HEIGHT]} " +
+                        $"ss{context[PropertyName.CTX_SUPERSAMPLING]} {context[PropertyName.CTX_START_ANIM]}-{context[PropertyName.CTX_END_ANIM]}@{context[PropertyName.CTX_FPS]}";
+      """);
+    PreparedRender setup = new RenderRequest(source, Small) { Start = 1.0, End = 3.0, Fps = 8.0 }.Prepare();
+    Assert.Equal("Scene.cs 48x32 ss4 1-3@8", setup.Script!.Context["seen"]);
+    // Read, not chosen: the settings are the request's and the range is not the script's.
+    Assert.Equal((48, 32, 4), (setup.Settings.Width, setup.Settings.Height, setup.Settings.SamplesPerPixel));
+    Assert.Null(setup.Timing!.Start);
+    Assert.Null(setup.Timing.Fps);
+
+    PreparedRender defaults = new RenderRequest(source, Small).Prepare();
+    Assert.Equal("Scene.cs 48x32 ss4 0-10@25", defaults.Script!.Context["seen"]);
+  }
+
+  [Fact]
   public void A_scripts_size_applies_unless_the_size_was_given()
   {
     using ScriptSceneSource source = Script(SizedScene);

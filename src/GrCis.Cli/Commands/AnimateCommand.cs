@@ -116,7 +116,12 @@ public sealed class AnimateCommand
 
     // The script runs once (its preprocessing too); every frame renders a clone of its scene.
     // Command line, then the script's context values (size, spp, range, …), then the defaults.
-    PreparedRender setup = RenderCommand.PrepareScene(new RenderRequest(source, settings, render.Given(parse)));
+    PreparedRender setup = RenderCommand.PrepareScene(new RenderRequest(source, settings, render.Given(parse))
+    {
+      Start = parse.GetValue(from),
+      End = parse.GetValue(to),
+      Fps = parse.GetValue(fps),
+    });
     settings = setup.Settings;
     MemoryBudget.Check(settings.Size);
     foreach (string note in setup.Notes)

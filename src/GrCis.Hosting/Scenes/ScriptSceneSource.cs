@@ -60,19 +60,23 @@ public sealed class ScriptSceneSource : ISceneSource, IDisposable
   /// Compiles the script as it is on disk now (the host compiles a content once) and runs it on a fresh context:
   /// preprocessing call, then the regular one.
   /// </summary>
+  /// <param name="init">What the script finds in its context (the front end's values); null = GrCis's defaults.</param>
   /// <exception cref="FileNotFoundException">The script file is gone.</exception>
   /// <exception cref="ScriptCompilationException">The script or a module did not compile.</exception>
   /// <exception cref="ScriptRuntimeException">The script threw; names its line.</exception>
-  public ScriptScene Load()
+  public ScriptScene Load(ScriptContextInit? init = null)
   {
     if (!modulesLoaded)
     {
-      foreach (string dir in modules)
-        host.AddModule(dir);
+      // All --module folders of one render are one assembly, as one project of the student's.
+      if (modules.Count > 0)
+        host.AddModules(modules);
       modulesLoaded = true;
     }
     Script = host.Compile(Path);
-    return host.Run(Script, Param, new Dictionary<string, object>(), new AnimatedRayScene());
+    init ??= ScriptContextInit.Default;
+    return host.Run(Script, Param, new Dictionary<string, object>(), new AnimatedRayScene(),
+                    init.SceneName == null ? init with { SceneName = DisplayName } : init);
   }
 
   public IRayScene CreateScene() => Load().Scene;

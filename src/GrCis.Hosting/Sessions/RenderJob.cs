@@ -34,6 +34,12 @@ public sealed class RenderJob
 
   public string Param { get; }
 
+  /// <summary>
+  /// Names the place in the user's code (script or module file and line) of an exception thrown while
+  /// rendering, or returns null when none of its frames is there (see <c>ScriptSceneSource.WithScriptLine</c>).
+  /// </summary>
+  public Func<Exception, Exception?>? LocateError { get; init; }
+
   public int Width => Settings.Width;
 
   public int Height => Settings.Height;
@@ -90,6 +96,7 @@ public sealed class RenderJob
       SceneTime.Set(scene, t);
 
     IImageFunction f = plan.CreateImageFunction();   // unbound when from the settings (see CreateImageFunction)
+    ScriptObjects.Wire(f, scene);
     ImageSynthesizer synth = plan.CreateSynthesizer();
     Bind(scene, f, synth, settings);
     return new RenderJob(scene, f, synth, settings, sceneName, param) { Notes = plan.Notes };
@@ -110,6 +117,8 @@ public sealed class RenderJob
     {
       Notes = prepared.Notes.ToArray(),
       Prepared = prepared,
+      // A class of the script that throws while rendering is named with its line, as grcis render names it.
+      LocateError = prepared.Script is { } run ? e => run.Script.FindScriptLine(e) : null,
     };
   }
 

@@ -132,6 +132,8 @@ public sealed class RenderSession : IDisposable
     catch (Exception ex) when (ex is RenderException or AggregateException)
     {
       error = ex is AggregateException agg ? agg.Flatten().InnerExceptions[0] : ex;
+      // A script's or module's class threw: say where, as grcis render does.
+      error = job.LocateError?.Invoke(error.InnerException ?? error) ?? error;
     }
     finally
     {
@@ -227,7 +229,7 @@ public sealed class RenderSession : IDisposable
       () =>
       {
         MT.InitThreadData();
-        MT.SetRendering(SceneCloner.CloneForWorker(job.Scene), job.ImageFunction, renderer);
+        MT.SetRendering(SceneCloner.ForFrameWorker(job.Scene, job.ImageFunction), job.ImageFunction, renderer);
         MT.seed = options.Seed;
         MT.frame = options.Frame;
         return (Color: new double[target.Bands], Scope: context.Enter());

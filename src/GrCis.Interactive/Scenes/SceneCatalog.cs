@@ -147,8 +147,12 @@ public sealed class SceneCatalog
   /// the script's tooltip and its own values (size, supersampling, animation range) for the UI.
   /// </summary>
   /// <param name="given">The settings the user gave, which win over the script's (<see cref="Precedence"/>).</param>
+  /// <param name="start">The animation start the user gave (the script finds it in its context, as with <c>grcis animate --from</c>).</param>
+  /// <param name="end">The animation end the user gave.</param>
+  /// <param name="fps">The frame rate the user gave.</param>
   /// <exception cref="SceneEvaluationException">The scene could not be built; the message is for the user.</exception>
-  public BuiltScene Build(SceneEntry entry, string? param, RenderSettings settings, GivenSettings given = RenderJob.Given)
+  public BuiltScene Build(SceneEntry entry, string? param, RenderSettings settings, GivenSettings given = RenderJob.Given,
+                          double? start = null, double? end = null, double? fps = null)
   {
     ArgumentNullException.ThrowIfNull(entry);
     ArgumentNullException.ThrowIfNull(settings);
@@ -167,7 +171,7 @@ public sealed class SceneCatalog
     PreparedRender prepared;
     try
     {
-      prepared = new RenderRequest(source, settings, given, settings.Time).Prepare();
+      prepared = new RenderRequest(source, settings, given, settings.Time) { Start = start, End = end, Fps = fps }.Prepare();
     }
     catch (Exception ex) when (ex is ScriptCompilationException or ScriptRuntimeException or ScriptChoiceException)
     {

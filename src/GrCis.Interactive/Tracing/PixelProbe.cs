@@ -31,7 +31,7 @@ public static class PixelProbe
     {
       MT.InitThreadData();
       // A clone for time-dependent scenes, so a motion-blur function cannot move the job's scene.
-      IRayScene scene = SceneCloner.CloneForWorker(job.Scene);
+      IRayScene scene = SceneCloner.ForFrameWorker(job.Scene, job.ImageFunction);
       MT.SetRendering(scene, job.ImageFunction, job.Renderer);
       MT.seed = job.Options.Seed;
       MT.frame = job.Options.Frame;

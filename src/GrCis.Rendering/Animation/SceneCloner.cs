@@ -16,6 +16,21 @@ public static class SceneCloner
     return IsTimeDependent(scene) ? (IRayScene)((ITimeDependent)scene).Clone() : scene;
   }
 
+  /// <summary>
+  /// The scene a worker of one frame renders: the frame's scene itself, shared read-only, as GrCis shared a
+  /// still's scene among its threads; a clone (<see cref="CloneForWorker(IRayScene)"/>) only when
+  /// <paramref name="function"/> moves the time per sample (motion blur), so workers must not share it.
+  /// A student's <c>Clone()</c> is often incomplete, so it is called only where GrCis would have called it.
+  /// </summary>
+  public static IRayScene ForFrameWorker(IRayScene scene, IImageFunction function)
+  {
+    ArgumentNullException.ThrowIfNull(scene);
+    return MovesTime(function) ? CloneForWorker(scene) : scene;
+  }
+
+  /// <summary>True when <paramref name="function"/> sets the time of the worker's scene while it renders.</summary>
+  public static bool MovesTime(IImageFunction? function) => function is MotionBlurImageFunction { Shutter: > 0.0 };
+
   /// <summary>Whether setting the scene's time can change anything a worker sees.</summary>
   public static bool IsTimeDependent(IRayScene scene) => scene switch
   {

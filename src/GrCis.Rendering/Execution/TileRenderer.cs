@@ -90,9 +90,9 @@ public static class TileRenderer
       MT.frame = options.Frame;
       try
       {
-        // Each worker owns a clone of the time-dependent parts ("clone on write"), so a component
-        // may set the time of its worker's scene (motion blur) without touching other workers.
-        MT.SetRendering(SceneCloner.CloneForWorker(scene), imageFunction, renderer);
+        // Workers share the frame's scene; only a function that moves time per sample (motion blur) gets each
+        // worker its own clone of the time-dependent parts ("clone on write").
+        MT.SetRendering(SceneCloner.ForFrameWorker(scene, imageFunction), imageFunction, renderer);
         while (!cancel.IsCancellationRequested && failure.Exception == null &&
                (k = Interlocked.Increment(ref next)) < tiles.Count)
         {

@@ -149,6 +149,9 @@ public class RayCasting : IImageFunction
     return ps;
   }
 
+  /// <summary>The scene this function is bound to (given to the constructor or set), or null: it renders <see cref="MT.scene"/>.</summary>
+  public IRayScene? BoundScene => scene;
+
   /// <summary>The scene: the one given to the constructor, else the thread's current scene.</summary>
   public IRayScene Scene
   {

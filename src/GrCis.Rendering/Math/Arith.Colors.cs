@@ -47,6 +47,10 @@ public partial class Arith
     (hue, saturation, value) = ((float)h, (float)s, (float)v);
   }
 
+  /// <summary>GrCis's name of <see cref="HSVtoRGB(double, double, double, out double, out double, out double)"/> from October 2019 to October 2020.</summary>
+  public static void HSVToRGB(double hue, double saturation, double value, out double R, out double G, out double B) =>
+    HSVtoRGB(hue, saturation, value, out R, out G, out B);
+
   /// <summary>RGB of (hue in degrees, any real number; saturation; value), negative results clamped to 0.</summary>
   public static void HSVtoRGB(double hue, double saturation, double value, out double R, out double G, out double B)
   {

@@ -31,6 +31,13 @@ public partial class Scenes
     ["Bezier"] = new InitSceneDelegate(Bezier),
   };
 
+  /// <summary>GrCis's name of <see cref="staticRepository"/> until March 2018 (course years 2015/16 and 2016/17).</summary>
+  public static Dictionary<string, object> Repository
+  {
+    get => staticRepository;
+    set => staticRepository = value;
+  }
+
   public static long TeapotObj(IRayScene sc, string[] names) =>
     SceneObj(sc, new Vector3d(0.1, -0.3, 0.9), 50.0, 0.9, "teapot.obj", names, new[] { 1.0, 0.6, 0.0 });
 

@@ -53,6 +53,9 @@ public static partial class Util
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref int val) =>
     TryGet(rec, key, out string? s) && TryParseText(s, ref val);
 
+  /// <summary>GrCis's name of the integer <see cref="TryParse(Dictionary{string, string}?, string, ref int)"/> until May 2020.</summary>
+  public static bool TryParseInt(Dictionary<string, string>? rec, string key, ref int val) => TryParse(rec, key, ref val);
+
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref long val) =>
     TryGet(rec, key, out string? s) && TryParseText(s, ref val);
 

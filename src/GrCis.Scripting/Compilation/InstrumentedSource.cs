@@ -28,6 +28,33 @@ internal sealed class InstrumentedSource
 
   public SourceText Instrumented { get; }
 
+  /// <summary>
+  /// The same mapping over <see cref="Instrumented"/> with <paramref name="span"/> replaced by
+  /// <paramref name="text"/>: a shorter text is padded with spaces, the characters of a longer one beyond the
+  /// span count as inserted there, so every other position still maps to the user's file.
+  /// </summary>
+  public InstrumentedSource WithReplacement(TextSpan span, string text)
+  {
+    if (text.Length <= span.Length)
+      return WithInstrumented(Instrumented.WithChanges(new TextChange(span, text.PadRight(span.Length))));
+    int at = ToOriginal(span.End);
+    int extra = text.Length - span.Length;
+    var merged = new System.Collections.Generic.List<(int Position, int Length)>(insertions.Length + 1);
+    bool added = false;
+    foreach ((int position, int length) in insertions)
+    {
+      if (!added && position > at)
+      {
+        merged.Add((at, extra));
+        added = true;
+      }
+      merged.Add((position, length));
+    }
+    if (!added)
+      merged.Add((at, extra));
+    return new InstrumentedSource(Original, Instrumented.WithChanges(new TextChange(span, text)), merged.ToArray());
+  }
+
   /// <summary>The offset in the original text of an offset in the instrumented one (inside an insertion: where it was inserted).</summary>
   public int ToOriginal(int offset)
   {

@@ -20,8 +20,13 @@ internal static class ModuleFiles
   /// <summary>Build output and tool folders of a C# project (generated AssemblyInfo files would clash).</summary>
   static readonly string[] skippedFolders = { "bin", "obj", ".git", ".vs", ".idea", "node_modules" };
 
-  /// <summary>How module files are parsed (regular C#, not the script dialect).</summary>
-  public static readonly CSharpParseOptions ParseOptions = new(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Regular);
+  /// <summary>
+  /// How module files are parsed: regular C# (not the script dialect) with <c>DEBUG</c> and <c>TRACE</c>
+  /// defined, as the Debug build of a student's GrCis project defined them (<c>#if DEBUG</c> blocks and
+  /// <c>Debug.Assert</c> calls are compiled, see <see cref="Assertions"/>).
+  /// </summary>
+  public static readonly CSharpParseOptions ParseOptions =
+    new CSharpParseOptions(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Regular).WithPreprocessorSymbols("DEBUG", "TRACE");
 
   /// <summary>A module file's text, parsed once: to tell scene scripts apart and then to compile.</summary>
   public static SyntaxTree Parse(string path, string source) =>

@@ -1,40 +1,46 @@
 using System;
+using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
 
 namespace GrCis.Scripting.Compilation;
 
-/// <summary>Maps an exception thrown by script code to the script's own line via the emitted PDB.</summary>
+/// <summary>Maps an exception thrown by a script's or a module's code to the user's own line via the emitted PDBs.</summary>
 internal static class RuntimeErrors
 {
-  public static ScriptRuntimeException Wrap(Exception ex, string scriptPath, InstrumentedSource source)
+  /// <summary>How file names of stack frames are compared with the user's files.</summary>
+  public static StringComparer PathComparer => OperatingSystem.IsWindows() ? StringComparer.OrdinalIgnoreCase : StringComparer.Ordinal;
+
+  /// <summary>The exception wrapped with the place in the user's code that threw; without one, with the script's path and no line.</summary>
+  public static ScriptRuntimeException Wrap(Exception ex, string scriptPath, IReadOnlyDictionary<string, InstrumentedSource> sources)
   {
-    if (ex is ScriptRuntimeException sre && sre.Path == scriptPath)
+    if (ex is ScriptRuntimeException sre && sources.ContainsKey(sre.Path))
       return sre;
-    FindScriptFrame(ex, scriptPath, source, out int line, out int column);
-    return new ScriptRuntimeException(scriptPath, line, column, ex);
+    return Locate(ex, sources) ?? new ScriptRuntimeException(scriptPath, 0, 0, ex);
   }
 
-  /// <summary>The innermost frame of <paramref name="ex"/> (or its inner exceptions) located in the script.</summary>
-  public static bool FindScriptFrame(Exception ex, string scriptPath, InstrumentedSource source, out int line, out int column)
+  /// <summary>
+  /// The exception wrapped with the innermost frame of <paramref name="ex"/> (or of an inner exception) that lies in
+  /// one of <paramref name="sources"/> (the script and its modules), or null when none does.
+  /// </summary>
+  public static ScriptRuntimeException? Locate(Exception ex, IReadOnlyDictionary<string, InstrumentedSource> sources)
   {
-    StringComparison cmp = OperatingSystem.IsWindows() ? StringComparison.OrdinalIgnoreCase : StringComparison.Ordinal;
     for (Exception? e = ex; e != null; e = e.InnerException)
     {
       StackFrame[] frames = new StackTrace(e, fNeedFileInfo: true).GetFrames();
       foreach (StackFrame f in frames)
       {
         string? file = f.GetFileName();
-        if (file != null && f.GetFileLineNumber() > 0 &&
-            string.Equals(Path.GetFullPath(file), scriptPath, cmp))
-        {
-          line = f.GetFileLineNumber();
-          column = source.OriginalColumn(line, f.GetFileColumnNumber());
-          return true;
-        }
+        if (file == null || f.GetFileLineNumber() <= 0)
+          continue;
+        string full = Path.GetFullPath(file);
+        if (!sources.TryGetValue(full, out InstrumentedSource? source))
+          continue;
+        int line = f.GetFileLineNumber();
+        // The exception that passed through the user's line (not a wrapper the renderer added around it).
+        return new ScriptRuntimeException(full, line, source.OriginalColumn(line, f.GetFileColumnNumber()), e);
       }
     }
-    line = column = 0;
-    return false;
+    return null;
   }
 }

@@ -73,8 +73,10 @@ internal static class ScriptCompiler
     var sources = new Dictionary<SyntaxTree, InstrumentedSource> { [tree] = instrumented };
     var removed = new List<MissingNamespaces.Removed>();
     compilation = DropMissingNamespaces(compilation, sources, scriptParseOptions, removed);
+    var overrides = new List<OverrideAccess.Changed>();
+    compilation = OverrideAccess.Normalize(compilation, sources, scriptParseOptions, overrides);
     instrumented = sources.Values.Single();
-    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, path, sources, removed);
+    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, path, sources, removed, overrides);
 
     IMethodSymbol entry = compilation.GetEntryPoint(CancellationToken.None)
       ?? throw new InvalidOperationException($"{path}: the script compilation has no entry point.");
@@ -86,13 +88,15 @@ internal static class ScriptCompiler
     MethodInfo method = assembly.GetType(typeName, throwOnError: true)!.GetMethod(entry.MetadataName, BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Static)
       ?? throw new InvalidOperationException($"{path}: the script entry point {entry.MetadataName} was not found.");
     var factory = method.CreateDelegate<Func<object?[], Task<object?>>>();
-    return new CompiledScript(path, key, factory, context, warnings, instrumented);
+    return new CompiledScript(path, key, factory, context, warnings, instrumented, modules);
   }
 
   /// <param name="parsed">The files' trees, parsed with <see cref="ModuleFiles.Parse"/>.</param>
-  public static ScriptModule CompileModule(string directory, IReadOnlyList<string> files, IReadOnlyList<SyntaxTree> parsed,
-                                           string hash, IReadOnlyList<ScriptModule> earlier)
+  /// <param name="directories">The module folders compiled together (one assembly, so they may use each other).</param>
+  public static ScriptModule CompileModule(IReadOnlyList<string> directories, IReadOnlyList<string> files, IReadOnlyList<SyntaxTree> parsed,
+                                           string hash, IReadOnlyList<ScriptModule> earlier, bool optimize)
   {
+    string directory = directories[0];
     var trees = new List<SyntaxTree>(files.Count);
     var instrumented = new Dictionary<SyntaxTree, InstrumentedSource>();
     for (int i = 0; i < files.Count; i++)
@@ -102,9 +106,10 @@ internal static class ScriptCompiler
       instrumented[tree] = source;
     }
 
+    // Debug code as a student's Debug build (and as scripts): no inlining, so an error or a failed assertion names its line.
     var options = new CSharpCompilationOptions(
       OutputKind.DynamicallyLinkedLibrary,
-      optimizationLevel: OptimizationLevel.Release,
+      optimizationLevel: optimize ? OptimizationLevel.Release : OptimizationLevel.Debug,
       allowUnsafe: true,
       nullableContextOptions: NullableContextOptions.Disable,
       concurrentBuild: false);
@@ -121,11 +126,14 @@ internal static class ScriptCompiler
 
     var removed = new List<MissingNamespaces.Removed>();
     compilation = DropMissingNamespaces(compilation, instrumented, moduleParseOptions, removed);
-    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed);
+    var overrides = new List<OverrideAccess.Changed>();
+    compilation = OverrideAccess.Normalize(compilation, instrumented, moduleParseOptions, overrides);
+    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides);
     byte[] image = pe.ToArray();
     var context = new ScriptLoadContext(assemblyName, ModuleMap(earlier));
     Assembly assembly = context.LoadFromStream(new MemoryStream(image), pdb);
-    return new ScriptModule(directory, files, hash, assembly, MetadataReference.CreateFromImage(image), context, warnings);
+    return new ScriptModule(directories, files, hash, assembly, MetadataReference.CreateFromImage(image), context, warnings,
+      instrumented.ToDictionary(kv => kv.Key.FilePath, kv => kv.Value, StringComparer.Ordinal));
   }
 
   /// <summary>The user's tree with interruption points inserted (see <see cref="InterruptionPoints"/>), parsed again, and the way back to the original.</summary>
@@ -161,7 +169,7 @@ internal static class ScriptCompiler
 
   static (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) Emit(
     CSharpCompilation compilation, string path, IReadOnlyDictionary<SyntaxTree, InstrumentedSource> sources,
-    IReadOnlyList<MissingNamespaces.Removed> removed)
+    IReadOnlyList<MissingNamespaces.Removed> removed, IReadOnlyList<OverrideAccess.Changed> overrides)
   {
     var pe = new MemoryStream();
     var pdb = new MemoryStream();
@@ -171,9 +179,11 @@ internal static class ScriptCompiler
     {
       // First what is gone, then the errors it causes.
       diagnostics.InsertRange(0, MissingNamespaces.Report(removed, compiled: false));
+      diagnostics.AddRange(OverrideAccess.Report(overrides));
       throw new ScriptCompilationException(path, diagnostics);
     }
     diagnostics.AddRange(MissingNamespaces.Report(removed, compiled: true));
+    diagnostics.AddRange(OverrideAccess.Report(overrides));
     pe.Position = 0;
     pdb.Position = 0;
     return (pe, pdb, diagnostics);
