@@ -26,6 +26,8 @@ public sealed class DemoController : IDisposable
   // The render asked for last (events of a replaced one are ignored) and whether its scene is being built.
   long renderId;
   bool building;
+  // The last render whose completion was raised: done for the page even while its session winds down.
+  long finishedId;
 
   public DemoController(SceneCatalog catalog) => Catalog = catalog ?? throw new ArgumentNullException(nameof(catalog));
 
@@ -113,7 +115,7 @@ public sealed class DemoController : IDisposable
     get
     {
       lock (sync)
-        return building || (session?.IsRunning ?? false);
+        return building || (session?.IsRunning == true && finishedId != renderId);
     }
   }
 
@@ -278,8 +280,12 @@ public sealed class DemoController : IDisposable
       };
       s.Completed += (_, e) =>
       {
-        if (id != RenderId)
-          return;
+        lock (sync)
+        {
+          if (id != renderId)
+            return;
+          finishedId = id;
+        }
         // On the UI context when one is set, so history and the display change together.
         LastResult = e.Result;
         History.Add(RenderRecord.From(e.Result));

@@ -80,6 +80,10 @@ public sealed class ScriptValuesTests(StudioFixture studio) : IClassFixture<Stud
 
     JsonElement both = await studio.RenderAndWait(new { scene = name, settings = Settings, given = new[] { "Size", "samplesPerPixel" } });
     Assert.Equal(1, both.GetProperty("samplesPerPixel").GetInt32());
+    JsonElement history = await studio.Client.GetFromJsonAsync<JsonElement>("/api/history");
+    JsonElement current = history.GetProperty("items")[history.GetProperty("position").GetInt32()];
+    Assert.StartsWith(name, current.GetProperty("label").GetString());
+    Assert.Contains("24x18, 1 spp", current.GetProperty("label").GetString());
 
     using HttpResponseMessage bad = await studio.Client.PostAsJsonAsync("/api/render", new { scene = name, settings = Settings, given = new[] { "Colour" } });
     Assert.Equal(HttpStatusCode.BadRequest, bad.StatusCode);
