@@ -137,6 +137,7 @@ public sealed class StudioSession : IDisposable
         Progressive = Controller.Progressive,
         Samples = samples,
         Noise = noise,
+        RenderId = Controller.RenderId,
         Width = Controller.LastJob?.Width,
         Height = Controller.LastJob?.Height,
         SamplesPerPixel = Controller.LastJob?.Settings.SamplesPerPixel,

@@ -53,7 +53,9 @@ public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixtu
              new { scene = "Five balls", settings = new { width = 1200, height = 900, samplesPerPixel = 16, threads = 2 } }))
       Assert.Equal(HttpStatusCode.Accepted, first.StatusCode);
     await studio.PollUntil("/api/status", s => s.GetProperty("version").GetInt32() > 0 || s.GetProperty("fraction").GetDouble() > 0, "the first render's progress");
+    long replaced = (await Status()).GetProperty("renderId").GetInt64();
     JsonElement done = await studio.RenderAndWait(new { scene = "Five balls", settings = new { width = 40, height = 30, threads = 2 } });
+    Assert.Equal(replaced + 1, done.GetProperty("renderId").GetInt64());
     Assert.StartsWith("40x30", done.GetProperty("statistics").GetString());
     Assert.Equal(40, done.GetProperty("width").GetInt32());
     // Still the second's a while later: the replaced render's completion was not taken for it.
