@@ -182,6 +182,7 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     Until(browser, () => browser.FindElement(By.Id("stats")).Text.StartsWith("24x30", StringComparison.Ordinal) &&
                          !browser.FindElement(By.Id("stop")).Enabled, "the render at the user's width");
     Assert.Contains("4 spp", browser.FindElement(By.Id("stats")).Text);
+    Until(browser, () => browser.FindElement(By.Id("historyLabel")).Text.Contains("OwnValues", StringComparison.Ordinal), "the render in the history");
 
     // Another scene and back: the script's own values again.
     Js(browser, "const s = document.getElementById('scene'); s.value = 'Five balls'; s.dispatchEvent(new Event('change'));");

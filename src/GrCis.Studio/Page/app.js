@@ -6,7 +6,7 @@ const $ = id => document.getElementById(id);
 const canvas = $("canvas"), ctx = canvas.getContext("2d");
 let scenes = [], shownVersion = -1, polling = null;
 let zoom = 1, panX = 0, panY = 0, drag = null;
-let viewsFor = -1, hoverTimer = null;
+let viewsFor = -1, hoverTimer = null, historyFor = -1;
 let editor = null, editedScene = null, marks = [], lastProbe = null;
 // Settings the user changed since the scene was chosen: they win over the script's own values (as command-line
 // options do); the other fields show the script's values, marked, and are sent as not given.
@@ -172,9 +172,11 @@ async function poll() {
   $("messages").textContent = [...s.notes, s.error, pageError].filter(Boolean).join("\n");
   showDiagnostics(s.diagnostics);
   $("stop").disabled = !s.rendering;
-  if (s.version !== shownVersion && s.version > 0) {
-    await showImage(s.version);
-    if (!s.rendering) await loadHistory();
+  if (s.version !== shownVersion && s.version > 0) await showImage(s.version);
+  // The history once per finished image (the image fetched may already be newer than the status that asked for it).
+  if (!s.rendering && s.version > 0 && s.version !== historyFor) {
+    historyFor = s.version;
+    await loadHistory();
   }
   return s.rendering;
 }
