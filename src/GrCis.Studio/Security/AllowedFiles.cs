@@ -56,7 +56,9 @@ public sealed class AllowedFiles
     // Links are skipped (not followed into subfolders, not listed): a linked script is opened by its path, when its target is allowed.
     var options = new EnumerationOptions
     {
-      RecurseSubdirectories = true, IgnoreInaccessible = true, MaxRecursionDepth = 8,
+      RecurseSubdirectories = true,
+      IgnoreInaccessible = true,
+      MaxRecursionDepth = 8,
       AttributesToSkip = FileAttributes.Hidden | FileAttributes.System | FileAttributes.ReparsePoint,
     };
     foreach (string folder in folders)
