@@ -44,6 +44,13 @@ internal static class ScriptCompiler
 
   static int serial;
 
+  /// <summary>
+  /// Warnings about code that is right for its GrCis year: CS9191, a <c>ref</c> argument (OpenTK 3's
+  /// <c>Vector3d.Add(ref a, ref b, out c)</c>) for an <c>in</c> parameter (OpenTK 4's signature, which ours is).
+  /// </summary>
+  static readonly ImmutableDictionary<string, ReportDiagnostic> QuietWarnings =
+    ImmutableDictionary<string, ReportDiagnostic>.Empty.Add("CS9191", ReportDiagnostic.Suppress);
+
   public static CompiledScript CompileScript(string path, string source, string key, IReadOnlyList<ScriptModule> modules, bool optimize)
   {
     int nul = source.IndexOf('\0', StringComparison.Ordinal);
@@ -63,6 +70,7 @@ internal static class ScriptCompiler
       optimizationLevel: optimize ? OptimizationLevel.Release : OptimizationLevel.Debug,
       allowUnsafe: true,
       nullableContextOptions: NullableContextOptions.Disable,
+      specificDiagnosticOptions: QuietWarnings,
       concurrentBuild: false);
 
     string assemblyName = $"GrCisScript{Interlocked.Increment(ref serial)}_{key[..12]}";
@@ -75,6 +83,7 @@ internal static class ScriptCompiler
     compilation = DropMissingNamespaces(compilation, sources, scriptParseOptions, removed);
     var overrides = new List<OverrideAccess.Changed>();
     compilation = OverrideAccess.Normalize(compilation, sources, scriptParseOptions, overrides);
+    compilation = DataFileCalls.Rewrite(compilation, sources, scriptParseOptions);
     instrumented = sources.Values.Single();
     (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, path, sources, removed, overrides);
 
@@ -112,6 +121,7 @@ internal static class ScriptCompiler
       optimizationLevel: optimize ? OptimizationLevel.Release : OptimizationLevel.Debug,
       allowUnsafe: true,
       nullableContextOptions: NullableContextOptions.Disable,
+      specificDiagnosticOptions: QuietWarnings,
       concurrentBuild: false);
 
     // GrCis was written against OpenTK 3, whose math types live in namespace OpenTK: students write
@@ -128,6 +138,7 @@ internal static class ScriptCompiler
     compilation = DropMissingNamespaces(compilation, instrumented, moduleParseOptions, removed);
     var overrides = new List<OverrideAccess.Changed>();
     compilation = OverrideAccess.Normalize(compilation, instrumented, moduleParseOptions, overrides);
+    compilation = DataFileCalls.Rewrite(compilation, instrumented, moduleParseOptions);
     (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides);
     byte[] image = pe.ToArray();
     var context = new ScriptLoadContext(assemblyName, ModuleMap(earlier));
