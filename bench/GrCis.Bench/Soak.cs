@@ -74,8 +74,8 @@ public static class Soak
     {
       string path = Path.Combine(dir, "Edited.cs");
       File.WriteAllText(path, Script(0));
-      using var evaluator = new ScriptHostEvaluator();
-      var catalog = new SceneCatalog(evaluator);
+      using var scripts = new GrCis.Scripting.ScriptHost();
+      var catalog = new SceneCatalog(scripts);
       using var demo = new DemoController(catalog) { Selected = catalog.AddScriptFile(path) };
       demo.Settings = demo.Settings with { Threads = Environment.ProcessorCount };
 
@@ -95,7 +95,7 @@ public static class Soak
           long managed = FullCollect();
           long workingSet = Process.GetCurrentProcess().WorkingSet64;
           output.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"{pattern},{r},{clock.Elapsed.TotalMilliseconds:0},{managed / 1048576.0:0.0},{workingSet / 1048576.0:0.0},{LiveScriptContexts()},{evaluator.Host.CompilationCount}"));
+            $"{pattern},{r},{clock.Elapsed.TotalMilliseconds:0},{managed / 1048576.0:0.0},{workingSet / 1048576.0:0.0},{LiveScriptContexts()},{scripts.CompilationCount}"));
           output.Flush();
         }
       }

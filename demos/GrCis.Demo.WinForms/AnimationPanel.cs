@@ -5,6 +5,7 @@ using System.IO;
 using System.Threading;
 using System.Threading.Tasks;
 using System.Windows.Forms;
+using GrCis.Hosting;
 using GrCis.Interactive;
 
 namespace GrCis.Demo.WinForms;
@@ -19,8 +20,12 @@ sealed class AnimationPanel : FlowLayoutPanel
   readonly CheckBox still = new() { Text = "Still at time", AutoSize = true, Anchor = AnchorStyles.Left };
   readonly NumericUpDown time = Number(0m);
   readonly NumericUpDown from = Number(0m);
-  readonly NumericUpDown to = Number(1m);
-  readonly NumericUpDown fps = new() { Minimum = 0.1m, Maximum = 240m, DecimalPlaces = 1, Value = 25m, Width = 60 };
+  readonly NumericUpDown to = Number((decimal)AnimationRange.DefaultEnd);
+  readonly NumericUpDown fps = new() { Minimum = 0.1m, Maximum = 240m, DecimalPlaces = 1, Value = (decimal)AnimationRange.DefaultFps, Width = 60 };
+  readonly ToolTip tips = new();
+  // The boxes the user changed since the scene was chosen: their values win; the others are the script's (else the defaults).
+  readonly System.Collections.Generic.HashSet<NumericUpDown> given = new();
+  bool showing;
   readonly Button animate = new() { Text = "Animate…", AutoSize = true };
   readonly Button stop = new() { Text = "Stop", AutoSize = true, Enabled = false };
   readonly Label status = new() { AutoSize = true, Anchor = AnchorStyles.Left };
@@ -47,6 +52,14 @@ sealed class AnimationPanel : FlowLayoutPanel
 
     still.CheckedChanged += (_, _) => ApplyStillTime();
     time.ValueChanged += (_, _) => ApplyStillTime();
+    foreach (NumericUpDown box in new[] { from, to, fps })
+      box.ValueChanged += (_, _) =>
+      {
+        if (showing)
+          return;
+        given.Add(box);
+        Mark(box, false);
+      };
     animate.Click += async (_, _) => await AnimateAsync();
     stop.Click += (_, _) => running?.Cancel();
   }
@@ -54,15 +67,33 @@ sealed class AnimationPanel : FlowLayoutPanel
   /// <summary>A frame was rendered (on the UI thread): show it.</summary>
   public event EventHandler<FrameRenderedEventArgs>? FrameShown;
 
-  /// <summary>The script's range and frame rate, when it set them (CTX_START_ANIM, CTX_END_ANIM, CTX_FPS).</summary>
+  /// <summary>
+  /// A scene was chosen or built: each box shows the script's value (CTX_START_ANIM, CTX_END_ANIM, CTX_FPS), marked as
+  /// the script's, else the default (0 to 10 s at 25 fps, what grcis animate takes); a box the user changed keeps theirs.
+  /// </summary>
   public void ShowOverrides(SceneOverrides? overrides)
   {
-    if (overrides?.Start is double s)
-      from.Value = Clamp(from, s);
-    if (overrides?.End is double e)
-      to.Value = Clamp(to, e);
-    if (overrides?.Fps is double f)
-      fps.Value = Clamp(fps, f);
+    showing = true;
+    Show(from, overrides?.Start, AnimationRange.DefaultStart);
+    Show(to, overrides?.End, AnimationRange.DefaultEnd);
+    Show(fps, overrides?.Fps, AnimationRange.DefaultFps);
+    showing = false;
+  }
+
+  void Show(NumericUpDown box, double? script, double fallback)
+  {
+    if (script is double v)
+      given.Remove(box);   // a newly chosen script's value shows until changed again
+    else if (given.Contains(box))
+      return;
+    box.Value = Clamp(box, script ?? fallback);
+    Mark(box, script != null);
+  }
+
+  void Mark(NumericUpDown box, bool script)
+  {
+    box.ForeColor = script ? SystemColors.HotTrack : SystemColors.WindowText;
+    tips.SetToolTip(box, script ? "The script's value; change it to use your own" : null);
   }
 
   void ApplyStillTime() =>
@@ -84,7 +115,8 @@ sealed class AnimationPanel : FlowLayoutPanel
     AnimationRun run;
     try
     {
-      run = controller.CreateAnimation((double)from.Value, (double)to.Value, (double)fps.Value);
+      // The user's values win; the others are the script's, else the scene's, else the defaults (grcis animate's rule).
+      run = controller.CreateAnimation(Given(from), Given(to), Given(fps));
     }
     catch (Exception ex) when (ex is SceneEvaluationException or ArgumentException or InvalidOperationException)
     {
@@ -122,6 +154,8 @@ sealed class AnimationPanel : FlowLayoutPanel
       $"frame {e.FramesDone} / {e.FramesTotal} (t = {e.Time:0.###}), ETA {e.Eta:hh\\:mm\\:ss}");
     FrameShown?.Invoke(this, e);
   }
+
+  double? Given(NumericUpDown box) => given.Contains(box) ? (double)box.Value : null;
 
   static NumericUpDown Number(decimal value) =>
     new() { Minimum = -100000m, Maximum = 100000m, DecimalPlaces = 3, Increment = 0.1m, Value = value, Width = 70 };

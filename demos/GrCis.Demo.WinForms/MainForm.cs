@@ -121,7 +121,13 @@ sealed class MainForm : Form
     };
     controller.ProgressChanged += (_, e) => progress.Value = (int)Math.Round(e.Fraction * progress.Maximum);
     controller.RenderCompleted += (_, e) => Finished(e.Result);
-    controller.Error += (_, message) => MessageBox.Show(this, message, Text, MessageBoxButtons.OK, MessageBoxIcon.Warning);
+    controller.Error += (_, message) =>
+    {
+      // A script that failed to build (a save watched with "Re-render on save" too) leaves nothing running.
+      if (!controller.IsBusy)
+        Stopped();
+      MessageBox.Show(this, message, Text, MessageBoxButtons.OK, MessageBoxIcon.Warning);
+    };
     controller.History.Changed += (_, _) => ShowHistoryButtons();
     controller.ScriptChanged += (_, _) => Started();
 
@@ -131,6 +137,7 @@ sealed class MainForm : Form
         return;
       controller.Selected = scenes.SelectedItem as SceneEntry;
       ShowSceneInfo(controller.Selected);
+      _ = ReadScriptValuesAsync();
     };
     param.TextChanged += (_, _) =>
     {
@@ -141,11 +148,12 @@ sealed class MainForm : Form
     addScript.Click += (_, _) => AddScript();
 
     resolution.Click += (_, _) => ChooseResolution();
-    supersampling.ValueChanged += (_, _) => Apply(s => s with { SamplesPerPixel = (int)supersampling.Value });
-    jitter.CheckedChanged += (_, _) => Apply(s => s with { Jitter = jitter.Checked ? 1.0 : 0.0 });
-    shadows.CheckedChanged += (_, _) => Apply(s => s with { Shadows = shadows.Checked });
-    reflections.CheckedChanged += (_, _) => Apply(s => s with { Reflections = reflections.Checked });
-    refractions.CheckedChanged += (_, _) => Apply(s => s with { Refractions = refractions.Checked });
+    // A field the user changes is given: it wins over the script's own value (as a command-line option does).
+    supersampling.ValueChanged += (_, _) => Apply(s => s with { SamplesPerPixel = (int)supersampling.Value }, GivenSettings.SamplesPerPixel);
+    jitter.CheckedChanged += (_, _) => Apply(s => s with { Jitter = jitter.Checked ? 1.0 : 0.0 }, GivenSettings.Jitter);
+    shadows.CheckedChanged += (_, _) => Apply(s => s with { Shadows = shadows.Checked }, GivenSettings.Shadows);
+    reflections.CheckedChanged += (_, _) => Apply(s => s with { Reflections = reflections.Checked }, GivenSettings.Reflections);
+    refractions.CheckedChanged += (_, _) => Apply(s => s with { Refractions = refractions.Checked }, GivenSettings.Refractions);
     multithreading.CheckedChanged += (_, _) => Apply(s => s with { Threads = multithreading.Checked ? 0 : 1 });
     algorithm.SelectedIndexChanged += (_, _) => controller.Algorithm = Algorithms[Math.Max(algorithm.SelectedIndex, 0)];
     preview.SelectedIndexChanged += (_, _) => controller.Progressive = Previews[Math.Max(preview.SelectedIndex, 0)];
@@ -168,6 +176,7 @@ sealed class MainForm : Form
     // Events of the controller arrive on the UI thread from here on.
     controller.EventContext = SynchronizationContext.Current;
     base.OnLoad(e);
+    _ = ReadScriptValuesAsync();
   }
 
   protected override async void OnShown(EventArgs e)
@@ -201,13 +210,43 @@ sealed class MainForm : Form
     tips.SetToolTip(param, entry?.Tooltip ?? "Parameters of the scene (key=value, comma separated)");
     overrides.Text = entry?.Overrides is { IsEmpty: false } o ? "script sets " + o : "";
     animation.ShowOverrides(entry?.Overrides);
+    ShowSettings();
+  }
+
+  /// <summary>A scene was chosen: build it (not render) to show the script's own values in the fields.</summary>
+  async Task ReadScriptValuesAsync()
+  {
+    SceneEntry? entry = controller.Selected;
+    if (entry == null)
+      return;
+    SceneOverrides values;
+    try
+    {
+      values = await controller.ReadScriptValuesAsync(entry);
+    }
+    catch (Exception ex) when (ex is SceneEvaluationException or OperationCanceledException)
+    {
+      overrides.Text = ex is OperationCanceledException ? "" : "script error (Render shows it)";
+      return;
+    }
+    if (controller.Selected != entry)
+      return;
+    // The script's values show in their fields again, until the user changes them.
+    GivenSettings scriptSets = (values.Width != null || values.Height != null ? GivenSettings.Size : 0) |
+                               (values.Supersampling != null ? GivenSettings.SamplesPerPixel : 0);
+    controller.Given &= ~scriptSets;
+    ShowSceneInfo(entry);
   }
 
   void ShowSettings()
   {
-    RenderSettings s = controller.Settings;
+    showing = true;
+    RenderSettings s = controller.ShownSettings();
     resolution.Text = $"Resolution {s.Width} x {s.Height}";
+    Mark(resolution, controller.IsScriptValue(Setting.Size));
     supersampling.Value = Math.Clamp(s.SamplesPerPixel, (int)supersampling.Minimum, (int)supersampling.Maximum);
+    Mark(supersampling, controller.IsScriptValue(Setting.SamplesPerPixel));
+    algorithm.Items[0] = $"scene's choice ({controller.Selected?.Overrides?.Algorithm ?? "ray tracing"})";
     jitter.Checked = s.Jitter > 0.0;
     shadows.Checked = s.Shadows;
     reflections.Checked = s.Reflections;
@@ -215,17 +254,36 @@ sealed class MainForm : Form
     multithreading.Checked = s.Threads != 1;
     algorithm.SelectedIndex = Math.Max(Array.IndexOf(Algorithms, controller.Algorithm), 0);
     preview.SelectedIndex = Math.Max(Array.IndexOf(Previews, controller.Progressive), 0);
+    showing = false;
   }
 
-  void Apply(Func<RenderSettings, RenderSettings> change) => controller.Settings = change(controller.Settings);
+  /// <summary>Marks a field that shows the script's own value (blue, with a tooltip).</summary>
+  void Mark(Control field, bool script)
+  {
+    field.ForeColor = script ? SystemColors.HotTrack : SystemColors.ControlText;
+    tips.SetToolTip(field, script ? "The script's value; change it to use your own" : null);
+  }
+
+  // Set while the fields are filled from the settings: those changes are not the user's.
+  bool showing;
+
+  void Apply(Func<RenderSettings, RenderSettings> change, GivenSettings given = GivenSettings.None)
+  {
+    if (showing)
+      return;
+    // The field shows the script's value until changed: the rest of the settings keep the user's own.
+    controller.Settings = change(controller.Settings);
+    controller.Given |= given;
+    if (given != GivenSettings.None)
+      ShowSettings();
+  }
 
   void ChooseResolution()
   {
-    using var dialog = new ResolutionForm(controller.Settings.Width, controller.Settings.Height);
+    using var dialog = new ResolutionForm(controller.ShownSettings().Width, controller.ShownSettings().Height);
     if (dialog.ShowDialog(this) != DialogResult.OK)
       return;
-    Apply(s => s with { Width = dialog.ImageWidth, Height = dialog.ImageHeight });
-    ShowSettings();
+    Apply(s => s with { Width = dialog.ImageWidth, Height = dialog.ImageHeight }, GivenSettings.Size);
   }
 
   void AddScript()

@@ -18,9 +18,9 @@ static class Program
     Application.EnableVisualStyles();
     Application.SetCompatibleTextRenderingDefault(false);
 
-    using var evaluator = new ScriptHostEvaluator();
+    using var scripts = new GrCis.Scripting.ScriptHost();
     var problems = new List<string>();
-    using DemoController controller = DemoController.FromCommandLine(args, evaluator, problems);
+    using DemoController controller = DemoController.FromCommandLine(args, scripts, problems);
     using var form = new MainForm(controller);
     if (problems.Count > 0)
       form.Shown += (_, _) => MessageBox.Show(form, string.Join(Environment.NewLine, problems), "GrCis demo: command line",

@@ -18,10 +18,16 @@ public sealed class DemoController : IDisposable
   readonly object sync = new();
   RenderSession? session;
   CancellationTokenSource? build;
+  CancellationTokenSource? inspecting;
   Task? buildTask;
   ScriptWatcher? watcher;
   SceneEntry? selected;
   bool watch;
+  // The render asked for last (events of a replaced one are ignored) and whether its scene is being built.
+  long renderId;
+  bool building;
+  // The last render whose completion was raised: done for the page even while its session winds down.
+  long finishedId;
 
   public DemoController(SceneCatalog catalog) => Catalog = catalog ?? throw new ArgumentNullException(nameof(catalog));
 
@@ -33,14 +39,17 @@ public sealed class DemoController : IDisposable
   /// GrCis's default scene) selected. Unknown options and missing files or folders go to
   /// <paramref name="problems"/> as messages for the user; everything else is still loaded.
   /// </summary>
-  public static DemoController FromCommandLine(IReadOnlyList<string> args, IScriptEvaluator? evaluator, ICollection<string> problems)
+  /// <param name="scripts">Compiles and runs the scene scripts (<see cref="SceneCatalog.Scripts"/>); null = built-in scenes only.</param>
+  /// <param name="allowScript">The script files this front end may open (<see cref="SceneCatalog.AllowScript"/>); null = any.</param>
+  public static DemoController FromCommandLine(IReadOnlyList<string> args, GrCis.Scripting.ScriptHost? scripts, ICollection<string> problems,
+                                               Predicate<string>? allowScript = null)
   {
     ArgumentNullException.ThrowIfNull(args);
     ArgumentNullException.ThrowIfNull(problems);
     DemoCommandLine commandLine = DemoCommandLine.Parse(args);
     foreach (string e in commandLine.Errors)
       problems.Add(e);
-    var catalog = new SceneCatalog(evaluator);
+    var catalog = new SceneCatalog(scripts) { AllowScript = allowScript };
     SceneEntry? first = catalog.AddFromCommandLine(commandLine, problems);
     return new DemoController(catalog) { Selected = first, RenderTo = commandLine.RenderTo };
   }
@@ -49,6 +58,15 @@ public sealed class DemoController : IDisposable
   public string? RenderTo { get; init; }
 
   public RenderSettings Settings { get; set; } = new();
+
+  /// <summary>
+  /// Which of <see cref="Settings"/> the user gave, winning over the script's own values by the one precedence rule
+  /// (<see cref="Precedence"/>), exactly as options typed on the command line do; the rest are the script's when it
+  /// sets them. None by default, so an untouched window renders what <c>grcis render</c> renders; a front end marks a
+  /// setting once the user changes its field (<see cref="GivenSettings.Size"/>, <see cref="GivenSettings.SamplesPerPixel"/>,
+  /// <see cref="GivenSettings.Shadows"/>, …). A chosen <see cref="Algorithm"/> is always given.
+  /// </summary>
+  public GivenSettings Given { get; set; }
 
   /// <summary>
   /// The image function chosen in the demo, replacing the script's own (CTX_ALGORITHM) as <c>grcis render --algorithm</c>
@@ -90,6 +108,32 @@ public sealed class DemoController : IDisposable
         return session?.IsRunning ?? false;
     }
   }
+
+  /// <summary>True while the last render asked for builds its scene or renders (what a status line shows); false after Stop.</summary>
+  public bool IsBusy
+  {
+    get
+    {
+      lock (sync)
+        return building || (session?.IsRunning == true && finishedId != renderId);
+    }
+  }
+
+  /// <summary>The number of the render asked for last (<see cref="RenderAsync"/>, a watched script's change); its events are the only ones raised.</summary>
+  public long RenderId => Interlocked.Read(ref renderId);
+
+  /// <summary>
+  /// Memory the renders may use, in bytes; null = what this process may use (<see cref="ImageMemory.Available"/>). A size
+  /// that does not fit is refused before any work, as <c>grcis render</c> refuses it.
+  /// </summary>
+  public long? MemoryLimit { get; set; }
+
+  /// <summary>
+  /// Images of the render's size the window holds at its peak, for the memory check: the framebuffer, the preview and
+  /// noise buffers and their 8-bit copies (a 16384x16384 render in the studio was measured at about 22 GB, 82 bytes a
+  /// pixel: five of <see cref="ImageMemory.BytesPerPixel"/>).
+  /// </summary>
+  public const int ImagesHeld = 5;
 
   public SceneEntry? Selected
   {
@@ -138,15 +182,36 @@ public sealed class DemoController : IDisposable
     (RenderSettings settings, GivenSettings given) = Requested(Settings);
     CancellationTokenSource building;
     Task? previous;
+    long id;
     lock (sync)
     {
+      id = ++renderId;
+      this.building = true;
       session?.Stop();
       build?.Cancel();
       building = build = new CancellationTokenSource();
       previous = buildTask;
     }
+    try
+    {
+      return await RenderAsync(id, entry, settings, given, building, previous).ConfigureAwait(false);
+    }
+    finally
+    {
+      BuildEnded(id);
+    }
+  }
 
-    // Let a stopped script unwind before the next one runs (it shares the script's context); one that
+  void BuildEnded(long id)
+  {
+    lock (sync)
+      if (id == renderId)
+        building = false;
+  }
+
+  async Task<RenderResult?> RenderAsync(long id, SceneEntry entry, RenderSettings settings, GivenSettings given, CancellationTokenSource building, Task? previous)
+  {
+    // Let a stopped script unwind before the next one runs (it may hold files or state of its own); one that
     // ignores the stop (a sleep, not a loop) is left behind after a while rather than blocking the demo.
     if (previous != null)
       await Task.WhenAny(previous, Task.Delay(AbandonStuckScriptAfter)).ConfigureAwait(false);
@@ -158,8 +223,8 @@ public sealed class DemoController : IDisposable
       Task<(BuiltScene, RenderJob)> task = Task.Factory.StartNew(() =>
       {
         using Interruption.Scope interruption = Interruption.Use(building.Token);
-        BuiltScene b = Catalog.Build(entry, entry.ParameterText, settings);
-        return (b, b.ToJob(settings, given));
+        BuiltScene b = Catalog.Build(entry, entry.ParameterText, settings, given);
+        return (b, b.ToJob());
       }, building.Token, TaskCreationOptions.LongRunning, TaskScheduler.Default);
       lock (sync)
         buildTask = task;
@@ -171,8 +236,19 @@ public sealed class DemoController : IDisposable
     }
     catch (Exception ex) when (ex is SceneEvaluationException or ArgumentException)
     {
+      // Not busy any more when the message arrives (a window enables Render again on it).
+      BuildEnded(id);
       if (!building.IsCancellationRequested)
         Raise(Error, ex.Message);
+      return null;
+    }
+
+    // Refused before any work when it cannot fit, as grcis render refuses it.
+    if (ImageMemory.Shortfall(job.Width, job.Height, ImagesHeld, MemoryLimit, oneImage: true) is string shortfall)
+    {
+      BuildEnded(id);
+      if (!building.IsCancellationRequested)
+        Raise(Error, $"{shortfall}; choose a smaller size (a render here holds its previews and noise estimate too)");
       return null;
     }
 
@@ -182,6 +258,7 @@ public sealed class DemoController : IDisposable
       // Stopped, or another render started, while the script ran.
       if (building.IsCancellationRequested)
         return null;
+      this.building = false;
       Raise(SceneEvaluated, built);
       LastJob = job;
       s = session = new RenderSession(job)
@@ -190,10 +267,25 @@ public sealed class DemoController : IDisposable
         EventContext = EventContext,
         Progressive = Progressive ?? IsMonteCarlo(job.ImageFunction),
       };
-      s.PreviewReady += (_, e) => PreviewReady?.Invoke(this, e);
-      s.ProgressChanged += (_, e) => ProgressChanged?.Invoke(this, e);
+      // A render replaced by a newer one (Render again, a watched script saved) says nothing more.
+      s.PreviewReady += (_, e) =>
+      {
+        if (id == RenderId)
+          PreviewReady?.Invoke(this, e);
+      };
+      s.ProgressChanged += (_, e) =>
+      {
+        if (id == RenderId)
+          ProgressChanged?.Invoke(this, e);
+      };
       s.Completed += (_, e) =>
       {
+        lock (sync)
+        {
+          if (id != renderId)
+            return;
+          finishedId = id;
+        }
         // On the UI context when one is set, so history and the display change together.
         LastResult = e.Result;
         History.Add(RenderRecord.From(e.Result));
@@ -206,6 +298,77 @@ public sealed class DemoController : IDisposable
     return await s.Task.ConfigureAwait(false);
   }
 
+  /// <summary>
+  /// Builds <paramref name="entry"/> (the selected scene by default) without rendering it, on a worker thread, to learn
+  /// the script's own values (size, supersampling, algorithm, animation range) and its tooltip, so the fields can show
+  /// them as soon as a scene is chosen. <see cref="Stop"/> or <paramref name="cancel"/> ends a script stuck in a loop.
+  /// </summary>
+  /// <returns>The values the script sets (<see cref="SceneEntry.Overrides"/>); empty for a built-in scene.</returns>
+  /// <exception cref="SceneEvaluationException">The scene could not be built; the message is for the user.</exception>
+  public async Task<SceneOverrides> ReadScriptValuesAsync(SceneEntry? entry = null, CancellationToken cancel = default)
+  {
+    entry ??= Selected ?? throw new InvalidOperationException("Choose a scene first.");
+    CancellationTokenSource reading;
+    lock (sync)
+    {
+      inspecting?.Cancel();   // the scene chosen before this one
+      reading = inspecting = CancellationTokenSource.CreateLinkedTokenSource(cancel);
+    }
+    try
+    {
+      // The fields' values do not reach the script; only what it sets itself is read back.
+      BuiltScene built = await Task.Factory.StartNew(() =>
+      {
+        using Interruption.Scope interruption = Interruption.Use(reading.Token);
+        return Catalog.Build(entry, entry.ParameterText, new RenderSettings(), GivenSettings.None);
+      }, reading.Token, TaskCreationOptions.LongRunning, TaskScheduler.Default).ConfigureAwait(false);
+      return built.Overrides;
+    }
+    finally
+    {
+      lock (sync)
+      {
+        if (inspecting == reading)
+          inspecting = null;
+        reading.Dispose();
+      }
+    }
+  }
+
+  /// <summary>
+  /// What the settings fields show for the selected scene, by the one precedence rule (<see cref="Precedence"/>): a
+  /// setting the user gave (<see cref="Given"/>) as set, else the script's own value (<see cref="SceneEntry.Overrides"/>,
+  /// known once the scene was built), else the field's. <see cref="IsScriptValue"/> tells which are the script's.
+  /// </summary>
+  public RenderSettings ShownSettings()
+  {
+    SceneOverrides? script = Selected?.Overrides;
+    if (script == null)
+      return Settings;
+    var choices = new ScriptChoices { Width = script.Width, Height = script.Height, SamplesPerPixel = script.Supersampling };
+    try
+    {
+      return Precedence.Resolve(Settings, Given, choices).Settings;
+    }
+    catch (Exception e) when (e is ScriptChoiceException or InvalidSettingException)
+    {
+      return Settings;   // the render reports it
+    }
+  }
+
+  /// <summary>True when the field of <paramref name="setting"/> shows the script's own value: the script sets it and the user did not.</summary>
+  public bool IsScriptValue(Setting setting)
+  {
+    SceneOverrides? script = Selected?.Overrides;
+    return setting switch
+    {
+      Setting.Size => !Given.HasFlag(GivenSettings.Size) && (script?.Width != null || script?.Height != null),
+      Setting.SamplesPerPixel => !Given.HasFlag(GivenSettings.SamplesPerPixel) && script?.Supersampling != null,
+      Setting.Algorithm => Algorithm == null && script?.Algorithm != null,
+      _ => false,
+    };
+  }
+
   /// <summary>Image functions whose samples differ in more than the pixel position: noise that passes show converging.</summary>
   static bool IsMonteCarlo(Rendering.IImageFunction function) =>
     function is Rendering.PathTracing or Rendering.Distributed.DistributedRayTracing;
@@ -216,7 +379,9 @@ public sealed class DemoController : IDisposable
     lock (sync)
     {
       build?.Cancel();
+      inspecting?.Cancel();
       session?.Stop();
+      building = false;   // a script that ignores the stop is left behind (see AbandonStuckScriptAfter)
     }
   }
 
@@ -253,20 +418,31 @@ public sealed class DemoController : IDisposable
     }
   }
 
-  /// <summary>An animation run of the selected scene over the script's range (or the given one).</summary>
-  public AnimationRun CreateAnimation(double start, double end, double fps)
+  /// <summary>
+  /// An animation run of the selected scene as <c>grcis animate</c> renders it: start, end and frame rate each as given
+  /// here, else the script's, else the scene's own range, else 0 to 10 s at 25 fps (<see cref="AnimationRange"/>).
+  /// </summary>
+  /// <exception cref="SceneEvaluationException">The scene could not be built.</exception>
+  /// <exception cref="ArgumentOutOfRangeException">The range is impossible (end before start, fps not positive).</exception>
+  /// <exception cref="InvalidSettingException">The size does not fit in memory (<see cref="MemoryLimit"/>).</exception>
+  public AnimationRun CreateAnimation(double? start = null, double? end = null, double? fps = null)
   {
     SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
     (RenderSettings settings, GivenSettings given) = Requested(Settings with { Time = null });
-    BuiltScene built = Catalog.Build(entry, entry.ParameterText, settings);
-    return new AnimationRun(built.ToJob(settings, given), AnimationRun.TimelineFor(built.Overrides, start, end, fps));
+    BuiltScene built = Catalog.Build(entry, entry.ParameterText, settings, given, start, end, fps);
+    (double s, double e, double f) = AnimationRange.Resolve(start, end, fps, built.Prepared.Timing, built.Prepared.Scene);
+    RenderJob job = built.ToJob();
+    // One frame at a time, each with its 8-bit copy (what grcis animate holds per frame, and a frame kept to show).
+    if (ImageMemory.Shortfall(job.Width, job.Height, 2, MemoryLimit, oneImage: true) is string shortfall)
+      throw new InvalidSettingException(Setting.Size, $"{job.Width}x{job.Height}", shortfall + "; choose a smaller size");
+    return new AnimationRun(job, new AnimationTimeline(s, e, f));
   }
 
   // A chosen algorithm is a given setting, so the one precedence rule replaces the script's function with it.
   (RenderSettings, GivenSettings) Requested(RenderSettings settings) =>
     Algorithm is RenderAlgorithm a
-      ? (settings with { Algorithm = a }, RenderJob.Given | GivenSettings.Algorithm)
-      : (settings, RenderJob.Given);
+      ? (settings with { Algorithm = a }, Given | GivenSettings.Algorithm)
+      : (settings, Given & ~GivenSettings.Algorithm);
 
   void RestartWatcher()
   {

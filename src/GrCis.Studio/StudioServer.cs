@@ -56,8 +56,10 @@ public sealed class StudioServer : IAsyncDisposable
     }
     if (options.NoDefault)
       args.Add("-nodefault");
-    var controller = DemoController.FromCommandLine(args, new ScriptHostEvaluator(), problems);
-    var session = new StudioSession(controller);
+    var scripts = new GrCis.Scripting.ScriptHost();
+    var files = new AllowedFiles(options.Paths);
+    var controller = DemoController.FromCommandLine(args, scripts, problems, files.Allows);
+    var session = new StudioSession(controller) { Scripts = scripts };
     string token = options.Token ?? AccessGuard.NewToken();
 
     WebApplicationBuilder builder = WebApplication.CreateSlimBuilder();
@@ -71,7 +73,7 @@ public sealed class StudioServer : IAsyncDisposable
     });
     builder.Services.Configure<JsonOptions>(o => o.SerializerOptions.Converters.Add(new JsonStringEnumConverter()));
     builder.Services.AddSingleton(session);
-    builder.Services.AddSingleton(new AllowedFiles(options.Paths));
+    builder.Services.AddSingleton(files);
     WebApplication app = builder.Build();
 
     // The port is known only once Kestrel listens (--port 0): the guard reads the hosts it allows then.
@@ -102,12 +104,16 @@ public sealed class StudioServer : IAsyncDisposable
     return new StudioServer(app, session, token, $"http://{shown}:{port}/?token={token}");
   }
 
-  /// <summary>Runs until <paramref name="cancel"/> is signalled (Ctrl+C), then stops the render and the server.</summary>
+  /// <summary>
+  /// Runs until <paramref name="cancel"/> is signalled (Ctrl+C) or the host is told to stop (SIGTERM, which the
+  /// host's console lifetime turns into a stop of the application), then stops the render and the server.
+  /// </summary>
   public async Task WaitAsync(CancellationToken cancel)
   {
+    using var either = CancellationTokenSource.CreateLinkedTokenSource(cancel, app.Lifetime.ApplicationStopping);
     try
     {
-      await Task.Delay(Timeout.Infinite, cancel).ConfigureAwait(false);
+      await Task.Delay(Timeout.Infinite, either.Token).ConfigureAwait(false);
     }
     catch (OperationCanceledException)
     {

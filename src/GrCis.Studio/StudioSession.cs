@@ -21,7 +21,6 @@ public sealed class StudioSession : IDisposable
   TimeSpan elapsed;
   string? error;
   string statistics = "";
-  bool busy;
   int? samples;
   double? noise;
   IReadOnlyList<ScriptError> diagnostics = Array.Empty<ScriptError>();
@@ -43,7 +42,7 @@ public sealed class StudioSession : IDisposable
           samples = e.Samples;
           noise = e.Noise;
         }
-      Show(e.Image, e.Gamma, e.Fraction, final: false);
+      Show(e.Image, e.Gamma, e.Fraction);
     };
     Controller.ProgressChanged += (_, e) =>
     {
@@ -61,7 +60,7 @@ public sealed class StudioSession : IDisposable
         samples = e.Result.Cancelled ? samples : e.Result.Statistics.SamplesPerPixel;
         noise = e.Result.Cancelled ? noise : e.Result.Statistics.Noise;
       }
-      Show(e.Result.Image, e.Result.Gamma, 1.0, final: true);
+      Show(e.Result.Image, e.Result.Gamma, 1.0);
     };
     Controller.Error += (_, message) =>
     {
@@ -69,7 +68,6 @@ public sealed class StudioSession : IDisposable
       {
         error = message;
         diagnostics = ScriptErrors.Parse(message);
-        busy = false;
       }
     };
   }
@@ -79,22 +77,25 @@ public sealed class StudioSession : IDisposable
   /// <summary>Starts rendering <paramref name="entry"/> with <paramref name="param"/> and <paramref name="settings"/>, stopping any render in progress.</summary>
   /// <param name="algorithm">The image function replacing the script's (<see cref="DemoController.Algorithm"/>); null = the scene's choice.</param>
   /// <param name="progressive">Passes of samples or tiles (<see cref="DemoController.Progressive"/>); null = by the algorithm.</param>
-  public void Render(SceneEntry entry, string param, RenderSettings settings, RenderAlgorithm? algorithm = null, bool? progressive = null)
+  /// <param name="given">The settings the user changed, which win over the script's own values (<see cref="DemoController.Given"/>).</param>
+  public void Render(SceneEntry entry, string param, RenderSettings settings, RenderAlgorithm? algorithm = null, bool? progressive = null,
+                     GivenSettings given = GivenSettings.None)
   {
     Started();
     entry.ParameterText = param;
     Controller.Selected = entry;
     Controller.Settings = settings;
+    Controller.Given = given;
     Controller.Algorithm = algorithm;
     Controller.Progressive = progressive;
-    _ = Controller.RenderAsync().ContinueWith(t =>
+    // RenderAsync numbers the render before it returns: the continuation knows which one it belongs to.
+    System.Threading.Tasks.Task<RenderResult?> rendering = Controller.RenderAsync();
+    long id = Controller.RenderId;
+    _ = rendering.ContinueWith(t =>
     {
       lock (sync)
-      {
-        busy = false;
-        if (t.Exception != null)
+        if (t.Exception != null && id == Controller.RenderId)   // not when a newer render replaced this one
           error = t.Exception.GetBaseException().Message;
-      }
     }, System.Threading.Tasks.TaskScheduler.Default);
   }
 
@@ -111,11 +112,10 @@ public sealed class StudioSession : IDisposable
       elapsed = TimeSpan.Zero;
       samples = null;
       noise = null;
-      busy = true;
     }
   }
 
-  void Show(FloatImage shown, double g, double done, bool final)
+  void Show(FloatImage shown, double g, double done)
   {
     lock (sync)
     {
@@ -123,8 +123,6 @@ public sealed class StudioSession : IDisposable
       gamma = g;
       fraction = done;
       version++;
-      if (final)
-        busy = false;
     }
   }
 
@@ -132,13 +130,17 @@ public sealed class StudioSession : IDisposable
   public StudioStatus Status()
   {
     lock (sync)
-      return new StudioStatus(busy, version, fraction, elapsed.TotalSeconds, statistics, error,
+      return new StudioStatus(Controller.IsBusy, version, fraction, elapsed.TotalSeconds, statistics, error,
                               Controller.LastJob?.Notes ?? Array.Empty<string>(), diagnostics,
                               Controller.Algorithm is RenderAlgorithm a ? RenderAlgorithmNames.Name(a) : null)
       {
         Progressive = Controller.Progressive,
         Samples = samples,
         Noise = noise,
+        RenderId = Controller.RenderId,
+        Width = Controller.LastJob?.Width,
+        Height = Controller.LastJob?.Height,
+        SamplesPerPixel = Controller.LastJob?.Settings.SamplesPerPixel,
       };
   }
 
@@ -163,7 +165,14 @@ public sealed class StudioSession : IDisposable
   public StudioAnimation? Animation { get; set; }
 
   /// <summary>Shows a render of the history (back/forward).</summary>
-  public void ShowRecord(RenderRecord record) => Show(record.Image, record.Gamma, 1.0, final: true);
+  public void ShowRecord(RenderRecord record) => Show(record.Image, record.Gamma, 1.0);
 
-  public void Dispose() => Controller.Dispose();
+  /// <summary>The script host the session's catalog compiles with, disposed with the session (null = the caller's).</summary>
+  public GrCis.Scripting.ScriptHost? Scripts { get; init; }
+
+  public void Dispose()
+  {
+    Controller.Dispose();
+    Scripts?.Dispose();
+  }
 }

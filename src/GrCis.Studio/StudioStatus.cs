@@ -15,6 +15,16 @@ public sealed record StudioStatus(bool Rendering, int Version, double Fraction, 
   /// <summary>Samples per pixel in the image on show during a progressive render, and of the finished image; null = not known.</summary>
   public int? Samples { get; init; }
 
+  /// <summary>The number of the render this status is about: the one asked for last (<see cref="GrCis.Interactive.DemoController.RenderId"/>).</summary>
+  public long RenderId { get; init; }
+
+  /// <summary>The size and samples per pixel the last render used (the user's where given, else the script's, else the fields'); null before any.</summary>
+  public int? Width { get; init; }
+
+  public int? Height { get; init; }
+
+  public int? SamplesPerPixel { get; init; }
+
   /// <summary>The estimated RMSE of the image on show (<see cref="Rendering.Execution.NoiseImage"/>); null = no estimate.</summary>
   public double? Noise { get; init; }
 }

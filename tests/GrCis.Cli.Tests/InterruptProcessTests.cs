@@ -78,4 +78,26 @@ public class InterruptProcessTests
     Assert.DoesNotContain(Directory.GetFiles(dir.Path, "*", SearchOption.AllDirectories),
       f => f.EndsWith(".png", StringComparison.Ordinal) || f.Contains(".tmp-", StringComparison.Ordinal));
   }
+
+  /// <summary><c>grcis studio</c> stops on SIGTERM (a service manager, <c>kill</c>, a closed terminal) as on Ctrl+C.</summary>
+  [UnixTheory]
+  [InlineData("INT")]
+  [InlineData("TERM")]
+  public void Studio_stops_cleanly_on_sigint_and_sigterm(string signal)
+  {
+    using var dir = new TempDirectory();
+    using Process p = GrcisProcess.Start(dir.Path, null, "studio", "--port", "0", "--no-open", "--nodefault");
+    string? url = p.StandardOutput.ReadLine();
+    Assert.StartsWith("http://127.0.0.1:", url);
+
+    var clock = Stopwatch.StartNew();
+    using (Process kill = Process.Start("kill", ["-" + signal, p.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]))
+      kill.WaitForExit();
+    bool ended = p.WaitForExit(15_000);
+    if (!ended)
+      p.Kill(entireProcessTree: true);
+    Assert.True(ended, $"grcis studio still running 15 s after SIG{signal}");
+    Assert.Equal(ExitCodes.Cancelled, p.ExitCode);
+    Assert.True(clock.Elapsed < TimeSpan.FromSeconds(5), $"SIG{signal} took {clock.Elapsed.TotalSeconds:0.0} s");
+  }
 }

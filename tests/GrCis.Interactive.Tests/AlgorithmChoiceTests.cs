@@ -43,7 +43,7 @@ public class AlgorithmChoiceTests
     using var tmp = new TempDir();
     string script = tmp.File("Balls.cs");
     File.WriteAllText(script, Script);
-    using var evaluator = new ScriptHostEvaluator();
+    using var evaluator = new GrCis.Scripting.ScriptHost();
     var catalog = new SceneCatalog(evaluator);
     using var demo = new DemoController(catalog) { Settings = Small, Selected = catalog.AddScriptFile(script) };
 

@@ -67,11 +67,4 @@ public class AnimationTests
     Assert.Equal("f/out0042.png", AnimationRun.FrameFileName("f/out####.png", 42));
     Assert.Equal("out0007.png", AnimationRun.FrameFileName("out.png", 7));
   }
-
-  [Fact]
-  public void Timeline_prefers_the_script_range()
-  {
-    AnimationTimeline t = AnimationRun.TimelineFor(new SceneOverrides { End = 2, Fps = 10 }, 0, 5, 25);
-    Assert.Equal((0.0, 2.0, 10.0, 21), (t.Start, t.End, t.Fps, t.FrameCount));
-  }
 }

@@ -99,7 +99,7 @@ public class BuiltInScenesTests
     // camera at (0.7, 0.5, −5), one point light at (−5, 3, −3).
     SceneCatalog catalog = SceneCatalog.WithBuiltInScenes();
     var settings = new RenderSettings { Width = 80, Height = 60, Threads = 2 };
-    RenderJob job = catalog.Build(catalog.Find("Sphere on the plane")!, "", settings).ToJob(settings);
+    RenderJob job = catalog.Build(catalog.Find("Sphere on the plane")!, "", settings).ToJob();
 
     ProbeResult centre = PixelProbe.Probe(job, 40, 30);
     RayNode primary = centre.Rays!;
@@ -144,7 +144,7 @@ public class BuiltInScenesTests
   {
     SceneCatalog catalog = SceneCatalog.WithBuiltInScenes();
     var settings = new RenderSettings { Width = 80, Height = 60, Threads = 2 };
-    RenderJob job = catalog.Build(catalog.Find("Sphere on the plane")!, "", settings).ToJob(settings);
+    RenderJob job = catalog.Build(catalog.Find("Sphere on the plane")!, "", settings).ToJob();
     ExtraViews views = ExtraViews.Compute(job);
 
     RayNode primary = PixelProbe.Probe(job, 40, 30).Rays!;

@@ -15,7 +15,7 @@ public class DemoControllerTests
     using var tmp = new TempDir();
     string path = tmp.File("Watched.cs");
     File.WriteAllText(path, TestScripts.Background(0.25));
-    using var evaluator = new ScriptHostEvaluator();
+    using var evaluator = new GrCis.Scripting.ScriptHost();
     var catalog = new SceneCatalog(evaluator);
     using var demo = new DemoController(catalog) { WatchDebounce = TimeSpan.FromMilliseconds(100) };
     demo.Selected = catalog.AddScriptFile(path);
@@ -68,7 +68,7 @@ public class DemoControllerTests
   {
     using var tmp = new TempDir();
     File.WriteAllText(tmp.File("Bad.cs"), "nonsense here");
-    using var evaluator = new ScriptHostEvaluator();
+    using var evaluator = new GrCis.Scripting.ScriptHost();
     var catalog = new SceneCatalog(evaluator);
     using var demo = new DemoController(catalog) { Selected = catalog.AddScriptFile(tmp.File("Bad.cs")) };
     string? error = null;

@@ -66,7 +66,7 @@ public class SamePictureTests
       error.ToString());
     FloatImage cli = ImageFile.Load(tmp.File("cli.pfm"));
 
-    using var evaluator = new ScriptHostEvaluator();
+    using var evaluator = new GrCis.Scripting.ScriptHost();
     var catalog = new SceneCatalog(evaluator);
     SceneEntry entry = catalog.AddScriptFile(script);
     var settings = new RenderSettings { Width = 80, Height = 60, SamplesPerPixel = 4, Seed = 3, Threads = 3, TileSize = 16 };

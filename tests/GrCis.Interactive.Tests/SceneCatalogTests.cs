@@ -85,7 +85,7 @@ public class SceneCatalogTests
   {
     using var tmp = new TempDir();
     System.IO.File.WriteAllText(tmp.File("Bg.cs"), TestScripts.Background(0.25));
-    using var evaluator = new ScriptHostEvaluator();
+    using var evaluator = new GrCis.Scripting.ScriptHost();
     var catalog = new SceneCatalog(evaluator);
     SceneEntry entry = catalog.AddScriptFile(tmp.File("Bg.cs"));
     Assert.Null(entry.Tooltip);
@@ -98,9 +98,8 @@ public class SceneCatalogTests
     Assert.Null(entry.Overrides.Supersampling);
     Assert.Equal(2.0, entry.Overrides.End);
     Assert.Contains("40x30", entry.Overrides.ToString());
-    Assert.NotNull(entry.Source);
 
-    RenderJob job = built.ToJob(new RenderSettings { Width = 640, Height = 480 });
+    RenderJob job = built.ToJob();
     Assert.Equal((40, 30), (job.Width, job.Height));
     var image = Rendering.Execution.TileRenderer.Render(job.Scene, job.ImageFunction, job.Renderer, job.Options);
     Assert.Equal(new[] { 0.25, 0.125, 0.75 }, image.GetPixel(20, 15));
@@ -111,7 +110,7 @@ public class SceneCatalogTests
   {
     using var tmp = new TempDir();
     System.IO.File.WriteAllText(tmp.File("Bad.cs"), "scene.BackgroundColor = new double[] { 1, 2 };\nthis is not C#;\n");
-    using var evaluator = new ScriptHostEvaluator();
+    using var evaluator = new GrCis.Scripting.ScriptHost();
     var catalog = new SceneCatalog(evaluator);
     var ex = Assert.Throws<SceneEvaluationException>(() => catalog.Build(catalog.AddScriptFile(tmp.File("Bad.cs")), "", new RenderSettings()));
     Assert.Contains("Bad.cs", ex.Message);

@@ -15,11 +15,11 @@ namespace GrCis.Interactive.Tests;
 /// </summary>
 public class StuckScriptTests
 {
-  static (DemoController Demo, ScriptHostEvaluator Evaluator, SceneEntry Stuck, SceneEntry Good) Demo(TempDir tmp, string stuckScript)
+  static (DemoController Demo, GrCis.Scripting.ScriptHost Evaluator, SceneEntry Stuck, SceneEntry Good) Demo(TempDir tmp, string stuckScript)
   {
     File.WriteAllText(tmp.File("Stuck.cs"), stuckScript);
     File.WriteAllText(tmp.File("Good.cs"), TestScripts.Background(0.5));
-    var evaluator = new ScriptHostEvaluator();
+    var evaluator = new GrCis.Scripting.ScriptHost();
     var catalog = new SceneCatalog(evaluator);
     SceneEntry stuck = catalog.AddScriptFile(tmp.File("Stuck.cs"));
     SceneEntry good = catalog.AddScriptFile(tmp.File("Good.cs"));
@@ -42,7 +42,7 @@ public class StuckScriptTests
   {
     using var tmp = new TempDir();
     string marker = tmp.File("started").Replace("\\", "/", StringComparison.Ordinal);
-    (DemoController demo, ScriptHostEvaluator evaluator, _, SceneEntry good) = Demo(tmp, StuckScripts.WhileBuilding(marker));
+    (DemoController demo, GrCis.Scripting.ScriptHost evaluator, _, SceneEntry good) = Demo(tmp, StuckScripts.WhileBuilding(marker));
     using (evaluator)
     using (demo)
     {
@@ -74,7 +74,7 @@ public class StuckScriptTests
   {
     using var tmp = new TempDir();
     string marker = tmp.File("started").Replace("\\", "/", StringComparison.Ordinal);
-    (DemoController demo, ScriptHostEvaluator evaluator, _, _) = Demo(tmp, StuckScripts.WhileRendering(marker));
+    (DemoController demo, GrCis.Scripting.ScriptHost evaluator, _, _) = Demo(tmp, StuckScripts.WhileRendering(marker));
     using (evaluator)
     using (demo)
     {

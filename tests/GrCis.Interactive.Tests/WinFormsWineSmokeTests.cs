@@ -9,7 +9,8 @@ namespace GrCis.Interactive.Tests;
 /// <summary>
 /// The WinForms demo window itself (demos/GrCis.Demo.WinForms), published for win-x64 and started under
 /// Wine on a virtual X display: <c>-render-to</c> drives the window's own Render and Save image path,
-/// and the saved PNG must equal <c>grcis render</c>'s byte for byte. Needs the Debian packages wine and
+/// and the saved PNG must equal <c>grcis render</c>'s byte for byte, for a still script (Five balls) and an
+/// animated one (Orbit, whose moving ball the window once lost). Needs the Debian packages wine and
 /// xvfb (skipped without them unless GRCIS_REQUIRE_TOOLS=1).
 /// </summary>
 public class WinFormsWineSmokeTests
@@ -44,7 +45,7 @@ public class WinFormsWineSmokeTests
   }
 
   [SkippableFact]
-  public void Demo_window_under_wine_renders_five_balls_like_grcis_render()
+  public void Demo_window_under_wine_renders_a_still_and_an_animated_script_like_grcis_render()
   {
     RequiredTool.Find("wine", "wine");
     string xvfbRun = RequiredTool.Find("xvfb-run", "xvfb");
@@ -55,7 +56,6 @@ public class WinFormsWineSmokeTests
       "--self-contained", "-o", tmp.File("demo"), "-nologo"], null, TimeSpan.FromMinutes(5));
     Assert.True(code == 0, "publishing the demo failed: " + log);
 
-    string script = Path.Combine(root, "scripts", "FiveBalls.cs");
     var env = new Dictionary<string, string>
     {
       ["WINEPREFIX"] = tmp.File("wine-prefix"),
@@ -63,13 +63,17 @@ public class WinFormsWineSmokeTests
       // The CLR under Wine 8 needs W^X off (docs/interactive.md).
       ["DOTNET_EnableWriteXorExecute"] = "0",
     };
-    (code, log) = Run(xvfbRun, ["-a", "-s", "-screen 0 1280x900x24", "wine", tmp.File("demo/grcis-demo.exe"),
-      "-nodefault", "-scene", script, "-render-to", tmp.File("window.png")], env, TimeSpan.FromMinutes(5));
-    Assert.True(File.Exists(tmp.File("window.png")), $"the window saved no image (exit {code}): {log}");
+    foreach (string name in new[] { "FiveBalls", "Orbit" })
+    {
+      string script = Path.Combine(root, "scripts", name + ".cs");
+      string window = tmp.File(name + "-window.png"), cli = tmp.File(name + "-cli.png");
+      (code, log) = Run(xvfbRun, ["-a", "-s", "-screen 0 1280x900x24", "wine", tmp.File("demo/grcis-demo.exe"),
+        "-nodefault", "-scene", script, "-render-to", window], env, TimeSpan.FromMinutes(5));
+      Assert.True(File.Exists(window), $"the window saved no image of {name} (exit {code}): {log}");
 
-    var output = new StringWriter();
-    var error = new StringWriter();
-    Assert.True(GrCis.Cli.Program.Run(["render", script, "-o", tmp.File("cli.png"), "-q"], output, error) == 0, error.ToString());
-    Assert.Equal(File.ReadAllBytes(tmp.File("cli.png")), File.ReadAllBytes(tmp.File("window.png")));
+      var error = new StringWriter();
+      Assert.True(GrCis.Cli.Program.Run(["render", script, "-o", cli, "-q"], new StringWriter(), error) == 0, error.ToString());
+      Assert.True(File.ReadAllBytes(cli).AsSpan().SequenceEqual(File.ReadAllBytes(window)), $"{name}: the window's PNG differs from grcis render's");
+    }
   }
 }

@@ -357,4 +357,55 @@ public sealed class EveryYearTests : IDisposable
     ScriptDiagnostic error = Assert.Single(ex.Diagnostics, d => d.IsError);
     Assert.Equal((1, File.ReadAllLines(path)[0].IndexOf("\"x\"", StringComparison.Ordinal) + 1), (error.Line, error.Column));
   }
+  [Fact]
+  public void A_module_type_with_the_full_name_of_a_later_library_type_is_the_one_its_module_and_scripts_use()
+  {
+    // Written in May 2020, a week before GrCis got a Rendering.AnimatedCamera of its own.
+    string dir = Path.Combine(scratch.Path, "rt_extensions");
+    Write("rt_extensions/AnimatedCamera.cs", """
+      using OpenTK;
+
+      namespace Rendering
+      {
+        public class AnimatedCamera : StaticCamera
+        {
+          public string Script;
+
+          public AnimatedCamera (string script) : base(new Vector3d(0, 0, -5), Vector3d.UnitZ, 40.0)
+          {
+            Script = script;
+          }
+
+          public static AnimatedCamera Default () => new AnimatedCamera("default");
+        }
+      }
+      """);
+    Write("rt_extensions/Rig.cs", """
+      namespace Rendering
+      {
+        public static class Rig
+        {
+          public static AnimatedCamera Make (string s) { AnimatedCamera c = new AnimatedCamera(s); return c; }
+        }
+      }
+      """);
+    ScriptModule module = host.AddModule(dir);
+    ScriptDiagnostic warning = Assert.Single(module.Warnings, w => w.Id == ScriptDiagnostic.ShadowedLibraryTypeId);
+    Assert.Equal((Path.Combine(dir, "AnimatedCamera.cs"), 5, 16), (warning.Path, warning.Line, warning.Column));
+
+    ScriptScene run = host.Load(Write("Cubes.cs", """
+      AnimatedCamera camera = new AnimatedCamera("camera_script.txt");
+      scene.Camera = camera;
+      context["rig"] = Rig.Make("rig").Script + " " + AnimatedCamera.Default().Script;
+      scene.Intersectable = new Sphere();
+      """));
+    Assert.Equal(module.Assembly, run.Scene.Camera!.GetType().Assembly);
+    Assert.Equal("rig default", run.Context["rig"]);
+
+    // Errors in the script still point at the user's own line and column.
+    string broken = Write("Broken.cs", "AnimatedCamera c = new AnimatedCamera(1);\n");
+    var ex = Assert.Throws<ScriptCompilationException>(() => host.Compile(broken));
+    ScriptDiagnostic error = Assert.Single(ex.Diagnostics, d => d.IsError);
+    Assert.Equal((1, 39), (error.Line, error.Column));
+  }
 }

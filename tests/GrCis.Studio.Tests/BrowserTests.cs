@@ -135,4 +135,60 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     Shot(browser, "studio-noise.png");
     Js(browser, "document.getElementById('algorithm').value = ''; document.getElementById('spp').value = 1;");
   }
+
+  [SkippableFact]
+  public void A_chosen_script_shows_its_own_values_and_a_value_the_user_changes_wins()
+  {
+    string path = Path.Combine(studio.ScriptsFolder, "OwnValues.cs");
+    File.WriteAllText(path, """
+      Rendering.Scenes.FiveBalls(scene);
+      context[PropertyName.CTX_WIDTH] = 40;
+      context[PropertyName.CTX_HEIGHT] = 30;
+      context[PropertyName.CTX_SUPERSAMPLING] = 4;
+      context[PropertyName.CTX_ALGORITHM] = new DistributedRayTracing();
+      context[PropertyName.CTX_START_ANIM] = 0.0;
+      context[PropertyName.CTX_END_ANIM] = 2.0;
+      context[PropertyName.CTX_FPS] = 5.0;
+      """);
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    browser.FindElement(By.Id("open")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#files option")).Count > 0, "the file picker");
+    Js(browser, "document.getElementById('files').value = arguments[0];", path);
+    browser.FindElement(By.Id("add")).Click();
+    Js(browser, "document.getElementById('algorithm').value = '';");   // the scene's choice, whatever an earlier test left
+
+    string Value(string id) => (string)Js(browser, "return document.getElementById(arguments[0]).value;", id)!;
+    bool Script(string id) => (bool)Js(browser, "return document.getElementById(arguments[0]).classList.contains('script');", id)!;
+    void ScriptValuesShown()
+    {
+      Until(browser, () => Value("width") == "40" && Script("width"), "the script's size in the fields");
+      Assert.Equal(("30", "4"), (Value("height"), Value("spp")));
+      Assert.True(Script("height") && Script("spp"));
+      Assert.Equal(("0", "2", "5"), (Value("animStart"), Value("animEnd"), Value("animFps")));
+      Assert.Contains("DistributedRayTracing", browser.FindElement(By.CssSelector("#algorithm option")).Text);
+    }
+    ScriptValuesShown();
+
+    // The user types a width: theirs wins (and the height shown with it), the script's supersampling stays.
+    IWebElement width = browser.FindElement(By.Id("width"));
+    width.Clear();
+    width.SendKeys("24");
+    Assert.False(Script("width") || Script("height"));
+    Assert.True(Script("spp"));
+    Js(browser, "document.getElementById('stats').textContent = '';");
+    browser.FindElement(By.Id("render")).Click();
+    Until(browser, () => browser.FindElement(By.Id("stats")).Text.StartsWith("24x30", StringComparison.Ordinal) &&
+                         !browser.FindElement(By.Id("stop")).Enabled, "the render at the user's width");
+    Assert.Contains("4 spp", browser.FindElement(By.Id("stats")).Text);
+    Until(browser, () => browser.FindElement(By.Id("historyLabel")).Text.Contains("OwnValues", StringComparison.Ordinal), "the render in the history");
+
+    // Another scene and back: the script's own values again.
+    Js(browser, "const s = document.getElementById('scene'); s.value = 'Five balls'; s.dispatchEvent(new Event('change'));");
+    Until(browser, () => !Script("width"), "Five balls's fields");
+    Js(browser, "const s = document.getElementById('scene'); s.value = 'OwnValues'; s.dispatchEvent(new Event('change'));");
+    ScriptValuesShown();
+    Shot(browser, "studio-script-values.png");
+  }
 }

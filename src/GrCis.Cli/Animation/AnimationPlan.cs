@@ -15,7 +15,7 @@ namespace GrCis.Cli.Animation;
 public sealed class AnimationPlan
 {
   /// <summary>Used when neither the command line nor the scene gives a range.</summary>
-  public const double DefaultStart = 0.0, DefaultEnd = 10.0, DefaultFps = 25.0;
+  public const double DefaultStart = AnimationRange.DefaultStart, DefaultEnd = AnimationRange.DefaultEnd, DefaultFps = AnimationRange.DefaultFps;
 
   AnimationPlan(AnimationTimeline timeline, FrameRange range, ShardSpec shard, IReadOnlyList<int> frames)
   {
@@ -38,15 +38,12 @@ public sealed class AnimationPlan
   /// <summary>
   /// Start, end and fps each come from the command line, else the scene script's context
   /// (<paramref name="timing"/>), else the scene's own <see cref="ITimeDependent"/> range (start and
-  /// end), else the defaults (0 to 10 s at 25 fps).
+  /// end), else the defaults (0 to 10 s at 25 fps): <see cref="AnimationRange"/>.
   /// </summary>
   /// <exception cref="UsageException">An impossible range (end before start, fps not positive, frames outside the animation).</exception>
   public static AnimationPlan Create(double? from, double? to, double? fps, ISceneTiming? timing, IRayScene scene, FrameRange? frames, ShardSpec shard)
   {
-    var own = scene as ITimeDependent;
-    double start = from ?? timing?.Start ?? own?.Start ?? DefaultStart;
-    double end = to ?? timing?.End ?? own?.End ?? DefaultEnd;
-    double rate = fps ?? timing?.Fps ?? DefaultFps;
+    (double start, double end, double rate) = AnimationRange.Resolve(from, to, fps, timing, scene);
 
     AnimationTimeline timeline;
     try

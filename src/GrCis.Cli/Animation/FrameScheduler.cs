@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Threading;
 using GrCis.Cli.Jobs;
+using GrCis.Hosting;
 using Rendering;
 using Rendering.Execution;
 using Rendering.Imaging;

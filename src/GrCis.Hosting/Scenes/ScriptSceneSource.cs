@@ -10,22 +10,37 @@ namespace GrCis.Hosting;
 /// A GrCis scene script (<c>*.cs</c>): compiled once by a <see cref="ScriptHost"/> (with the modules
 /// given by <c>--module</c>) and run with GrCis's context protocol. The script gets an
 /// <see cref="AnimatedRayScene"/>, as in GrCis's animation-capable front ends, so
-/// <c>scene is ITimeDependent</c> lets it animate; a still script never notices.
+/// <c>scene is ITimeDependent</c> lets it animate; a still script never notices. Every front end (the CLI, the
+/// demo window, the studio) builds a script's scene through this class.
 /// </summary>
 public sealed class ScriptSceneSource : ISceneSource, IDisposable
 {
-  readonly ScriptHost host = new(cacheCapacity: 4);
+  readonly ScriptHost host;
+  readonly bool ownsHost;
   readonly IReadOnlyList<string> modules;
   bool modulesLoaded;
 
   /// <param name="path">Full path of an existing script file.</param>
   /// <param name="param">The <c>--param</c> text passed to the script as <c>param</c>.</param>
   /// <param name="modules">Full paths of existing module folders, in the order given.</param>
-  public ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules)
+  public ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules) : this(path, param, modules, null)
+  {
+  }
+
+  /// <param name="path">Full path of an existing script file.</param>
+  /// <param name="param">The text passed to the script as <c>param</c>.</param>
+  /// <param name="modules">Full paths of existing module folders, in the order given.</param>
+  /// <param name="host">
+  /// A host shared with other sources, which keeps compiled scripts between them (a window or a page builds a new
+  /// source per render); null = one of its own, disposed with the source.
+  /// </param>
+  public ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules, ScriptHost? host)
   {
     Path = path;
     Param = param ?? "";
     this.modules = modules;
+    ownsHost = host == null;
+    this.host = host ?? new ScriptHost(cacheCapacity: 4);
   }
 
   /// <summary>Full path of the script.</summary>
@@ -41,8 +56,12 @@ public sealed class ScriptSceneSource : ISceneSource, IDisposable
   /// <summary>The compiled script (after the first <see cref="Load"/>).</summary>
   public CompiledScript? Script { get; private set; }
 
-  /// <summary>Compiles (once) and runs the script on a fresh context: preprocessing call, then the regular one.</summary>
+  /// <summary>
+  /// Compiles the script as it is on disk now (the host compiles a content once) and runs it on a fresh context:
+  /// preprocessing call, then the regular one.
+  /// </summary>
   /// <param name="init">What the script finds in its context (the front end's values); null = GrCis's defaults.</param>
+  /// <exception cref="FileNotFoundException">The script file is gone.</exception>
   /// <exception cref="ScriptCompilationException">The script or a module did not compile.</exception>
   /// <exception cref="ScriptRuntimeException">The script threw; names its line.</exception>
   public ScriptScene Load(ScriptContextInit? init = null)
@@ -54,7 +73,7 @@ public sealed class ScriptSceneSource : ISceneSource, IDisposable
         host.AddModules(modules);
       modulesLoaded = true;
     }
-    Script ??= host.Compile(Path);
+    Script = host.Compile(Path);
     init ??= ScriptContextInit.Default;
     return host.Run(Script, Param, new Dictionary<string, object>(), new AnimatedRayScene(),
                     init.SceneName == null ? init with { SceneName = DisplayName } : init);
@@ -68,5 +87,9 @@ public sealed class ScriptSceneSource : ISceneSource, IDisposable
   /// </summary>
   public Exception WithScriptLine(Exception e) => Script?.FindScriptLine(e) ?? e;
 
-  public void Dispose() => host.Dispose();
+  public void Dispose()
+  {
+    if (ownsHost)
+      host.Dispose();
+  }
 }

@@ -98,8 +98,33 @@ public sealed class RenderJob
     IImageFunction f = plan.CreateImageFunction();   // unbound when from the settings (see CreateImageFunction)
     ScriptObjects.Wire(f, scene);
     ImageSynthesizer synth = plan.CreateSynthesizer();
+    Bind(scene, f, synth, settings);
+    return new RenderJob(scene, f, synth, settings, sceneName, param) { Notes = plan.Notes };
+  }
 
-    // What TileRenderer does at the start of a render; done here too so probes work before any render.
+  /// <summary>
+  /// A job for a scene prepared as every front end prepares it (<see cref="RenderRequest.Prepare"/>: built, the one
+  /// precedence rule applied, set to its time), so a window or a page renders what <c>grcis render</c> renders.
+  /// </summary>
+  public static RenderJob From(PreparedRender prepared, string? sceneName = null, string param = "")
+  {
+    ArgumentNullException.ThrowIfNull(prepared);
+    RenderSettings settings = prepared.Settings with { Time = prepared.Time };
+    IImageFunction f = prepared.ImageFunction ?? CreateImageFunction(prepared.Scene, settings);   // unbound (see there)
+    ImageSynthesizer synth = prepared.Synthesizer ?? settings.CreateSynthesizer();
+    Bind(prepared.Scene, f, synth, settings);
+    return new RenderJob(prepared.Scene, f, synth, settings, sceneName ?? prepared.Script?.Script.Path, param)
+    {
+      Notes = prepared.Notes.ToArray(),
+      Prepared = prepared,
+      // A class of the script that throws while rendering is named with its line, as grcis render names it.
+      LocateError = prepared.Script is { } run ? e => run.Script.FindScriptLine(e) : null,
+    };
+  }
+
+  // What TileRenderer does at the start of a render; done here too so probes work before any render.
+  static void Bind(IRayScene scene, IImageFunction f, ImageSynthesizer synth, RenderSettings settings)
+  {
     synth.ImageFunction = f;
     IRayScene? callerScene = MT.scene;
     MT.scene = scene; // an unbound function reaches the camera through MT.scene
@@ -112,8 +137,10 @@ public sealed class RenderJob
     {
       MT.scene = callerScene;
     }
-    return new RenderJob(scene, f, synth, settings, sceneName, param) { Notes = plan.Notes };
   }
+
+  /// <summary>The prepared scene this job was made from (<see cref="From"/>), or null.</summary>
+  public PreparedRender? Prepared { get; private init; }
 
   /// <summary>Things the user should know about how the script's choices were used (<see cref="RenderPlan.Notes"/>).</summary>
   public System.Collections.Generic.IReadOnlyList<string> Notes { get; private init; } = Array.Empty<string>();

@@ -13,17 +13,23 @@ using Rendering.Imaging;
 namespace GrCis.Interactive;
 
 /// <summary>
-/// Renders the frames of an animated scene the way <c>grcis animate</c> does: frame k at
-/// <see cref="AnimationTimeline.FrameTime"/>, the scene's time set before the frame, and the tile
-/// renderer (one clone of the scene per worker) with the frame number mixed into the seeds.
+/// Renders the frames of an animated scene with the frame renderer of <c>grcis animate</c>
+/// (<see cref="FrameRenderer"/>: frame k at <see cref="AnimationTimeline.FrameTime"/>, the scene's time set before
+/// the frame, the frame number mixed into the seeds), one frame at a time on all threads.
 /// Optionally saves each frame (atomically) to a pattern like <c>out####.png</c>.
 /// </summary>
 public sealed partial class AnimationRun
 {
+  readonly FrameRenderer frames;
+  IRayScene? workerScene;
+
   public AnimationRun(RenderJob job, AnimationTimeline timeline)
   {
     Job = job ?? throw new ArgumentNullException(nameof(job));
     Timeline = timeline ?? throw new ArgumentNullException(nameof(timeline));
+    // The script's own function and renderer (copied per frame as grcis animate copies them), else the settings'.
+    var parts = new FrameParts(job.Settings, job.Prepared?.ImageFunction, job.Prepared?.Synthesizer);
+    frames = new FrameRenderer(job.Scene, job.Settings, timeline, 0.0, parts);
   }
 
   public RenderJob Job { get; }
@@ -33,16 +39,11 @@ public sealed partial class AnimationRun
   /// <summary>Raised after each frame (on the rendering thread).</summary>
   public event EventHandler<FrameRenderedEventArgs>? FrameRendered;
 
-  /// <summary>A timeline from the script's overrides, falling back to the given range.</summary>
-  public static AnimationTimeline TimelineFor(SceneOverrides? overrides, double start, double end, double fps) =>
-    new(overrides?.Start ?? start, overrides?.End ?? end, overrides?.Fps ?? fps);
-
   /// <summary>The image of one frame (a still at the frame's time).</summary>
   public FloatImage RenderFrame(int frame, CancellationToken cancel = default)
   {
-    double time = Timeline.FrameTime(frame);
-    SceneTime.Set(Job.Scene, time);
-    return FrameRendering.Render(Job.Scene, Job.ImageFunction, Job.Renderer, Job.Settings.ToRenderOptions(frame), null, cancel).Image;
+    workerScene ??= frames.CreateWorkerScene();
+    return frames.Render(workerScene, frame, Job.Settings.EffectiveThreads, null, cancel);
   }
 
   /// <summary>Renders every frame in order; stops between frames when cancelled. Returns the frames rendered.</summary>

@@ -1,9 +1,9 @@
 using System;
 using System.Collections.Generic;
-using System.Globalization;
 using System.IO;
-using Rendering;
 using GrCis.Hosting;
+using GrCis.Scripting;
+using Rendering;
 
 namespace GrCis.Interactive;
 
@@ -15,12 +15,20 @@ public sealed class SceneCatalog
 {
   readonly List<SceneEntry> entries = new();
 
-  public SceneCatalog(IScriptEvaluator? evaluator = null) => Evaluator = evaluator;
+  /// <param name="scripts">Compiles and runs the scripts (shared by every build, so a script compiles once per content); null = built-in scenes only.</param>
+  public SceneCatalog(ScriptHost? scripts = null) => Scripts = scripts;
 
-  /// <summary>Runs scripts; without one, only built-in scenes can be built.</summary>
-  public IScriptEvaluator? Evaluator { get; set; }
+  /// <summary>Compiles and runs scene scripts; without one, only built-in scenes can be built.</summary>
+  public ScriptHost? Scripts { get; set; }
 
   public IReadOnlyList<SceneEntry> Entries => entries;
+
+  /// <summary>
+  /// The script files the front end may open (the studio's: nothing a link leads to outside its folders); null = any.
+  /// A refused file of a folder is not listed, a refused single file is an error, and a listed script whose file became
+  /// such a link is not built.
+  /// </summary>
+  public Predicate<string>? AllowScript { get; init; }
 
   /// <summary>Raised after entries were added.</summary>
   public event EventHandler? Changed;
@@ -46,7 +54,7 @@ public sealed class SceneCatalog
     Array.Sort(files, StringComparer.OrdinalIgnoreCase);
     int added = 0;
     foreach (string f in files)
-      if (AddScriptCore(f, out _))
+      if ((AllowScript == null || AllowScript(f)) && AddScriptCore(f, out _))
         added++;
     if (added > 0)
       Changed?.Invoke(this, EventArgs.Empty);
@@ -59,6 +67,8 @@ public sealed class SceneCatalog
     ArgumentException.ThrowIfNullOrEmpty(path);
     if (!File.Exists(path))
       throw new SceneEvaluationException($"{path}: scene script not found.");
+    if (AllowScript != null && !AllowScript(path))
+      throw new SceneEvaluationException($"{path}: not allowed here (a link leading outside the folders given).");
     if (AddScriptCore(path, out SceneEntry entry))
       Changed?.Invoke(this, EventArgs.Empty);
     return entry;
@@ -88,9 +98,9 @@ public sealed class SceneCatalog
   }
 
   /// <summary>A catalog holding the classic GrCis scenes (<see cref="BuiltInScenes"/>).</summary>
-  public static SceneCatalog WithBuiltInScenes(IScriptEvaluator? evaluator = null)
+  public static SceneCatalog WithBuiltInScenes(ScriptHost? scripts = null)
   {
-    var catalog = new SceneCatalog(evaluator);
+    var catalog = new SceneCatalog(scripts);
     BuiltInScenes.AddTo(catalog);
     return catalog;
   }
@@ -131,74 +141,66 @@ public sealed class SceneCatalog
   }
 
   /// <summary>
-  /// Builds the scene of <paramref name="entry"/> with <paramref name="param"/>. A script gets the
-  /// settings' size, supersampling and time in its context and may override them; the entry then
-  /// remembers the tooltip and overrides for the UI.
+  /// Builds the scene of <paramref name="entry"/> with <paramref name="param"/> the way <c>grcis render</c> builds it
+  /// (<see cref="RenderRequest.Prepare"/>: a script through <see cref="ScriptSceneSource"/>, the one precedence rule,
+  /// the scene set to <see cref="RenderSettings.Time"/> or its script's time or its start). The entry then remembers
+  /// the script's tooltip and its own values (size, supersampling, animation range) for the UI.
   /// </summary>
+  /// <param name="given">The settings the user gave, which win over the script's (<see cref="Precedence"/>).</param>
+  /// <param name="start">The animation start the user gave (the script finds it in its context, as with <c>grcis animate --from</c>).</param>
+  /// <param name="end">The animation end the user gave.</param>
+  /// <param name="fps">The frame rate the user gave.</param>
   /// <exception cref="SceneEvaluationException">The scene could not be built; the message is for the user.</exception>
-  public BuiltScene Build(SceneEntry entry, string? param, RenderSettings settings)
+  public BuiltScene Build(SceneEntry entry, string? param, RenderSettings settings, GivenSettings given = RenderJob.Given,
+                          double? start = null, double? end = null, double? fps = null)
   {
     ArgumentNullException.ThrowIfNull(entry);
     ArgumentNullException.ThrowIfNull(settings);
     param ??= "";
 
+    ISceneSource source;
     if (entry.Kind == SceneEntryKind.BuiltIn)
+      source = new CatalogSceneSource(entry, param);
+    else if (AllowScript != null && !AllowScript(entry.Path!))
+      throw new SceneEvaluationException($"{entry.Path}: not allowed here (a link leading outside the folders given).");
+    else if (Scripts == null)
+      throw new SceneEvaluationException($"{entry.Path}: scene scripts need the script host, and none is configured.");
+    else
+      source = new ScriptSceneSource(entry.Path!, param, Array.Empty<string>(), Scripts);
+
+    PreparedRender prepared;
+    try
     {
-      IRayScene scene;
-      try
-      {
-        scene = entry.Factory!(param);
-      }
-      catch (Exception ex) when (ex is not SceneEvaluationException)
-      {
-        throw new SceneEvaluationException($"Scene '{entry.Name}' failed: {ex.Message}", ex);
-      }
-      entry.Overrides = new SceneOverrides();
-      return new BuiltScene(entry, param, scene) { Tooltip = entry.Tooltip };
+      prepared = new RenderRequest(source, settings, given, settings.Time) { Start = start, End = end, Fps = fps }.Prepare();
+    }
+    catch (Exception ex) when (ex is ScriptCompilationException or ScriptRuntimeException or ScriptChoiceException)
+    {
+      throw new SceneEvaluationException(ex.Message, ex);
+    }
+    catch (Exception ex) when (entry.Kind == SceneEntryKind.Script && ex is IOException or UnauthorizedAccessException)
+    {
+      throw new SceneEvaluationException($"{entry.Path}: cannot read the script ({ex.Message}).", ex);
+    }
+    catch (Exception ex) when (entry.Kind == SceneEntryKind.BuiltIn && ex is not (SceneEvaluationException or OperationCanceledException or InvalidSettingException))
+    {
+      throw new SceneEvaluationException($"Scene '{entry.Name}' failed: {ex.Message}", ex);
     }
 
-    if (Evaluator == null)
-      throw new SceneEvaluationException($"{entry.Path}: scene scripts need the script host, and none is configured.");
-
-    string source = entry.ReloadSource();
-    var context = new Dictionary<string, object?>
+    ScriptScene? run = prepared.Script;
+    var overrides = run == null ? new SceneOverrides() : new SceneOverrides
     {
-      [PropertyName.CTX_SCENE_NAME] = entry.Name,
-      [PropertyName.CTX_SCRIPT_PATH] = entry.Path,
-      [PropertyName.CTX_WIDTH] = settings.Width,
-      [PropertyName.CTX_HEIGHT] = settings.Height,
-      [PropertyName.CTX_SUPERSAMPLING] = settings.SamplesPerPixel,
+      Width = run.Width,
+      Height = run.Height,
+      Supersampling = run.SuperSampling,
+      Algorithm = run.Algorithm?.GetType().Name,
+      Start = run.Start,
+      End = run.End,
+      Fps = run.Fps,
     };
-    if (settings.Time is double t)
-      context[PropertyName.CTX_TIME] = t;
-
-    IRayScene target = new DefaultRayScene();
-    Evaluator.Run(entry.Path!, source, target, param, context);
-    // A script may hand back a scene of its own (e.g. an animated one) instead of filling ours.
-    if (context.TryGetValue(PropertyName.CTX_SCENE, out object? sc) && sc is IRayScene own)
-      target = own;
-
-    var overrides = new SceneOverrides
-    {
-      Width = ChangedInt(context, PropertyName.CTX_WIDTH, settings.Width),
-      Height = ChangedInt(context, PropertyName.CTX_HEIGHT, settings.Height),
-      Supersampling = ChangedInt(context, PropertyName.CTX_SUPERSAMPLING, settings.SamplesPerPixel),
-      Start = GetDouble(context, PropertyName.CTX_START_ANIM),
-      End = GetDouble(context, PropertyName.CTX_END_ANIM),
-      Fps = GetDouble(context, PropertyName.CTX_FPS),
-    };
-    string? tooltip = context.TryGetValue(PropertyName.CTX_TOOLTIP, out object? tt) ? tt as string : null;
     entry.Overrides = overrides;
-    if (tooltip != null)
-      entry.Tooltip = tooltip;
-
-    return new BuiltScene(entry, param, target)
-    {
-      Overrides = overrides,
-      Tooltip = tooltip ?? entry.Tooltip,
-      ImageFunction = context.TryGetValue(PropertyName.CTX_ALGORITHM, out object? alg) ? alg as IImageFunction : null,
-      Renderer = context.TryGetValue(PropertyName.CTX_SYNTHESIZER, out object? syn) ? syn as IRenderer : null,
-    };
+    if (run?.ToolTip != null)
+      entry.Tooltip = run.ToolTip;
+    return new BuiltScene(entry, param, prepared) { Overrides = overrides, Tooltip = entry.Tooltip };
   }
 
   string UniqueName(string name)
@@ -207,26 +209,5 @@ public sealed class SceneCatalog
     for (int k = 2; Find(candidate) != null; k++)
       candidate = $"{name} ({k})";
     return candidate;
-  }
-
-  static int? ChangedInt(Dictionary<string, object?> context, string key, int given)
-  {
-    double? v = GetDouble(context, key);
-    if (v == null)
-      return null;
-    int i = (int)v.Value;
-    return i != given ? i : null;
-  }
-
-  static double? GetDouble(Dictionary<string, object?> context, string key)
-  {
-    if (!context.TryGetValue(key, out object? v) || v == null)
-      return null;
-    return v switch
-    {
-      IConvertible c when v is not string => c.ToDouble(CultureInfo.InvariantCulture),
-      string s when double.TryParse(s, NumberStyles.Float, CultureInfo.InvariantCulture, out double d) => d,
-      _ => null,
-    };
   }
 }

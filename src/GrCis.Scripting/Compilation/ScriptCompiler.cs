@@ -63,6 +63,13 @@ internal static class ScriptCompiler
       throw new ScriptCompilationException(path, new[] { new ScriptDiagnostic(path, 1, 1, "error", ScriptDiagnostic.EmptyScriptId,
         "the scene script is empty (only whitespace or comments); it must build the scene: set scene.Intersectable, scene.Camera, scene.Sources") });
     (tree, InstrumentedSource instrumented) = Instrument(tree, scriptParseOptions);
+    // A module type that shadows a library type of the same name is the one the script means.
+    InstrumentedSource aliased = ShadowedLibraryTypes.WithAliases(instrumented, modules);
+    if (!ReferenceEquals(aliased, instrumented))
+    {
+      instrumented = aliased;
+      tree = CSharpSyntaxTree.ParseText(instrumented.Instrumented, scriptParseOptions, path);
+    }
     var options = new CSharpCompilationOptions(
       OutputKind.DynamicallyLinkedLibrary,
       usings: ScriptImports(modules),
@@ -127,7 +134,9 @@ internal static class ScriptCompiler
     // GrCis was written against OpenTK 3, whose math types live in namespace OpenTK: students write
     // `using OpenTK;`. Here they live in OpenTK.Mathematics (OpenTK 4), imported for every module file
     // as scripts import it; a file's own types still win over imported ones.
-    trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(ModuleImports, Encoding.UTF8), moduleParseOptions, "GrCisModuleImports.g.cs"));
+    // Types an earlier module compiled under a suffixed name (see ShadowedLibraryTypes) keep their plain name here too.
+    string imports = ModuleImports + string.Concat(earlier.SelectMany(m => m.Renamed).Select(r => "global " + r.Alias + "\n"));
+    trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(imports, Encoding.UTF8), moduleParseOptions, "GrCisModuleImports.g.cs"));
 
     string dirName = new string(Path.GetFileName(directory.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar))
       .Select(c => char.IsLetterOrDigit(c) ? c : '_').ToArray());
@@ -139,12 +148,15 @@ internal static class ScriptCompiler
     var overrides = new List<OverrideAccess.Changed>();
     compilation = OverrideAccess.Normalize(compilation, instrumented, moduleParseOptions, overrides);
     compilation = DataFileCalls.Rewrite(compilation, instrumented, moduleParseOptions);
+    var shadowed = new List<ShadowedLibraryTypes.Renamed>();
+    compilation = ShadowedLibraryTypes.Rename(compilation, instrumented, moduleParseOptions, shadowed);
     (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides);
+    warnings.AddRange(ShadowedLibraryTypes.Report(shadowed));
     byte[] image = pe.ToArray();
     var context = new ScriptLoadContext(assemblyName, ModuleMap(earlier));
     Assembly assembly = context.LoadFromStream(new MemoryStream(image), pdb);
     return new ScriptModule(directories, files, hash, assembly, MetadataReference.CreateFromImage(image), context, warnings,
-      instrumented.ToDictionary(kv => kv.Key.FilePath, kv => kv.Value, StringComparer.Ordinal));
+      instrumented.ToDictionary(kv => kv.Key.FilePath, kv => kv.Value, StringComparer.Ordinal)) { Renamed = shadowed };
   }
 
   /// <summary>The user's tree with interruption points inserted (see <see cref="InterruptionPoints"/>), parsed again, and the way back to the original.</summary>

@@ -4,6 +4,7 @@ using GrCis.Hosting;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
 using Microsoft.AspNetCore.Http;
+using Rendering;
 
 namespace GrCis.Studio;
 
@@ -11,8 +12,9 @@ namespace GrCis.Studio;
 internal static class AnimationApi
 {
   /// <summary>What the page sends: the scene, its parameters and settings, the range, optionally a folder for the frames, and the algorithm (as to render).</summary>
-  internal sealed record AnimationBody(string Scene, string? Param, RenderSettings? Settings, double Start, double End, double Fps, string? Folder,
-                                       string? Algorithm = null);
+  /// <remarks>A null start, end or fps is the script's own (else the scene's range, else 0 to 10 s at 25 fps); <c>given</c> as to render.</remarks>
+  internal sealed record AnimationBody(string Scene, string? Param, RenderSettings? Settings, double? Start, double? End, double? Fps, string? Folder,
+                                       string? Algorithm = null, string[]? Given = null);
 
   public static void Map(WebApplication app)
   {
@@ -32,17 +34,22 @@ internal static class AnimationApi
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
       return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
-    if (!(body.End >= body.Start) || !(body.Fps > 0.0) || (body.End - body.Start) * body.Fps > 100_000)
-      return Results.BadRequest(new { error = "the range needs start ≤ end and fps > 0 (at most 100000 frames)" });
+    if (body.Start > body.End || body.Fps <= 0.0)
+      return Results.BadRequest(new { error = "the range needs start ≤ end and fps > 0" });
     if (!StudioApi.TryAlgorithm(body.Algorithm, out RenderAlgorithm? algorithm, out IResult? bad))
       return bad;
+    if (!StudioApi.TryGiven(body.Given, out GivenSettings given, out bad))
+      return bad;
+    if (entry.Path != null && !files.Allows(entry.Path))
+      return Results.StatusCode(StatusCodes.Status403Forbidden);
     string? folder = null;
     if (!string.IsNullOrWhiteSpace(body.Folder))
     {
-      folder = Path.GetFullPath(body.Folder);
-      // A folder for frames must lie inside a folder given on the command line.
-      if (!files.Allows(Path.Combine(folder, "out0000.png")))
+      // A folder for frames must lie inside a folder given on the command line, really (links followed); the frames
+      // are written into that real folder.
+      if (files.Resolve(Path.Combine(Path.GetFullPath(body.Folder), "out0000.png")) is not string first)
         return Results.StatusCode(StatusCodes.Status403Forbidden);
+      folder = Path.GetDirectoryName(first);
     }
     RenderSettings settings;
     try
@@ -59,6 +66,7 @@ internal static class AnimationApi
     s.Controller.Selected = entry;
     s.Controller.Settings = settings;
     s.Controller.Algorithm = algorithm;
+    s.Controller.Given = given;
     AnimationRun run;
     try
     {
@@ -66,8 +74,13 @@ internal static class AnimationApi
     }
     catch (Exception e) when (e is SceneEvaluationException or ArgumentException)
     {
-      return Results.BadRequest(new { error = e.Message });
+      // A range from the script or the user that cannot be: its first sentence, without the parameter's name.
+      string message = e is ArgumentException a && a.ParamName != null ? e.Message.Split(" (Parameter")[0] : e.Message;
+      return Results.BadRequest(new { error = message });
     }
+    AnimationTimeline t = run.Timeline;
+    if (t.FrameCount > 100_000)
+      return Results.BadRequest(new { error = $"the range {t.Start}–{t.End} s at {t.Fps} fps has {t.FrameCount} frames; at most 100000" });
     s.Animation = StudioAnimation.Start(run, folder);
     return Results.Accepted();
   }

@@ -18,7 +18,7 @@ internal static class FilesApi
     {
       if (string.IsNullOrWhiteSpace(body.Path) || !files.Allows(body.Path))
         return Results.StatusCode(StatusCodes.Status403Forbidden);
-      if (!body.Path.EndsWith(".cs", StringComparison.OrdinalIgnoreCase) || !System.IO.File.Exists(body.Path))
+      if (!body.Path.EndsWith(".cs", StringComparison.OrdinalIgnoreCase) || !System.IO.File.Exists(files.Resolve(body.Path)))
         return Results.NotFound(new { error = $"{body.Path}: no such scene script" });
       SceneEntry entry;
       lock (s.Controller.Catalog)

@@ -3,6 +3,7 @@ using System.Diagnostics.CodeAnalysis;
 using System.IO;
 using System.Linq;
 using System.Reflection;
+using System.Threading.Tasks;
 using GrCis.Hosting;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
@@ -48,10 +49,13 @@ internal static class StudioApi
       };
     });
     app.MapGet("/api/settings", (StudioSession s) => s.Controller.Settings);
-    app.MapPost("/api/render", (RenderBody body, StudioSession s) => Render(body, s));
+    app.MapPost("/api/render", (RenderBody body, StudioSession s, AllowedFiles files) => Render(body, s, files));
+    app.MapPost("/api/scene/values", (SceneBody body, StudioSession s, AllowedFiles files) => ScriptValues(body, s, files));
     app.MapPost("/api/stop", (StudioSession s) =>
     {
+      // Whatever runs: the script being built, the render, and an animation.
       s.Controller.Stop();
+      s.Animation?.Stop();
       return Results.NoContent();
     });
     app.MapGet("/api/status", (StudioSession s) => s.Status());
@@ -71,7 +75,7 @@ internal static class StudioApi
       SceneEntry? entry = s.Controller.Catalog.Find(scene);
       if (entry?.Path == null)
         return Results.NotFound();
-      return files.Allows(entry.Path) ? Results.Text(File.ReadAllText(entry.Path), "text/plain; charset=utf-8") : Results.StatusCode(StatusCodes.Status403Forbidden);
+      return files.Resolve(entry.Path) is string real ? Results.Text(File.ReadAllText(real), "text/plain; charset=utf-8") : Results.StatusCode(StatusCodes.Status403Forbidden);
     });
     ViewsApi.Map(app);
     HistoryApi.Map(app);
@@ -82,16 +86,17 @@ internal static class StudioApi
       SceneEntry? entry = s.Controller.Catalog.Find(scene);
       if (entry?.Path == null)
         return Results.NotFound();
-      if (!files.Allows(entry.Path))
+      // The real file is written (a link inside the folders keeps pointing at it); a link leading out is refused.
+      if (files.Resolve(entry.Path) is not string real)
         return Results.StatusCode(StatusCodes.Status403Forbidden);
       using var reader = new StreamReader(request.Body, System.Text.Encoding.UTF8);
-      SaveAtomically(entry.Path, await reader.ReadToEndAsync());
+      SaveAtomically(real, await reader.ReadToEndAsync());
       // The script's watcher re-renders it (as for a save from any other editor).
       return Results.NoContent();
     });
     app.MapGet("/api/file", (string path, AllowedFiles files) =>
-      !files.Allows(path) ? Results.StatusCode(StatusCodes.Status403Forbidden)
-      : File.Exists(path) ? Results.Text(File.ReadAllText(path), "text/plain; charset=utf-8")
+      files.Resolve(path) is not string real ? Results.StatusCode(StatusCodes.Status403Forbidden)
+      : File.Exists(real) ? Results.Text(File.ReadAllText(real), "text/plain; charset=utf-8")
       : Results.NotFound());
   }
 
@@ -100,14 +105,83 @@ internal static class StudioApi
   /// (<c>grcis render --algorithm</c>'s names; null or empty = the scene's choice), and whether to render in passes
   /// of samples (true), by tiles (false) or as suits the algorithm (null).
   /// </summary>
-  internal sealed record RenderBody(string Scene, string? Param, RenderSettings? Settings, string? Algorithm = null, bool? Progressive = null);
+  /// <remarks>
+  /// <c>given</c> names the settings the user changed (<see cref="GivenSettings"/>: <c>Size</c>, <c>SamplesPerPixel</c>,
+  /// <c>Jitter</c>, <c>Shadows</c>, <c>Reflections</c>, <c>Refractions</c>, <c>Gamma</c>): they win over the script's own
+  /// values, as options typed on the command line do; the others are the script's where it sets them. Absent = none.
+  /// </remarks>
+  internal sealed record RenderBody(string Scene, string? Param, RenderSettings? Settings, string? Algorithm = null, bool? Progressive = null,
+                                    string[]? Given = null);
 
-  static IResult Render(RenderBody body, StudioSession s)
+  /// <summary>A scene and its parameter text, to read the script's own values.</summary>
+  internal sealed record SceneBody(string Scene, string? Param);
+
+  /// <summary>The request's <c>given</c> names as flags, or a 400 naming the one that is not known.</summary>
+  internal static bool TryGiven(string[]? names, out GivenSettings given, [NotNullWhen(false)] out IResult? bad)
+  {
+    given = GivenSettings.None;
+    bad = null;
+    foreach (string name in names ?? [])
+    {
+      if (!Enum.TryParse(name, ignoreCase: true, out GivenSettings flag) || !Enum.IsDefined(flag) || flag == GivenSettings.Algorithm)
+      {
+        bad = Results.BadRequest(new { error = $"given setting '{name}' is not known; use Size, SamplesPerPixel, Jitter, Shadows, Reflections, Refractions or Gamma" });
+        return false;
+      }
+      given |= flag;
+    }
+    return true;
+  }
+
+  /// <summary>
+  /// The script's own values for the fields (size, samples per pixel, algorithm, animation range; null where it sets
+  /// none) and its tooltip: the scene is built, not rendered.
+  /// </summary>
+  static async Task<IResult> ScriptValues(SceneBody body, StudioSession s, AllowedFiles files)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
       return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
+    if (entry.Path != null && !files.Allows(entry.Path))
+      return Results.StatusCode(StatusCodes.Status403Forbidden);
+    if (body.Param != null)
+      entry.ParameterText = body.Param;
+    SceneOverrides values;
+    try
+    {
+      values = await s.Controller.ReadScriptValuesAsync(entry);
+    }
+    catch (SceneEvaluationException e)
+    {
+      return Results.BadRequest(new { error = e.Message, diagnostics = ScriptErrors.Parse(e.Message) });
+    }
+    catch (OperationCanceledException)
+    {
+      return Results.Conflict(new { error = "stopped" });
+    }
+    return Results.Ok(new
+    {
+      width = values.Width,
+      height = values.Height,
+      samplesPerPixel = values.Supersampling,
+      algorithm = values.Algorithm,
+      start = values.Start,
+      end = values.End,
+      fps = values.Fps,
+      tooltip = entry.Tooltip,
+    });
+  }
+
+  static IResult Render(RenderBody body, StudioSession s, AllowedFiles files)
+  {
+    SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
+    if (entry == null)
+      return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
+    if (entry.Path != null && !files.Allows(entry.Path))
+      return Results.StatusCode(StatusCodes.Status403Forbidden);
     if (!TryAlgorithm(body.Algorithm, out RenderAlgorithm? algorithm, out IResult? bad))
+      return bad;
+    if (!TryGiven(body.Given, out GivenSettings given, out bad))
       return bad;
     RenderSettings settings = body.Settings ?? s.Controller.Settings;
     try
@@ -118,7 +192,7 @@ internal static class StudioApi
     {
       return Results.BadRequest(new { error = e.Message });
     }
-    s.Render(entry, body.Param ?? entry.ParameterText, settings, algorithm, body.Progressive);
+    s.Render(entry, body.Param ?? entry.ParameterText, settings, algorithm, body.Progressive, given);
     return Results.Accepted();
   }
 

@@ -6,8 +6,22 @@ const $ = id => document.getElementById(id);
 const canvas = $("canvas"), ctx = canvas.getContext("2d");
 let scenes = [], shownVersion = -1, polling = null;
 let zoom = 1, panX = 0, panY = 0, drag = null;
-let viewsFor = -1, hoverTimer = null;
+let viewsFor = -1, hoverTimer = null, historyFor = -1;
 let editor = null, editedScene = null, marks = [], lastProbe = null;
+// Settings the user changed since the scene was chosen: they win over the script's own values (as command-line
+// options do); the other fields show the script's values, marked, and are sent as not given.
+const given = new Set();
+const givenFlag = { width: "Size", height: "Size", spp: "SamplesPerPixel", jitter: "Jitter",
+  shadows: "Shadows", reflections: "Reflections", refractions: "Refractions" };
+const rangeFields = ["animStart", "animEnd", "animFps"];
+const rangeGiven = new Set();
+
+// The page's own last error (a refused request): shown beside the studio's until the next action.
+let pageError = "";
+function showError(message) {
+  pageError = message;
+  $("messages").textContent = message;
+}
 
 async function api(path, options) {
   const r = await fetch("api/" + path, options);
@@ -39,6 +53,58 @@ function sceneChanged() {
   $("param").value = s?.param ?? "";
   $("param").title = s?.tooltip ?? "";
   $("param").placeholder = s?.tooltip ?? "";
+  return loadScriptValues();
+}
+
+// Shows a value of the script in its field, marked as the script's (until the user changes it).
+function showScriptValue(id, value) {
+  const field = $(id);
+  // A range the previous script set, and this one does not, is the scene's again (an empty field).
+  if (value == null && field.classList.contains("script") && rangeFields.includes(id)) field.value = "";
+  field.classList.toggle("script", value != null);
+  field.title = value != null ? "the script's value; change it to use your own" : "";
+  if (value == null) return false;
+  field.value = value;
+  return true;
+}
+
+// The chosen scene's own values (built, not rendered): size, samples per pixel, algorithm, animation range.
+async function loadScriptValues() {
+  const name = $("scene").value;
+  showError("");
+  let v = {};
+  try {
+    v = await (await api("scene/values", {
+      method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify({ scene: name, param: $("param").value }),
+    })).json();
+  } catch (e) {
+    showError(e.message);
+  }
+  if ($("scene").value !== name) return;   // another scene was chosen meanwhile
+  const size = v.width != null || v.height != null;
+  if (showScriptValue("width", size ? (v.width ?? $("width").value) : null) | showScriptValue("height", size ? (v.height ?? $("height").value) : null))
+    given.delete("Size");
+  if (showScriptValue("spp", v.samplesPerPixel)) given.delete("SamplesPerPixel");
+  $("algorithm").options[0].textContent = `scene's choice (${v.algorithm ?? "ray tracing"})`;
+  for (const [id, value] of [["animStart", v.start], ["animEnd", v.end], ["animFps", v.fps]])
+    if (showScriptValue(id, value)) rangeGiven.delete(id);
+  if (v.tooltip) { $("param").title = $("param").placeholder = v.tooltip; }
+}
+
+// A field the user changes is given: it wins over the script's value.
+function fieldChanged(e) {
+  const id = e.target.id;
+  if (givenFlag[id]) given.add(givenFlag[id]);
+  if (rangeFields.includes(id)) rangeGiven.add(id);
+  for (const f of id === "width" || id === "height" ? ["width", "height"] : [id]) {
+    $(f).classList.remove("script");
+    $(f).title = "";
+  }
+}
+
+// An animation field as sent: the user's value, or null for the script's (else the scene's, else 0 to 10 s at 25 fps).
+function rangeValue(id) {
+  return rangeGiven.has(id) || !$(id).classList.contains("script") && $(id).value !== "" ? Number($(id).value) : null;
 }
 
 function settings() {
@@ -65,16 +131,19 @@ function progressive() {
 }
 
 async function render() {
-  $("messages").textContent = "";
+  showError("");
   $("view-kind").value = "";
   $("viewDownloads").hidden = true;
   try {
     await api("render", {
       method: "POST", headers: { "Content-Type": "application/json" },
-      body: JSON.stringify({ scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value, progressive: progressive() }),
+      body: JSON.stringify({
+        scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value, progressive: progressive(),
+        given: [...given],
+      }),
     });
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
     return;
   }
   $("stop").disabled = false;
@@ -100,12 +169,14 @@ async function poll() {
   $("stats").textContent = s.statistics || (s.samples != null
     ? `${s.samples} spp so far` + (s.noise != null ? `, noise ${s.noise.toPrecision(3)} RMSE` : "")
     : "");
-  $("messages").textContent = [...s.notes, s.error].filter(Boolean).join("\n");
+  $("messages").textContent = [...s.notes, s.error, pageError].filter(Boolean).join("\n");
   showDiagnostics(s.diagnostics);
   $("stop").disabled = !s.rendering;
-  if (s.version !== shownVersion && s.version > 0) {
-    await showImage(s.version);
-    if (!s.rendering) await loadHistory();
+  if (s.version !== shownVersion && s.version > 0) await showImage(s.version);
+  // The history once per finished image (the image fetched may already be newer than the status that asked for it).
+  if (!s.rendering && s.version > 0 && s.version !== historyFor) {
+    historyFor = s.version;
+    await loadHistory();
   }
   return s.rendering;
 }
@@ -134,23 +205,23 @@ async function show3d() {
     const boxes = await (await api("scene/boxes")).json();
     RayView.show($("rays3d"), boxes, lastProbe?.rays);
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
 }
 
 async function renderFrames() {
-  $("messages").textContent = "";
+  showError("");
   try {
     await api("animation", {
       method: "POST", headers: { "Content-Type": "application/json" },
       body: JSON.stringify({
-        scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value,
-        start: Number($("animStart").value), end: Number($("animEnd").value), fps: Number($("animFps").value),
+        scene: $("scene").value, param: $("param").value, settings: settings(), algorithm: $("algorithm").value, given: [...given],
+        start: rangeValue("animStart"), end: rangeValue("animEnd"), fps: rangeValue("animFps"),
         folder: $("animFolder").value.trim() || null,
       }),
     });
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
     return;
   }
   $("animStop").disabled = false;
@@ -178,7 +249,7 @@ async function showFrame(k) {
 async function openEditor() {
   const name = $("scene").value;
   const r = await api("source?scene=" + encodeURIComponent(name));
-  if (!r.ok) { $("messages").textContent = `${name} is not a script file`; return; }
+  if (!r.ok) { showError(`${name} is not a script file`); return; }
   const text = await r.text();
   $("editorPane").hidden = false;
   $("editorName").textContent = scenes.find(x => x.name === name)?.file ?? name;
@@ -197,9 +268,10 @@ async function save() {
     await api("source?scene=" + encodeURIComponent(editedScene), {
       method: "PUT", headers: { "Content-Type": "text/plain; charset=utf-8" }, body: editor.getValue(),
     });
+    showError("");
     $("messages").textContent = "saved; compiling…";
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
   pollSoon(150);
 }
@@ -219,7 +291,7 @@ async function moveHistory(direction) {
     const s = await (await api("status")).json();
     await showImage(s.version);
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
 }
 
@@ -240,7 +312,7 @@ async function showView() {
     $("viewCsv").download = kind.toLowerCase() + ".csv";
     await draw(await api(`views/${kind}.png?v=${viewsFor}`));
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
 }
 
@@ -327,11 +399,16 @@ async function probe(p) {
     $("show3d").hidden = !r.rays;
     if (!$("rays3dPane").hidden) await show3d();
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
 }
 
 $("scene").addEventListener("change", sceneChanged);
+$("param").addEventListener("change", loadScriptValues);
+for (const id of [...Object.keys(givenFlag), ...rangeFields]) {
+  $(id).addEventListener("input", fieldChanged);
+  $(id).addEventListener("change", fieldChanged);
+}
 $("view-kind").addEventListener("change", showView);
 $("edit").addEventListener("click", openEditor);
 $("open").addEventListener("click", async () => {
@@ -344,7 +421,7 @@ $("open").addEventListener("click", async () => {
     select.appendChild(o);
   }
   $("picker").hidden = files.length === 0;
-  if (files.length === 0) $("messages").textContent = "no scripts in the folders given to grcis studio";
+  if (files.length === 0) showError("no scripts in the folders given to grcis studio");
 });
 $("add").addEventListener("click", async () => {
   try {
@@ -356,7 +433,7 @@ $("add").addEventListener("click", async () => {
     sceneChanged();
     $("picker").hidden = true;
   } catch (e) {
-    $("messages").textContent = e.message;
+    showError(e.message);
   }
 });
 $("animRender").addEventListener("click", renderFrames);
@@ -366,10 +443,11 @@ $("show3d").addEventListener("click", async () => { $("rays3dPane").hidden = !$(
 $("save").addEventListener("click", save);
 $("closeEditor").addEventListener("click", () => { $("editorPane").hidden = true; });
 document.addEventListener("keydown", e => {
-  if ((e.ctrlKey || e.metaKey) && e.key === "s") { e.preventDefault(); save(); }
+  // In the editor CodeMirror's own Ctrl+S has saved already (and prevented the default): one save per key press.
+  if ((e.ctrlKey || e.metaKey) && e.key === "s" && !e.defaultPrevented) { e.preventDefault(); save(); }
 });
 $("back").addEventListener("click", () => moveHistory("back"));
 $("forward").addEventListener("click", () => moveHistory("forward"));
 $("render").addEventListener("click", render);
 $("stop").addEventListener("click", () => api("stop", { method: "POST" }));
-loadScenes().then(loadAlgorithm).then(() => pollSoon(0)).catch(e => { $("messages").textContent = e.message; });
+loadScenes().then(loadAlgorithm).then(() => pollSoon(0)).catch(e => { showError(e.message); });

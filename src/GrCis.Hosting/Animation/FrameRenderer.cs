@@ -1,12 +1,10 @@
 using System;
 using System.Threading;
-using GrCis.Cli.Jobs;
 using Rendering;
 using Rendering.Execution;
 using Rendering.Imaging;
-using GrCis.Hosting;
 
-namespace GrCis.Cli.Animation;
+namespace GrCis.Hosting;
 
 /// <summary>
 /// Renders one frame of an animation: moves a worker's scene to the frame's time and renders it

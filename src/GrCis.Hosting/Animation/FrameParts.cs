@@ -1,11 +1,9 @@
 using System;
 using System.Collections.Generic;
-using GrCis.Cli.Jobs;
 using Rendering;
 using Rendering.Execution;
-using GrCis.Hosting;
 
-namespace GrCis.Cli.Animation;
+namespace GrCis.Hosting;
 
 /// <summary>
 /// The image function and renderer of each frame. Frames rendering at once must not share them

@@ -1,6 +1,6 @@
 using Rendering;
 
-namespace GrCis.Cli.Animation;
+namespace GrCis.Hosting;
 
 /// <summary>Puts a scene in the shape the animation pipeline needs: time reaches it through <see cref="ITimeDependent"/>.</summary>
 public static class SceneAnimation

@@ -1,0 +1,111 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+using System.Threading;
+using System.Threading.Tasks;
+using GrCis.Hosting;
+using GrCis.TestSupport;
+
+namespace GrCis.Interactive.Tests;
+
+/// <summary>
+/// The controller's state can be trusted: a render replaced by a second Render says nothing more (only the second one's
+/// previews and completion arrive), busy covers the build and the render of the render asked for last, Stop ends it at
+/// once, and a size that does not fit in memory is refused before any work, as <c>grcis render</c> refuses it.
+/// </summary>
+public class RenderStateTests
+{
+  [Fact]
+  public async Task A_second_render_replaces_the_first_and_only_its_events_arrive()
+  {
+    var catalog = SceneCatalog.WithBuiltInScenes();
+    using var demo = new DemoController(catalog)
+    {
+      // Big enough to be still running when the second render is asked for.
+      Settings = new RenderSettings { Width = 1600, Height = 1200, SamplesPerPixel = 16, Threads = 2 },
+      Selected = catalog.Find("Five balls"),
+      PreviewInterval = TimeSpan.FromMilliseconds(50),
+    };
+    var completed = new List<RenderResult>();
+    var previewed = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+    int secondPreviews = 0;
+    demo.RenderCompleted += (_, e) => { lock (completed) completed.Add(e.Result); };
+    demo.PreviewReady += (_, e) =>
+    {
+      if (e.Image.Width == 32)
+        Interlocked.Increment(ref secondPreviews);
+      else
+        previewed.TrySetResult();
+    };
+
+    Task<RenderResult?> first = demo.RenderAsync();
+    await previewed.Task.WaitAsync(TimeSpan.FromMinutes(1));
+    Assert.True(demo.IsBusy);
+    demo.Settings = new RenderSettings { Width = 32, Height = 24, Threads = 2 };
+    Task<RenderResult?> second = demo.RenderAsync();
+    Assert.Equal(2, demo.RenderId);
+    Assert.True(demo.IsBusy);
+
+    RenderResult? replaced = await first.WaitAsync(TimeSpan.FromMinutes(1));
+    Assert.True(replaced == null || replaced.Cancelled);
+    RenderResult done = (await second.WaitAsync(TimeSpan.FromMinutes(1)))!;
+    Assert.True(done.Succeeded);
+    Assert.False(demo.IsBusy);
+    lock (completed)
+      Assert.Equal(32, Assert.Single(completed).Image.Width);
+    Assert.Same(done, demo.LastResult);
+    Assert.Single(demo.History.Items);
+    Assert.True(secondPreviews > 0);
+  }
+
+  [Fact]
+  public async Task Busy_covers_the_build_and_stop_ends_it_at_once()
+  {
+    using var tmp = new TempDir();
+    string marker = tmp.File("started").Replace("\\", "/", StringComparison.Ordinal);
+    File.WriteAllText(tmp.File("Stuck.cs"), StuckScripts.WhileBuilding(marker));
+    using var scripts = new GrCis.Scripting.ScriptHost();
+    var catalog = new SceneCatalog(scripts);
+    using var demo = new DemoController(catalog) { Selected = catalog.AddScriptFile(tmp.File("Stuck.cs")) };
+
+    Task<RenderResult?> stuck = demo.RenderAsync();
+    var clock = Stopwatch.StartNew();
+    while (!File.Exists(marker))
+    {
+      Assert.True(clock.Elapsed < TimeSpan.FromMinutes(1), "the script never started");
+      await Task.Delay(20);
+    }
+    Assert.True(demo.IsBusy, "busy while the script builds its scene");
+    Assert.False(demo.IsRendering);
+    demo.Stop();
+    Assert.False(demo.IsBusy, "still busy after Stop");
+    Assert.Null(await stuck.WaitAsync(TimeSpan.FromSeconds(30)));
+    Assert.False(demo.IsBusy);
+  }
+
+  [Fact]
+  public async Task A_size_that_does_not_fit_in_memory_is_refused_before_any_work()
+  {
+    var catalog = SceneCatalog.WithBuiltInScenes();
+    using var demo = new DemoController(catalog)
+    {
+      Settings = new RenderSettings { Width = 16384, Height = 16384 },
+      Selected = catalog.Find("Five balls"),
+      MemoryLimit = 1L << 30,
+    };
+    string? error = null;
+    demo.Error += (_, m) => error = m;
+
+    Assert.Null(await demo.RenderAsync());
+    Assert.StartsWith("a 16384x16384 image needs about 20.1 GiB of memory, but this process can use 1.0 GiB", error);
+    Assert.False(demo.IsBusy);
+    Assert.Empty(demo.History.Items);
+    var e = Assert.Throws<InvalidSettingException>(() => demo.CreateAnimation(0, 1, 1));
+    Assert.Equal(Setting.Size, e.Setting);
+
+    // What fits renders.
+    demo.Settings = new RenderSettings { Width = 64, Height = 48 };
+    Assert.True((await demo.RenderAsync())!.Succeeded);
+  }
+}

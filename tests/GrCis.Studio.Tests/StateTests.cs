@@ -1,0 +1,96 @@
+using System;
+using System.IO;
+using System.Net;
+using System.Net.Http;
+using System.Net.Http.Json;
+using System.Text.Json;
+using System.Threading.Tasks;
+using GrCis.TestSupport;
+
+namespace GrCis.Studio.Tests;
+
+/// <summary>
+/// The studio's status can be trusted: busy while the script of the render asked for last builds, idle at once after
+/// Stop, the second of two renders is the one reported, an error stays until the next action, and Stop ends an
+/// animation too.
+/// </summary>
+public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixture>
+{
+  async Task<string> AddScript(string file, string text)
+  {
+    string path = Path.Combine(studio.ScriptsFolder, file);
+    File.WriteAllText(path, text);
+    using HttpResponseMessage added = await studio.Client.PostAsJsonAsync("/api/scenes/add", new { path });
+    Assert.Equal(HttpStatusCode.OK, added.StatusCode);
+    return (await added.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("name").GetString()!;
+  }
+
+  Task<JsonElement> Status() => studio.Client.GetFromJsonAsync<JsonElement>("/api/status");
+
+  [Fact]
+  public async Task A_building_script_is_busy_and_stop_makes_the_studio_idle_at_once()
+  {
+    string marker = Path.Combine(studio.Folder, "stuck-started").Replace("\\", "/", StringComparison.Ordinal);
+    string name = await AddScript("StuckBuild.cs", StuckScripts.WhileBuilding(marker));
+    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", new { scene = name, settings = new { width = 8, height = 6 } }))
+      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    DateTime deadline = DateTime.UtcNow + TimeSpan.FromMinutes(1);
+    while (!File.Exists(marker))
+    {
+      Assert.True(DateTime.UtcNow < deadline, "the script never started");
+      await Task.Delay(20);
+    }
+    Assert.True((await Status()).GetProperty("rendering").GetBoolean(), "busy while the script builds");
+    using (HttpResponseMessage stop = await studio.Client.PostAsync("/api/stop", null))
+      Assert.Equal(HttpStatusCode.NoContent, stop.StatusCode);
+    Assert.False((await Status()).GetProperty("rendering").GetBoolean(), "still 'rendering' after Stop");
+  }
+
+  [Fact]
+  public async Task The_second_of_two_renders_is_the_one_reported()
+  {
+    using (HttpResponseMessage first = await studio.Client.PostAsJsonAsync("/api/render",
+             new { scene = "Five balls", settings = new { width = 1200, height = 900, samplesPerPixel = 16, threads = 2 } }))
+      Assert.Equal(HttpStatusCode.Accepted, first.StatusCode);
+    await studio.PollUntil("/api/status", s => s.GetProperty("version").GetInt32() > 0 || s.GetProperty("fraction").GetDouble() > 0, "the first render's progress");
+    long replaced = (await Status()).GetProperty("renderId").GetInt64();
+    JsonElement done = await studio.RenderAndWait(new { scene = "Five balls", settings = new { width = 40, height = 30, threads = 2 } });
+    Assert.Equal(replaced + 1, done.GetProperty("renderId").GetInt64());
+    Assert.StartsWith("40x30", done.GetProperty("statistics").GetString());
+    Assert.Equal(40, done.GetProperty("width").GetInt32());
+    // Still the second's a while later: the replaced render's completion was not taken for it.
+    await Task.Delay(300);
+    JsonElement later = await Status();
+    Assert.False(later.GetProperty("rendering").GetBoolean());
+    Assert.StartsWith("40x30", later.GetProperty("statistics").GetString());
+  }
+
+  [Fact]
+  public async Task An_error_stays_until_the_next_action()
+  {
+    string name = await AddScript("Typo.cs", "scene.NoSuchMember = 2;\n");
+    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", new { scene = name, settings = new { width = 8, height = 6 } }))
+      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    JsonElement failed = await studio.PollUntil("/api/status", s => s.GetProperty("error").ValueKind == JsonValueKind.String, "the script's error");
+    Assert.False(failed.GetProperty("rendering").GetBoolean());
+    for (int i = 0; i < 5; i++)
+    {
+      await Task.Delay(100);
+      Assert.Contains("Typo.cs", (await Status()).GetProperty("error").GetString());
+    }
+    JsonElement next = await studio.RenderAndWait(new { scene = "Five balls", settings = new { width = 16, height = 12 } });
+    Assert.Equal(JsonValueKind.Null, next.GetProperty("error").ValueKind);
+  }
+
+  [Fact]
+  public async Task Stop_ends_an_animation_too()
+  {
+    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation",
+             new { scene = "Five balls", settings = new { width = 400, height = 300, samplesPerPixel = 16, threads = 2 }, start = 0.0, end = 100.0, fps = 10.0 }))
+      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    using (HttpResponseMessage stop = await studio.Client.PostAsync("/api/stop", null))
+      Assert.Equal(HttpStatusCode.NoContent, stop.StatusCode);
+    JsonElement done = await studio.PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the animation to stop");
+    Assert.True(done.GetProperty("framesDone").GetInt32() < done.GetProperty("framesTotal").GetInt32());
+  }
+}
