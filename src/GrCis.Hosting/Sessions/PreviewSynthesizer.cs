@@ -27,6 +27,28 @@ internal sealed class PreviewSynthesizer : ImageSynthesizer
     Height = inner.Height;
     Gamma = inner.Gamma;
     Adaptive = inner.Adaptive;
+    innerRectangles = inner.GetType().GetMethod(nameof(RenderRectangle), [typeof(FloatImage), typeof(int), typeof(int), typeof(int), typeof(int)])
+      ?.DeclaringType != typeof(ImageSynthesizer);
+  }
+
+  /// <summary>The inner renderer renders its rectangles its own way (a subclass overrides RenderRectangle).</summary>
+  readonly bool innerRectangles;
+
+  public override void RenderRectangle(FloatImage image, int x1, int y1, int x2, int y2)
+  {
+    if (!innerRectangles)
+    {
+      base.RenderRectangle(image, x1, y1, x2, y2);
+      return;
+    }
+    inner.RenderRectangle(image, x1, y1, x2, y2);
+    var color = new double[image.Bands];
+    for (int y = y1; y < y2; y++)
+      for (int x = x1; x < x2; x++)
+      {
+        image.GetPixel(x, y, color);
+        preview.SetPixel(x, y, color);
+      }
   }
 
   public override int SamplesPerPixel => inner.SamplesPerPixel;
@@ -41,7 +63,7 @@ internal sealed class PreviewSynthesizer : ImageSynthesizer
         color[b] = preview.Data[p + b];
       return;
     }
-    inner.RenderPixelLinear(x, y, color);
+    inner.PixelLinear(x, y, color);
     preview.SetPixel(x, y, color);
   }
 }
