@@ -5,8 +5,9 @@ namespace GrCis.Hosting;
 
 /// <summary>
 /// Wraps the job's renderer for <see cref="Rendering.Execution.TileRenderer"/>: each pixel is computed
-/// by the inner renderer exactly as usual, and also copied into the live preview buffer. The pixels the
-/// coarse pass rendered exactly (a block's top-left pixel) are taken from the buffer instead.
+/// by the inner renderer exactly as usual (through its own RenderRectangle when it overrides that), and also
+/// copied into the live preview buffer. The pixels the coarse pass rendered exactly (a block's top-left
+/// pixel) are taken from the buffer instead.
 /// </summary>
 internal sealed class PreviewSynthesizer : ImageSynthesizer
 {
@@ -27,8 +28,7 @@ internal sealed class PreviewSynthesizer : ImageSynthesizer
     Height = inner.Height;
     Gamma = inner.Gamma;
     Adaptive = inner.Adaptive;
-    innerRectangles = inner.GetType().GetMethod(nameof(RenderRectangle), [typeof(FloatImage), typeof(int), typeof(int), typeof(int), typeof(int)])
-      ?.DeclaringType != typeof(ImageSynthesizer);
+    innerRectangles = Overrides(inner.GetType(), nameof(RenderRectangle), [typeof(FloatImage), typeof(int), typeof(int), typeof(int), typeof(int)]);
   }
 
   /// <summary>The inner renderer renders its rectangles its own way (a subclass overrides RenderRectangle).</summary>

@@ -43,8 +43,15 @@ public abstract class ImageSynthesizer : IRenderer
   /// <summary>Whether this class overrides <see cref="RenderPixel"/> (a renderer written against GrCis).</summary>
   readonly bool displayPixels;
 
-  protected ImageSynthesizer() =>
-    displayPixels = GetType().GetMethod(nameof(RenderPixel), [typeof(int), typeof(int), typeof(double[])])?.DeclaringType != typeof(ImageSynthesizer);
+  protected ImageSynthesizer() => displayPixels = Overrides(GetType(), nameof(RenderPixel), [typeof(int), typeof(int), typeof(double[])]);
+
+  /// <summary>Whether <paramref name="type"/> overrides this class's virtual method <paramref name="name"/> (not merely hides it).</summary>
+  protected static bool Overrides(Type type, string name, Type[] parameters)
+  {
+    ArgumentNullException.ThrowIfNull(type);
+    System.Reflection.MethodInfo? m = type.GetMethod(name, parameters);
+    return m != null && m.DeclaringType != typeof(ImageSynthesizer) && m.GetBaseDefinition().DeclaringType == typeof(ImageSynthesizer);
+  }
 
   /// <summary>
   /// The linear colour of pixel (x, y), as the library's loops take it: <see cref="RenderPixelLinear"/>, or, for a
