@@ -67,6 +67,12 @@ public class OlderRendererTests
     }
   }
 
+  /// <summary>A method that only hides RenderPixel (no override): the library renders as the base class.</summary>
+  sealed class MyHidingSynthesizer : SimpleImageSynthesizer
+  {
+    public new void RenderPixel(int x, int y, double[] color) => Array.Fill(color, 0.5);
+  }
+
   /// <summary>A renderer that leaves every other row of its rectangles black (this port's rectangle type).</summary>
   sealed class MyStripesSynthesizer : SimpleImageSynthesizer
   {
@@ -202,5 +208,11 @@ public class OlderRendererTests
         plain.GetPixel(x, y, p);
         Assert.Equal((y & 1) != 0 ? new double[3] : p, c);
       }
+  }
+
+  [Fact]
+  public void A_method_that_only_hides_RenderPixel_leaves_the_library_sampling()
+  {
+    Assert.Equal(Render(new SimpleImageSynthesizer()).Data, Render(new MyHidingSynthesizer()).Data);
   }
 }
