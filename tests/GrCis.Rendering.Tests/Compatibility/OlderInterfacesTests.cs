@@ -230,4 +230,22 @@ public class OlderInterfacesTests
     image.GetPixel(0, 0, color);
     Assert.Equal(new double[] { 0.1f, 0.2f, 0.3f }, color);   // the image stores floats
   }
+
+  // ---------------------------------------------------------------- scene nodes
+
+  [Fact]
+  public void A_node_marked_ObjectRoot_is_the_object_space_of_the_nodes_below_it()
+  {
+    var root = new CSGInnerNode(SetOperation.Union);
+    var group = new CSGInnerNode(SetOperation.Union);
+    var ball = new Sphere();
+    root.InsertChild(group, Matrix4d.CreateTranslation(5.0, 0.0, 0.0));
+    group.InsertChild(ball, Matrix4d.CreateTranslation(1.0, 0.0, 0.0));
+    Assert.Equal(new Vector3d(6.0, 0.0, 0.0), Vector3d.TransformPosition(Vector3d.Zero, ball.ToObject()));
+
+    group.ObjectRoot = true;   // as GrCis scripts mark it: a flag
+    Assert.Equal(new Vector3d(1.0, 0.0, 0.0), Vector3d.TransformPosition(Vector3d.Zero, ball.ToObject()));
+    Assert.Equal(Matrix4d.Identity, group.ToObject());
+    Assert.Equal(new Vector3d(6.0, 0.0, 0.0), Vector3d.TransformPosition(Vector3d.Zero, ball.ToWorld()));
+  }
 }
