@@ -15,6 +15,9 @@ public sealed class ScriptDiagnostic
   /// <summary>Id of the warning about an override whose access is GrCis's of another year (see docs/compatibility.md).</summary>
   public const string OverrideAccessId = "GRCIS005";
 
+  /// <summary>Id of the warning about a module type that has the full name of a library type (the module's wins).</summary>
+  public const string ShadowedLibraryTypeId = "GRCIS007";
+
   public ScriptDiagnostic(string path, int line, int column, string severity, string id, string message)
   {
     Path = path;

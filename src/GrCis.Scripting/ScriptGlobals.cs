@@ -8,7 +8,7 @@ namespace GrCis.Scripting;
 /// the script contract. GrCis renamed them over the years and students keep the names of the year they
 /// forked, so every year's name is here: <c>scene</c>, <c>param</c> and <c>context</c> (today's), and
 /// <c>sc</c> (March 2018), <c>sceneName</c> (2018 to 2020), <c>outParam</c> (2018 to 2020, the dictionary
-/// that became <c>context</c>), <c>scriptFilePath</c> (May 2020). The old names are the same objects as
+/// that became <c>context</c>), <c>scriptFilePath</c> (May 2020, first proposed as <c>scriptFileName</c>). The old names are the same objects as
 /// the new ones; a script's own variable of the same name hides the global, as any outer name.
 /// </summary>
 public class ScriptGlobals
@@ -33,6 +33,12 @@ public class ScriptGlobals
 
   /// <summary>Full path of the script file (GrCis's global of May 2020; also <see cref="PropertyName.CTX_SCRIPT_PATH"/>).</summary>
   public string scriptFilePath;
+
+  /// <summary>
+  /// The same path under the name it had in the pull request that brought it to GrCis (May 2020); scripts of
+  /// the students who worked on that branch use it.
+  /// </summary>
+  public string scriptFileName => scriptFilePath;
 
   public ScriptGlobals(IRayScene scene, string? param, Dictionary<string, object> context)
   {

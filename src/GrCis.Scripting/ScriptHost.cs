@@ -244,7 +244,9 @@ public sealed class ScriptHost : IDisposable
     if (preprocess)
     {
       context[PropertyName.CTX_PREPROCESSING] = true;
-      var scratch = new DefaultRayScene();
+      // A throw-away scene of the kind the regular call gets: scripts older than the preprocessing call
+      // (May 2020) treat every call as the regular one and may cast the scene to ITimeDependent.
+      DefaultRayScene scratch = scene is AnimatedRayScene ? new AnimatedRayScene() : new DefaultRayScene();
       context[PropertyName.CTX_SCENE] = scratch;
       try
       {

@@ -56,4 +56,7 @@ public sealed class ScriptModule
 
   /// <summary>The compiled files, to map a stack frame back to the user's line.</summary>
   internal IReadOnlyDictionary<string, InstrumentedSource> Sources { get; }
+
+  /// <summary>Types compiled under a suffixed name because the library has one of the same full name (scripts get aliases).</summary>
+  internal IReadOnlyList<ShadowedLibraryTypes.Renamed> Renamed { get; init; } = [];
 }

@@ -67,15 +67,22 @@ public class StudentCodeTests
     }
     """;
 
-  [Fact]
-  public void An_exception_in_module_code_while_rendering_is_one_line_naming_the_module_file_and_line()
+  /// <summary>A folder with the module <c>tex</c> and <c>scene.cs</c>, whose texture throws on every hit.</summary>
+  static TempDirectory SceneWithBrokenTexture()
   {
-    using var dir = new TempDirectory();
+    var dir = new TempDirectory();
     Directory.CreateDirectory(dir.File("tex"));
     File.WriteAllText(dir.File("tex/Broken.cs"), BrokenTexture);
     File.WriteAllText(dir.File("scene.cs"), ScriptCommandTests.SceneBody + """
       root.SetAttribute(PropertyName.TEXTURE, new Textures2020.Broken());
       """);
+    return dir;
+  }
+
+  [Fact]
+  public void An_exception_in_module_code_while_rendering_is_one_line_naming_the_module_file_and_line()
+  {
+    using TempDirectory dir = SceneWithBrokenTexture();
 
     CliRun run = CliRun.Of(dir.Path, "render", "scene.cs", "--module", "tex", "--size", "16x12", "-o", "out.png", "-q");
 
@@ -90,12 +97,7 @@ public class StudentCodeTests
   [Fact]
   public void GRCIS_STACKTRACE_prints_the_whole_exception_after_the_errors_line()
   {
-    using var dir = new TempDirectory();
-    Directory.CreateDirectory(dir.File("tex"));
-    File.WriteAllText(dir.File("tex/Broken.cs"), BrokenTexture);
-    File.WriteAllText(dir.File("scene.cs"), ScriptCommandTests.SceneBody + """
-      root.SetAttribute(PropertyName.TEXTURE, new Textures2020.Broken());
-      """);
+    using TempDirectory dir = SceneWithBrokenTexture();
 
     (int code, _, string error) = GrcisProcess.Run(dir.Path, new Dictionary<string, string> { ["GRCIS_STACKTRACE"] = "1" },
       "render", "scene.cs", "--module", "tex", "--size", "16x12", "-o", "out.png", "-q");

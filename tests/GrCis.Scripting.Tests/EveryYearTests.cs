@@ -295,4 +295,117 @@ public sealed class EveryYearTests : IDisposable
     Assert.Contains("Broken.cs(11,", located.Message);
     Assert.Contains("runtime error: InvalidOperationException: texture table not loaded", located.Message);
   }
+  [Fact]
+  public void A_script_from_before_the_preprocessing_call_finds_an_animated_scene_in_every_call_and_scriptFileName()
+  {
+    // Written in May 2020 on the branch that proposed scriptFileName, before the preprocessing call existed.
+    string path = Write("Before2020.cs", """
+      (scene as ITimeDependent).End = 4.0;
+      context["file"] = scriptFileName;
+      scene.Intersectable = new Sphere();
+      """);
+    ScriptScene run = host.Run(host.Compile(path), "", null, new AnimatedRayScene());
+    Assert.True(run.Preprocessed);
+    Assert.Equal(4.0, ((ITimeDependent)run.Scene).End);
+    Assert.Equal(path, run.Context["file"]);
+  }
+
+  [Fact]
+  public void Data_files_a_student_reads_with_dotnets_file_api_are_found_as_GrCis_on_Windows_found_them()
+  {
+    // A fork's layout: the script in data/rtscenes, its files named for the project's bin/Debug working folder.
+    Write("fork/data/rtscenes/Camera_Script.TXT", "0 0 -5\n");
+    Write("fork/data/rtscenes/table.csv", "1;2;3\n");
+    string dir = Path.Combine(scratch.Path, "fork", "062animation-script", "Reader");
+    Write("fork/062animation-script/Reader/PathReader.cs", """
+      using System.IO;
+
+      namespace Reader
+      {
+        public static class PathReader
+        {
+          public static string FirstLine (string fileName)
+          {
+            if (!File.Exists(fileName))
+              throw new IOException("Please specify a file with camera script.");
+            using (StreamReader sr = new StreamReader(fileName))
+              return sr.ReadLine();
+          }
+        }
+      }
+      """);
+    host.AddModule(dir);
+    string script = Write("fork/data/rtscenes/Reads.cs", """
+      context["camera"] = Reader.PathReader.FirstLine("..\\..\\..\\data\\rtscenes\\camera_script.txt");
+      context["table"] = System.IO.File.ReadAllText(path: "table.csv").Trim();
+      System.IO.File.WriteAllText(System.IO.Path.Combine(System.IO.Path.GetDirectoryName(scriptFilePath), "out.txt"), "written");
+      scene.Intersectable = new Sphere();
+      """);
+    ScriptScene run = host.Load(script);
+    Assert.Equal("0 0 -5", run.Context["camera"]);
+    Assert.Equal("1;2;3", run.Context["table"]);
+    Assert.Equal("written", File.ReadAllText(Path.Combine(scratch.Path, "fork", "data", "rtscenes", "out.txt")));
+  }
+
+  [Fact]
+  public void A_compile_error_after_a_rewritten_file_call_keeps_its_column()
+  {
+    string path = Write("Column.cs", """
+      string t = System.IO.File.ReadAllText("a.txt"); int n = "x";
+      """);
+    var ex = Assert.Throws<ScriptCompilationException>(() => host.Compile(path));
+    ScriptDiagnostic error = Assert.Single(ex.Diagnostics, d => d.IsError);
+    Assert.Equal((1, File.ReadAllLines(path)[0].IndexOf("\"x\"", StringComparison.Ordinal) + 1), (error.Line, error.Column));
+  }
+  [Fact]
+  public void A_module_type_with_the_full_name_of_a_later_library_type_is_the_one_its_module_and_scripts_use()
+  {
+    // Written in May 2020, a week before GrCis got a Rendering.AnimatedCamera of its own.
+    string dir = Path.Combine(scratch.Path, "rt_extensions");
+    Write("rt_extensions/AnimatedCamera.cs", """
+      using OpenTK;
+
+      namespace Rendering
+      {
+        public class AnimatedCamera : StaticCamera
+        {
+          public string Script;
+
+          public AnimatedCamera (string script) : base(new Vector3d(0, 0, -5), Vector3d.UnitZ, 40.0)
+          {
+            Script = script;
+          }
+
+          public static AnimatedCamera Default () => new AnimatedCamera("default");
+        }
+      }
+      """);
+    Write("rt_extensions/Rig.cs", """
+      namespace Rendering
+      {
+        public static class Rig
+        {
+          public static AnimatedCamera Make (string s) { AnimatedCamera c = new AnimatedCamera(s); return c; }
+        }
+      }
+      """);
+    ScriptModule module = host.AddModule(dir);
+    ScriptDiagnostic warning = Assert.Single(module.Warnings, w => w.Id == ScriptDiagnostic.ShadowedLibraryTypeId);
+    Assert.Equal((Path.Combine(dir, "AnimatedCamera.cs"), 5, 16), (warning.Path, warning.Line, warning.Column));
+
+    ScriptScene run = host.Load(Write("Cubes.cs", """
+      AnimatedCamera camera = new AnimatedCamera("camera_script.txt");
+      scene.Camera = camera;
+      context["rig"] = Rig.Make("rig").Script + " " + AnimatedCamera.Default().Script;
+      scene.Intersectable = new Sphere();
+      """));
+    Assert.Equal(module.Assembly, run.Scene.Camera!.GetType().Assembly);
+    Assert.Equal("rig default", run.Context["rig"]);
+
+    // Errors in the script still point at the user's own line and column.
+    string broken = Write("Broken.cs", "AnimatedCamera c = new AnimatedCamera(1);\n");
+    var ex = Assert.Throws<ScriptCompilationException>(() => host.Compile(broken));
+    ScriptDiagnostic error = Assert.Single(ex.Diagnostics, d => d.IsError);
+    Assert.Equal((1, 39), (error.Line, error.Column));
+  }
 }

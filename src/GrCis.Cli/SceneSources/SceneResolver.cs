@@ -10,7 +10,8 @@ namespace GrCis.Cli.SceneSources;
 /// <summary>
 /// Turns the scene argument of <c>grcis render</c> into a <see cref="ISceneSource"/>:
 /// nothing → the default scene; a path ending in <c>.cs</c> → a scene script; anything else → a
-/// built-in scene by name (case, spaces and punctuation ignored).
+/// built-in scene by name (case, spaces and punctuation ignored); a folder or another file is an
+/// error that says so.
 /// </summary>
 public sealed class SceneResolver
 {
@@ -24,7 +25,7 @@ public sealed class SceneResolver
   /// <summary>The scene rendered when none is given.</summary>
   public static string DefaultSceneName => Scenes.DefaultSceneName;
 
-  /// <exception cref="UsageException">Unknown scene name (with close matches) or a script that does not exist.</exception>
+  /// <exception cref="UsageException">Unknown scene name (with close matches), a folder or non-script file, or a script that does not exist.</exception>
   public ISceneSource Resolve(string? spec) => Resolve(spec, null, Array.Empty<string>());
 
   /// <summary>As <see cref="Resolve(string?)"/>; a script gets <paramref name="param"/> and the module folders.</summary>
@@ -48,12 +49,37 @@ public sealed class SceneResolver
     string? name = Scenes.CanonicalName(spec);
     if (name != null)
       return new BuiltInSceneSource(name, param);
+    NotASceneFile(spec);
 
     IReadOnlyList<string> close = NameSuggestions.Closest(spec, BuiltInNames);
     string hint = close.Count > 0
       ? $"did you mean {string.Join(" or ", Quote(close))}?"
       : "run 'grcis list' to see the built-in scenes";
     throw new UsageException($"unknown scene '{spec}'; {hint}");
+  }
+
+  /// <summary>A folder or a file that is no script is named as such (not as an unknown scene), with what is expected.</summary>
+  void NotASceneFile(string spec)
+  {
+    string path;
+    try
+    {
+      path = Path.GetFullPath(spec, workingDirectory);
+    }
+    catch (Exception e) when (e is ArgumentException or NotSupportedException or PathTooLongException)
+    {
+      return;
+    }
+    const string expected = "give a built-in scene name (see 'grcis list') or a scene script (*.cs)";
+    if (Directory.Exists(path))
+    {
+      string[] scripts = Directory.GetFiles(path, "*.cs");
+      Array.Sort(scripts, StringComparer.Ordinal);
+      string example = scripts.Length > 0 ? $", e.g. '{Path.Combine(spec, Path.GetFileName(scripts[0]))}'" : "";
+      throw new UsageException($"'{spec}' is a folder, not a scene; {expected}{example} (a folder of classes is a --module)");
+    }
+    if (File.Exists(path))
+      throw new UsageException($"'{spec}' is a file but not a scene script; {expected}");
   }
 
   static bool IsScriptPath(string spec) => spec.EndsWith(".cs", StringComparison.OrdinalIgnoreCase);

@@ -61,9 +61,13 @@ public sealed class ScriptHostEvaluator : IScriptEvaluator, IDisposable
         else
           batch.Remove(kv.Key);
       // At least two entries, so the host does not preprocess again.
-      Host.Run(script, param, batch, scene);
+      ScriptScene run = Host.Run(script, param, batch, scene);
       foreach (KeyValuePair<string, object> kv in batch)
         context[kv.Key] = kv.Value;
+      // The host fills the animation range GrCis's way before the run; a range the script left alone is not its choice.
+      if (run.Start == null) context.Remove(PropertyName.CTX_START_ANIM);
+      if (run.End == null) context.Remove(PropertyName.CTX_END_ANIM);
+      if (run.Fps == null) context.Remove(PropertyName.CTX_FPS);
     }
     catch (ScriptCompilationException ex)
     {

@@ -32,7 +32,8 @@ internal sealed class Bvh
     Items = items;
     Depth = depth;
     Children = new BvhChildBoxes[nodes.Length];
-    for (int i = 0; i < nodes.Length; i++)
+    // A node without items is an inner node, except the single empty leaf of a tree over nothing (an empty mesh).
+    for (int i = 0; i < nodes.Length && items.Length > 0; i++)
       if (nodes[i].Count == 0)
         Children[i] = new BvhChildBoxes(nodes[i + 1], nodes[nodes[i].Index], childPad);
   }

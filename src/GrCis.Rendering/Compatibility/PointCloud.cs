@@ -79,6 +79,7 @@ public class PointCloud
   /// <exception cref="InvalidDataException">The file is not such a file: <c>file(line): what is wrong</c>.</exception>
   public void ReadFromFile(string fileName)
   {
+    fileName = Utilities.DataFiles.Resolve(fileName);
     using var reader = new StreamReader(fileName);
     int count;
     try

@@ -3,7 +3,7 @@ using System;
 namespace OpenTK.Mathematics;
 
 /// <summary>OpenTK's scalar helpers and constants.</summary>
-public static class MathHelper
+public static partial class MathHelper
 {
   // OpenTK declares these constants in single precision, and GrCis scenes use them in double
   // expressions (e.g. RotateX(-MathHelper.PiOver2) gives -1.5707963705…). Keeping the float values
@@ -27,6 +27,11 @@ public static class MathHelper
   public static double Clamp(double n, double min, double max) => Math.Max(Math.Min(n, max), min);
   public static float Clamp(float n, float min, float max) => Math.Max(Math.Min(n, max), min);
   public static int Clamp(int n, int min, int max) => Math.Max(Math.Min(n, max), min);
+
+  // The vectors' Clamp tests min first, then max, component by component (OpenTK's order): with min > max a
+  // value below min becomes min and any other value above max becomes max; it never throws.
+  internal static float ClampComponent(float n, float min, float max) => n < min ? min : n > max ? max : n;
+  internal static double ClampComponent(double n, double min, double max) => n < min ? min : n > max ? max : n;
 
   public static double Lerp(double a, double b, double t) => a + (b - a) * t;
   public static float Lerp(float a, float b, float t) => a + (b - a) * t;

@@ -49,17 +49,17 @@ public partial struct Matrix3
   public static Matrix3 CreateFromQuaternion(Quaternion q) => new(Matrix4.CreateFromQuaternion(q));
 
   public static void CreateFromAxisAngle(Vector3 axis, float angle, out Matrix3 result) => result = CreateFromAxisAngle(axis, angle);
-  public static void CreateFromQuaternion(ref Quaternion q, out Matrix3 result) => result = CreateFromQuaternion(q);
+  public static void CreateFromQuaternion(in Quaternion q, out Matrix3 result) => result = CreateFromQuaternion(q);
   public static void CreateRotationX(float angle, out Matrix3 result) => result = CreateRotationX(angle);
   public static void CreateRotationY(float angle, out Matrix3 result) => result = CreateRotationY(angle);
   public static void CreateRotationZ(float angle, out Matrix3 result) => result = CreateRotationZ(angle);
   public static void CreateScale(float scale, out Matrix3 result) => result = CreateScale(scale);
-  public static void CreateScale(ref Vector3 scale, out Matrix3 result) => result = CreateScale(scale);
+  public static void CreateScale(in Vector3 scale, out Matrix3 result) => result = CreateScale(scale);
   public static void CreateScale(float x, float y, float z, out Matrix3 result) => result = CreateScale(x, y, z);
 
   public static Matrix3 Add(Matrix3 left, Matrix3 right) => new(left.Row0 + right.Row0, left.Row1 + right.Row1, left.Row2 + right.Row2);
-  public static void Add(ref Matrix3 left, ref Matrix3 right, out Matrix3 result) => result = Add(left, right);
-  public static void Mult(ref Matrix3 left, ref Matrix3 right, out Matrix3 result) => result = left * right;
-  public static void Invert(ref Matrix3 mat, out Matrix3 result) => result = Invert(mat);
-  public static void Transpose(ref Matrix3 mat, out Matrix3 result) => result = Transpose(mat);
+  public static void Add(in Matrix3 left, in Matrix3 right, out Matrix3 result) => result = Add(left, right);
+  public static void Mult(in Matrix3 left, in Matrix3 right, out Matrix3 result) => result = left * right;
+  public static void Invert(in Matrix3 mat, out Matrix3 result) => result = Invert(mat);
+  public static void Transpose(in Matrix3 mat, out Matrix3 result) => result = Transpose(mat);
 }

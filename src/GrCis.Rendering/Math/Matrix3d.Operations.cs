@@ -48,17 +48,17 @@ public partial struct Matrix3d
 
   public static void CreateFromAxisAngle(Vector3d axis, double angle, out Matrix3d result) => result = CreateFromAxisAngle(axis, angle);
   public static Matrix3d CreateFromQuaternion(Quaterniond q) => new(Matrix4d.CreateFromQuaternion(q));
-  public static void CreateFromQuaternion(ref Quaterniond q, out Matrix3d result) => result = CreateFromQuaternion(q);
+  public static void CreateFromQuaternion(in Quaterniond q, out Matrix3d result) => result = CreateFromQuaternion(q);
   public static void CreateRotationX(double angle, out Matrix3d result) => result = CreateRotationX(angle);
   public static void CreateRotationY(double angle, out Matrix3d result) => result = CreateRotationY(angle);
   public static void CreateRotationZ(double angle, out Matrix3d result) => result = CreateRotationZ(angle);
   public static void CreateScale(double scale, out Matrix3d result) => result = CreateScale(scale);
-  public static void CreateScale(ref Vector3d scale, out Matrix3d result) => result = CreateScale(scale);
+  public static void CreateScale(in Vector3d scale, out Matrix3d result) => result = CreateScale(scale);
   public static void CreateScale(double x, double y, double z, out Matrix3d result) => result = CreateScale(x, y, z);
 
   public static Matrix3d Add(Matrix3d left, Matrix3d right) => new(left.Row0 + right.Row0, left.Row1 + right.Row1, left.Row2 + right.Row2);
-  public static void Add(ref Matrix3d left, ref Matrix3d right, out Matrix3d result) => result = Add(left, right);
-  public static void Mult(ref Matrix3d left, ref Matrix3d right, out Matrix3d result) => result = left * right;
-  public static void Invert(ref Matrix3d mat, out Matrix3d result) => result = Invert(mat);
-  public static void Transpose(ref Matrix3d mat, out Matrix3d result) => result = Transpose(mat);
+  public static void Add(in Matrix3d left, in Matrix3d right, out Matrix3d result) => result = Add(left, right);
+  public static void Mult(in Matrix3d left, in Matrix3d right, out Matrix3d result) => result = left * right;
+  public static void Invert(in Matrix3d mat, out Matrix3d result) => result = Invert(mat);
+  public static void Transpose(in Matrix3d mat, out Matrix3d result) => result = Transpose(mat);
 }

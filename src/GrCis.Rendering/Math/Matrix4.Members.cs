@@ -12,7 +12,21 @@ public partial struct Matrix4
   public Vector4 Column3 { readonly get => new(Row0.W, Row1.W, Row2.W, Row3.W); set { Row0.W = value.X; Row1.W = value.Y; Row2.W = value.Z; Row3.W = value.W; } }
   public Vector4 Diagonal { readonly get => new(Row0.X, Row1.Y, Row2.Z, Row3.W); set { Row0.X = value.X; Row1.Y = value.Y; Row2.Z = value.Z; Row3.W = value.W; } }
   public readonly float Trace => Row0.X + Row1.Y + Row2.Z + Row3.W;
-  public readonly float Determinant => (float)((Matrix4d)this).Determinant;
+  /// <summary>The determinant as OpenTK 3 sums it: 24 products of four elements, in float, left to right.</summary>
+  public readonly float Determinant
+  {
+    get
+    {
+      float a = Row0.X, b = Row0.Y, c = Row0.Z, d = Row0.W, e = Row1.X, f = Row1.Y, g = Row1.Z, h = Row1.W;
+      float i = Row2.X, j = Row2.Y, k = Row2.Z, l = Row2.W, m = Row3.X, n = Row3.Y, o = Row3.Z, p = Row3.W;
+      return a * f * k * p - a * f * l * o + a * g * l * n - a * g * j * p
+        + a * h * j * o - a * h * k * n - b * g * l * m + b * g * i * p
+        - b * h * i * o + b * h * k * m - b * e * k * p + b * e * l * o
+        + c * h * i * n - c * h * j * m + c * e * j * p - c * e * l * n
+        + c * f * l * m - c * f * i * p - d * e * j * o + d * e * k * n
+        - d * f * k * m + d * f * i * o - d * g * i * n + d * g * j * m;
+    }
+  }
 
   /// <summary>The element in row <paramref name="row"/>, column <paramref name="column"/> (both 0..3).</summary>
   public float this[int row, int column]

@@ -10,9 +10,9 @@ public partial struct Matrix4
   public static void CreateRotationZ(float angle, out Matrix4 result) => result = CreateRotationZ(angle);
   public static void CreateScale(float scale, out Matrix4 result) => result = CreateScale(scale);
   public static void CreateScale(float x, float y, float z, out Matrix4 result) => result = CreateScale(x, y, z);
-  public static void CreateScale(ref Vector3 scale, out Matrix4 result) => result = CreateScale(scale);
+  public static void CreateScale(in Vector3 scale, out Matrix4 result) => result = CreateScale(scale);
   public static void CreateTranslation(float x, float y, float z, out Matrix4 result) => result = CreateTranslation(x, y, z);
-  public static void CreateTranslation(ref Vector3 vector, out Matrix4 result) => result = CreateTranslation(vector);
+  public static void CreateTranslation(in Vector3 vector, out Matrix4 result) => result = CreateTranslation(vector);
 
   public static Matrix4 CreateOrthographic(float width, float height, float zNear, float zFar) =>
     (Matrix4)Matrix4d.CreateOrthographic(width, height, zNear, zFar);
@@ -37,14 +37,14 @@ public partial struct Matrix4
   public static Matrix4 operator *(Matrix4 m, float s) => new(m.Row0 * s, m.Row1 * s, m.Row2 * s, m.Row3 * s);
 
   public static Matrix4 Add(Matrix4 left, Matrix4 right) => left + right;
-  public static void Add(ref Matrix4 left, ref Matrix4 right, out Matrix4 result) => result = left + right;
+  public static void Add(in Matrix4 left, in Matrix4 right, out Matrix4 result) => result = left + right;
   public static Matrix4 Subtract(Matrix4 left, Matrix4 right) => left - right;
-  public static void Subtract(ref Matrix4 left, ref Matrix4 right, out Matrix4 result) => result = left - right;
+  public static void Subtract(in Matrix4 left, in Matrix4 right, out Matrix4 result) => result = left - right;
   public static Matrix4 Mult(Matrix4 left, float right) => left * right;
-  public static void Mult(ref Matrix4 left, float right, out Matrix4 result) => result = left * right;
-  public static void Mult(ref Matrix4 left, ref Matrix4 right, out Matrix4 result) => result = left * right;
-  public static void Invert(ref Matrix4 mat, out Matrix4 result) => result = Invert(mat);
-  public static void Transpose(ref Matrix4 mat, out Matrix4 result) => result = Transpose(mat);
+  public static void Mult(in Matrix4 left, float right, out Matrix4 result) => result = left * right;
+  public static void Mult(in Matrix4 left, in Matrix4 right, out Matrix4 result) => result = left * right;
+  public static void Invert(in Matrix4 mat, out Matrix4 result) => result = Invert(mat);
+  public static void Transpose(in Matrix4 mat, out Matrix4 result) => result = Transpose(mat);
 
   /// <summary>The rotation of <paramref name="q"/> for row vectors (<c>v · M</c> rotates v as q does); q need not be unit length.</summary>
   public static Matrix4 CreateFromQuaternion(Quaternion q)
@@ -59,5 +59,5 @@ public partial struct Matrix4
       0, 0, 0, 1);
   }
 
-  public static void CreateFromQuaternion(ref Quaternion q, out Matrix4 result) => result = CreateFromQuaternion(q);
+  public static void CreateFromQuaternion(in Quaternion q, out Matrix4 result) => result = CreateFromQuaternion(q);
 }

@@ -5,8 +5,9 @@ namespace OpenTK.Mathematics;
 
 /// <summary>
 /// OpenTK's single-precision 4×4 matrix (row vectors: <c>v' = v · M</c>, translation in the last row),
-/// for GrCis code written with floats (mesh readers, <c>Matrix4.Identity</c> arguments). The arithmetic
-/// is done by <see cref="Matrix4d"/> and rounded back to float.
+/// for GrCis code written with floats (mesh readers, <c>Matrix4.Identity</c> arguments). Products, inverses,
+/// determinants and vector transforms are computed in float in OpenTK 3's order of operations, so they give
+/// OpenTK's results to the bit; the creators (rotations, projections) go through <see cref="Matrix4d"/> and round.
 /// </summary>
 public partial struct Matrix4 : IEquatable<Matrix4>
 {
@@ -75,15 +76,15 @@ public partial struct Matrix4 : IEquatable<Matrix4>
   public static Matrix4 Translation(float x, float y, float z) => CreateTranslation(x, y, z);
 
   public static Matrix4 Mult(Matrix4 a, Matrix4 b) => a * b;
-  public static Matrix4 operator *(Matrix4 a, Matrix4 b) => (Matrix4)((Matrix4d)a * b);
+  public static Matrix4 operator *(Matrix4 a, Matrix4 b) => new(a.Row0 * b, a.Row1 * b, a.Row2 * b, a.Row3 * b);
   public static bool operator ==(Matrix4 a, Matrix4 b) => a.Equals(b);
   public static bool operator !=(Matrix4 a, Matrix4 b) => !a.Equals(b);
 
-  public static Matrix4 Transpose(Matrix4 m) => (Matrix4)Matrix4d.Transpose(m);
+  public static Matrix4 Transpose(Matrix4 m) => new(m.Column0, m.Column1, m.Column2, m.Column3);
   public void Transpose() => this = Transpose(this);
   public readonly Matrix4 Transposed() => Transpose(this);
-  /// <exception cref="InvalidOperationException">The matrix is singular.</exception>
-  public static Matrix4 Invert(Matrix4 m) => (Matrix4)Matrix4d.Invert(m);
+  /// <exception cref="InvalidOperationException">The matrix is singular (its cofactor determinant is 0).</exception>
+  public static Matrix4 Invert(Matrix4 m) => Inverse(m);
   public void Invert() => this = Invert(this);
   /// <summary>The inverse, or (as in OpenTK 3) the matrix unchanged when its determinant is 0.</summary>
   public readonly Matrix4 Inverted() => Determinant == 0 ? this : Invert(this);

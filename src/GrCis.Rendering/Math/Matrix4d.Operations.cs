@@ -17,19 +17,19 @@ public partial struct Matrix4d
     result = CreatePerspectiveFieldOfView(fovy, aspect, zNear, zFar);
   public static void CreatePerspectiveOffCenter(double left, double right, double bottom, double top, double zNear, double zFar, out Matrix4d result) =>
     result = CreatePerspectiveOffCenter(left, right, bottom, top, zNear, zFar);
-  public static void CreateFromQuaternion(ref Quaterniond q, out Matrix4d result) => result = CreateFromQuaternion(q);
+  public static void CreateFromQuaternion(in Quaterniond q, out Matrix4d result) => result = CreateFromQuaternion(q);
 
   /// <summary>OpenTK 3's older name of <see cref="CreatePerspectiveOffCenter(double, double, double, double, double, double)"/>.</summary>
   public static Matrix4d Frustum(double left, double right, double bottom, double top, double near, double far) =>
     CreatePerspectiveOffCenter(left, right, bottom, top, near, far);
 
   public static Matrix4d Add(Matrix4d left, Matrix4d right) => left + right;
-  public static void Add(ref Matrix4d left, ref Matrix4d right, out Matrix4d result) => result = left + right;
+  public static void Add(in Matrix4d left, in Matrix4d right, out Matrix4d result) => result = left + right;
   public static Matrix4d Subtract(Matrix4d left, Matrix4d right) => left - right;
-  public static void Subtract(ref Matrix4d left, ref Matrix4d right, out Matrix4d result) => result = left - right;
+  public static void Subtract(in Matrix4d left, in Matrix4d right, out Matrix4d result) => result = left - right;
   public static Matrix4d Mult(Matrix4d left, double right) => left * right;
-  public static void Mult(ref Matrix4d left, double right, out Matrix4d result) => result = left * right;
-  public static void Transpose(ref Matrix4d mat, out Matrix4d result) => result = Transpose(mat);
+  public static void Mult(in Matrix4d left, double right, out Matrix4d result) => result = left * right;
+  public static void Transpose(in Matrix4d mat, out Matrix4d result) => result = Transpose(mat);
 
   /// <summary>OpenTK's "normalisation": every element divided by the determinant.</summary>
   public void Normalize()

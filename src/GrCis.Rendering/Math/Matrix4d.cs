@@ -110,7 +110,7 @@ public partial struct Matrix4d : IEquatable<Matrix4d>
   }
 
   public static Matrix4d CreateTranslation(Vector3d v) => CreateTranslation(v.X, v.Y, v.Z);
-  public static void CreateTranslation(ref Vector3d v, out Matrix4d result) => result = CreateTranslation(v);
+  public static void CreateTranslation(in Vector3d v, out Matrix4d result) => result = CreateTranslation(v);
 
   public static Matrix4d CreateScale(double s) => CreateScale(s, s, s);
   public static Matrix4d CreateScale(Vector3d s) => CreateScale(s.X, s.Y, s.Z);
@@ -231,7 +231,7 @@ public partial struct Matrix4d : IEquatable<Matrix4d>
   // --- Arithmetic ----------------------------------------------------------------------
 
   public static Matrix4d Mult(Matrix4d a, Matrix4d b) => a * b;
-  public static void Mult(ref Matrix4d a, ref Matrix4d b, out Matrix4d result) => result = a * b;
+  public static void Mult(in Matrix4d a, in Matrix4d b, out Matrix4d result) => result = a * b;
   public static Matrix4d Multiply(Matrix4d a, Matrix4d b) => a * b;
 
   public static Matrix4d operator *(Matrix4d a, Matrix4d b) => new(
@@ -300,7 +300,7 @@ public partial struct Matrix4d : IEquatable<Matrix4d>
     return result;
   }
 
-  public static void Invert(ref Matrix4d m, out Matrix4d result) => result = Invert(m);
+  public static void Invert(in Matrix4d m, out Matrix4d result) => result = Invert(m);
   public void Invert() => this = Invert(this);
   /// <summary>The inverse, or (as in OpenTK 3) the matrix unchanged when its determinant is 0; <see cref="Invert(Matrix4d)"/> throws then.</summary>
   public readonly Matrix4d Inverted() => Determinant == 0 ? this : Invert(this);

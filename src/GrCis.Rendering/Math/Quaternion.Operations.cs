@@ -6,19 +6,19 @@ namespace OpenTK.Mathematics;
 public partial struct Quaternion
 {
   public static Quaternion Add(Quaternion left, Quaternion right) => left + right;
-  public static void Add(ref Quaternion left, ref Quaternion right, out Quaternion result) => result = left + right;
+  public static void Add(in Quaternion left, in Quaternion right, out Quaternion result) => result = left + right;
   public static Quaternion Sub(Quaternion left, Quaternion right) => left - right;
-  public static void Sub(ref Quaternion left, ref Quaternion right, out Quaternion result) => result = left - right;
+  public static void Sub(in Quaternion left, in Quaternion right, out Quaternion result) => result = left - right;
   public static Quaternion Multiply(Quaternion left, Quaternion right) => left * right;
-  public static void Multiply(ref Quaternion left, ref Quaternion right, out Quaternion result) => result = left * right;
+  public static void Multiply(in Quaternion left, in Quaternion right, out Quaternion result) => result = left * right;
   public static Quaternion Multiply(Quaternion quaternion, float scale) => quaternion * scale;
-  public static void Multiply(ref Quaternion quaternion, float scale, out Quaternion result) => result = quaternion * scale;
+  public static void Multiply(in Quaternion quaternion, float scale, out Quaternion result) => result = quaternion * scale;
   public static Quaternion Conjugate(Quaternion q) => new(-q.X, -q.Y, -q.Z, q.W);
-  public static void Conjugate(ref Quaternion q, out Quaternion result) => result = Conjugate(q);
+  public static void Conjugate(in Quaternion q, out Quaternion result) => result = Conjugate(q);
   public static Quaternion Invert(Quaternion q) => q.Inverted();
-  public static void Invert(ref Quaternion q, out Quaternion result) => result = q.Inverted();
+  public static void Invert(in Quaternion q, out Quaternion result) => result = q.Inverted();
   public static Quaternion Normalize(Quaternion q) => q.Normalized();
-  public static void Normalize(ref Quaternion q, out Quaternion result) => result = q.Normalized();
+  public static void Normalize(in Quaternion q, out Quaternion result) => result = q.Normalized();
 
   /// <summary>Rotation by <paramref name="angle"/> radians about <paramref name="axis"/> (identity for a zero axis).</summary>
   public static Quaternion FromAxisAngle(Vector3 axis, float angle)
@@ -30,14 +30,14 @@ public partial struct Quaternion
 
   public static Quaternion FromEulerAngles(float pitch, float yaw, float roll) => new(pitch, yaw, roll);
   public static Quaternion FromEulerAngles(Vector3 eulerAngles) => new(eulerAngles);
-  public static void FromEulerAngles(ref Vector3 eulerAngles, out Quaternion result) => result = new Quaternion(eulerAngles);
+  public static void FromEulerAngles(in Vector3 eulerAngles, out Quaternion result) => result = new Quaternion(eulerAngles);
 
   /// <summary>
   /// The rotation of an orthonormal matrix (row vectors), the inverse of <see cref="Matrix3.CreateFromQuaternion(Quaternion)"/>
   /// as <see cref="Quaterniond.FromMatrix(Matrix3d)"/> is; computed in double and rounded.
   /// </summary>
   public static Quaternion FromMatrix(Matrix3 matrix) => (Quaternion)Quaterniond.FromMatrix(matrix);
-  public static void FromMatrix(ref Matrix3 matrix, out Quaternion result) => result = FromMatrix(matrix);
+  public static void FromMatrix(in Matrix3 matrix, out Quaternion result) => result = FromMatrix(matrix);
 
   /// <summary>
   /// Spherical interpolation along the shorter arc, linear when the two are within about 8° (then normalised);

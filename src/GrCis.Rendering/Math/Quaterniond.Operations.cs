@@ -11,19 +11,19 @@ public partial struct Quaterniond
   }
 
   public static Quaterniond Multiply(Quaterniond quaternion, double scale) => quaternion * scale;
-  public static void Multiply(ref Quaterniond quaternion, double scale, out Quaterniond result) => result = quaternion * scale;
-  public static void Multiply(ref Quaterniond left, ref Quaterniond right, out Quaterniond result) => result = left * right;
-  public static void Add(ref Quaterniond left, ref Quaterniond right, out Quaterniond result) => result = left + right;
-  public static void Sub(ref Quaterniond left, ref Quaterniond right, out Quaterniond result) => result = left - right;
-  public static void Conjugate(ref Quaterniond q, out Quaterniond result) => result = Conjugate(q);
-  public static void Invert(ref Quaterniond q, out Quaterniond result) => result = q.Inverted();
-  public static void Normalize(ref Quaterniond q, out Quaterniond result) => result = q.Normalized();
+  public static void Multiply(in Quaterniond quaternion, double scale, out Quaterniond result) => result = quaternion * scale;
+  public static void Multiply(in Quaterniond left, in Quaterniond right, out Quaterniond result) => result = left * right;
+  public static void Add(in Quaterniond left, in Quaterniond right, out Quaterniond result) => result = left + right;
+  public static void Sub(in Quaterniond left, in Quaterniond right, out Quaterniond result) => result = left - right;
+  public static void Conjugate(in Quaterniond q, out Quaterniond result) => result = Conjugate(q);
+  public static void Invert(in Quaterniond q, out Quaterniond result) => result = q.Inverted();
+  public static void Normalize(in Quaterniond q, out Quaterniond result) => result = q.Normalized();
 
   /// <summary>
   /// OpenTK 3's ref form of the Euler angles (X pitch, Y yaw, Z roll) builds <c>qY(yaw) · qZ(pitch) · qX(roll)</c>,
   /// not the constructor's order; kept as OpenTK 3 has it.
   /// </summary>
-  public static void FromEulerAngles(ref Vector3d eulerAngles, out Quaterniond result)
+  public static void FromEulerAngles(in Vector3d eulerAngles, out Quaterniond result)
   {
     double cp = Math.Cos(0.5 * eulerAngles.X), sp = Math.Sin(0.5 * eulerAngles.X);
     double cy = Math.Cos(0.5 * eulerAngles.Y), sy = Math.Sin(0.5 * eulerAngles.Y);
@@ -58,5 +58,5 @@ public partial struct Quaterniond
     return new Quaterniond((m.M13 + m.M31) / t, (m.M23 + m.M32) / t, 0.25 * t, (m.M12 - m.M21) / t);
   }
 
-  public static void FromMatrix(ref Matrix3d matrix, out Quaterniond result) => result = FromMatrix(matrix);
+  public static void FromMatrix(in Matrix3d matrix, out Quaterniond result) => result = FromMatrix(matrix);
 }

@@ -17,7 +17,7 @@ public partial struct Quaterniond : IEquatable<Quaterniond>
   /// <summary>
   /// From Euler angles in radians with OpenTK 3's double formula: the product <c>qX(roll) · qY(yaw) · qZ(pitch)</c>
   /// (pitch turns about Z and roll about X; a vector turns by pitch first). The float <see cref="Quaternion"/>'s
-  /// constructor is <c>qX · qY · qZ</c> of its three angles, and <see cref="FromEulerAngles(ref Vector3d, out Quaterniond)"/>
+  /// constructor is <c>qX · qY · qZ</c> of its three angles, and <see cref="FromEulerAngles(in Vector3d, out Quaterniond)"/>
   /// has a third order: OpenTK 3's own, kept so old code gets the rotations it got.
   /// </summary>
   public Quaterniond(double pitch, double yaw, double roll)

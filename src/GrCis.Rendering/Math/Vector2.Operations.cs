@@ -9,56 +9,56 @@ public partial struct Vector2
   public static readonly int SizeInBytes = Unsafe.SizeOf<Vector2>();
 
   public static Vector2 Add(Vector2 a, Vector2 b) => a + b;
-  public static void Add(ref Vector2 a, ref Vector2 b, out Vector2 result) => result = a + b;
+  public static void Add(in Vector2 a, in Vector2 b, out Vector2 result) => result = a + b;
   public static Vector2 Subtract(Vector2 a, Vector2 b) => a - b;
-  public static void Subtract(ref Vector2 a, ref Vector2 b, out Vector2 result) => result = a - b;
+  public static void Subtract(in Vector2 a, in Vector2 b, out Vector2 result) => result = a - b;
   public static Vector2 Multiply(Vector2 vector, float scale) => vector * scale;
-  public static void Multiply(ref Vector2 vector, float scale, out Vector2 result) => result = vector * scale;
+  public static void Multiply(in Vector2 vector, float scale, out Vector2 result) => result = vector * scale;
   public static Vector2 Multiply(Vector2 vector, Vector2 scale) => vector * scale;
-  public static void Multiply(ref Vector2 vector, ref Vector2 scale, out Vector2 result) => result = vector * scale;
+  public static void Multiply(in Vector2 vector, in Vector2 scale, out Vector2 result) => result = vector * scale;
   public static Vector2 Divide(Vector2 vector, float scale) => vector / scale;
-  public static void Divide(ref Vector2 vector, float scale, out Vector2 result) => result = vector / scale;
+  public static void Divide(in Vector2 vector, float scale, out Vector2 result) => result = vector / scale;
   public static Vector2 Divide(Vector2 vector, Vector2 scale) => new(vector.X / scale.X, vector.Y / scale.Y);
-  public static void Divide(ref Vector2 vector, ref Vector2 scale, out Vector2 result) => result = Divide(vector, scale);
+  public static void Divide(in Vector2 vector, in Vector2 scale, out Vector2 result) => result = Divide(vector, scale);
 
   public static Vector2 ComponentMin(Vector2 a, Vector2 b) => new(MathF.Min(a.X, b.X), MathF.Min(a.Y, b.Y));
-  public static void ComponentMin(ref Vector2 a, ref Vector2 b, out Vector2 result) => result = ComponentMin(a, b);
+  public static void ComponentMin(in Vector2 a, in Vector2 b, out Vector2 result) => result = ComponentMin(a, b);
   public static Vector2 ComponentMax(Vector2 a, Vector2 b) => new(MathF.Max(a.X, b.X), MathF.Max(a.Y, b.Y));
-  public static void ComponentMax(ref Vector2 a, ref Vector2 b, out Vector2 result) => result = ComponentMax(a, b);
+  public static void ComponentMax(in Vector2 a, in Vector2 b, out Vector2 result) => result = ComponentMax(a, b);
 
   // OpenTK 3's Min/Max of the float Vector2 compare lengths, like Vector3's (Vector2d's are per component).
   public static Vector2 MagnitudeMin(Vector2 left, Vector2 right) => left.LengthSquared < right.LengthSquared ? left : right;
-  public static void MagnitudeMin(ref Vector2 left, ref Vector2 right, out Vector2 result) => result = MagnitudeMin(left, right);
+  public static void MagnitudeMin(in Vector2 left, in Vector2 right, out Vector2 result) => result = MagnitudeMin(left, right);
   public static Vector2 MagnitudeMax(Vector2 left, Vector2 right) => left.LengthSquared >= right.LengthSquared ? left : right;
-  public static void MagnitudeMax(ref Vector2 left, ref Vector2 right, out Vector2 result) => result = MagnitudeMax(left, right);
+  public static void MagnitudeMax(in Vector2 left, in Vector2 right, out Vector2 result) => result = MagnitudeMax(left, right);
   public static Vector2 Min(Vector2 left, Vector2 right) => MagnitudeMin(left, right);
   public static Vector2 Max(Vector2 left, Vector2 right) => MagnitudeMax(left, right);
 
   public static Vector2 Clamp(Vector2 vec, Vector2 min, Vector2 max) =>
-    new(MathHelper.Clamp(vec.X, min.X, max.X), MathHelper.Clamp(vec.Y, min.Y, max.Y));
-  public static void Clamp(ref Vector2 vec, ref Vector2 min, ref Vector2 max, out Vector2 result) => result = Clamp(vec, min, max);
+    new(MathHelper.ClampComponent(vec.X, min.X, max.X), MathHelper.ClampComponent(vec.Y, min.Y, max.Y));
+  public static void Clamp(in Vector2 vec, in Vector2 min, in Vector2 max, out Vector2 result) => result = Clamp(vec, min, max);
 
   public static float Distance(Vector2 a, Vector2 b) => (a - b).Length;
-  public static void Distance(ref Vector2 a, ref Vector2 b, out float result) => result = Distance(a, b);
+  public static void Distance(in Vector2 a, in Vector2 b, out float result) => result = Distance(a, b);
   public static float DistanceSquared(Vector2 a, Vector2 b) => (a - b).LengthSquared;
-  public static void DistanceSquared(ref Vector2 a, ref Vector2 b, out float result) => result = DistanceSquared(a, b);
+  public static void DistanceSquared(in Vector2 a, in Vector2 b, out float result) => result = DistanceSquared(a, b);
 
   public static Vector2 Normalize(Vector2 vec) => vec.Normalized();
-  public static void Normalize(ref Vector2 vec, out Vector2 result) => result = vec.Normalized();
+  public static void Normalize(in Vector2 vec, out Vector2 result) => result = vec.Normalized();
   public static Vector2 NormalizeFast(Vector2 vec) { vec.NormalizeFast(); return vec; }
-  public static void NormalizeFast(ref Vector2 vec, out Vector2 result) => result = NormalizeFast(vec);
+  public static void NormalizeFast(in Vector2 vec, out Vector2 result) => result = NormalizeFast(vec);
 
   public static float Dot(Vector2 a, Vector2 b) => a.X * b.X + a.Y * b.Y;
-  public static void Dot(ref Vector2 a, ref Vector2 b, out float result) => result = Dot(a, b);
+  public static void Dot(in Vector2 a, in Vector2 b, out float result) => result = Dot(a, b);
   /// <summary>The z of the 3D cross product of (a, 0) and (b, 0): positive when b is counter-clockwise of a.</summary>
   public static float PerpDot(Vector2 a, Vector2 b) => a.X * b.Y - a.Y * b.X;
-  public static void PerpDot(ref Vector2 a, ref Vector2 b, out float result) => result = PerpDot(a, b);
+  public static void PerpDot(in Vector2 a, in Vector2 b, out float result) => result = PerpDot(a, b);
 
   public static Vector2 Lerp(Vector2 a, Vector2 b, float blend) => a + (b - a) * blend;
-  public static void Lerp(ref Vector2 a, ref Vector2 b, float blend, out Vector2 result) => result = Lerp(a, b, blend);
+  public static void Lerp(in Vector2 a, in Vector2 b, float blend, out Vector2 result) => result = Lerp(a, b, blend);
   /// <summary>The point <c>a + u (b − a) + v (c − a)</c> of triangle abc.</summary>
   public static Vector2 BaryCentric(Vector2 a, Vector2 b, Vector2 c, float u, float v) => a + (b - a) * u + (c - a) * v;
-  public static void BaryCentric(ref Vector2 a, ref Vector2 b, ref Vector2 c, float u, float v, out Vector2 result) =>
+  public static void BaryCentric(in Vector2 a, in Vector2 b, in Vector2 c, float u, float v, out Vector2 result) =>
     result = BaryCentric(a, b, c, u, v);
 
   /// <summary>Rotates (x, y, 0) by the quaternion (<c>q v q⁻¹</c>) and keeps x and y.</summary>
@@ -68,5 +68,5 @@ public partial struct Vector2
     return new Vector2(r.X, r.Y);
   }
 
-  public static void Transform(ref Vector2 vec, ref Quaternion quat, out Vector2 result) => result = Transform(vec, quat);
+  public static void Transform(in Vector2 vec, in Quaternion quat, out Vector2 result) => result = Transform(vec, quat);
 }

@@ -9,47 +9,49 @@ public partial struct Vector2d
   public static readonly int SizeInBytes = Unsafe.SizeOf<Vector2d>();
 
   public static Vector2d Add(Vector2d a, Vector2d b) => a + b;
-  public static void Add(ref Vector2d a, ref Vector2d b, out Vector2d result) => result = a + b;
+  public static void Add(in Vector2d a, in Vector2d b, out Vector2d result) => result = a + b;
   public static Vector2d Subtract(Vector2d a, Vector2d b) => a - b;
-  public static void Subtract(ref Vector2d a, ref Vector2d b, out Vector2d result) => result = a - b;
+  public static void Subtract(in Vector2d a, in Vector2d b, out Vector2d result) => result = a - b;
   public static Vector2d Multiply(Vector2d vector, double scale) => vector * scale;
-  public static void Multiply(ref Vector2d vector, double scale, out Vector2d result) => result = vector * scale;
+  public static void Multiply(in Vector2d vector, double scale, out Vector2d result) => result = vector * scale;
   public static Vector2d Multiply(Vector2d vector, Vector2d scale) => vector * scale;
-  public static void Multiply(ref Vector2d vector, ref Vector2d scale, out Vector2d result) => result = vector * scale;
+  public static void Multiply(in Vector2d vector, in Vector2d scale, out Vector2d result) => result = vector * scale;
   public static Vector2d Divide(Vector2d vector, double scale) => vector / scale;
-  public static void Divide(ref Vector2d vector, double scale, out Vector2d result) => result = vector / scale;
+  public static void Divide(in Vector2d vector, double scale, out Vector2d result) => result = vector / scale;
   public static Vector2d Divide(Vector2d vector, Vector2d scale) => new(vector.X / scale.X, vector.Y / scale.Y);
-  public static void Divide(ref Vector2d vector, ref Vector2d scale, out Vector2d result) => result = Divide(vector, scale);
+  public static void Divide(in Vector2d vector, in Vector2d scale, out Vector2d result) => result = Divide(vector, scale);
 
   // OpenTK 3's Min/Max of Vector2d are component-wise (unlike Vector3d's, which compare lengths).
   public static Vector2d Min(Vector2d a, Vector2d b) => ComponentMin(a, b);
-  public static void Min(ref Vector2d a, ref Vector2d b, out Vector2d result) => result = ComponentMin(a, b);
+  public static void Min(in Vector2d a, in Vector2d b, out Vector2d result) => result = ComponentMin(a, b);
   public static Vector2d Max(Vector2d a, Vector2d b) => ComponentMax(a, b);
-  public static void Max(ref Vector2d a, ref Vector2d b, out Vector2d result) => result = ComponentMax(a, b);
-  public static void ComponentMin(ref Vector2d a, ref Vector2d b, out Vector2d result) => result = ComponentMin(a, b);
-  public static void ComponentMax(ref Vector2d a, ref Vector2d b, out Vector2d result) => result = ComponentMax(a, b);
+  public static void Max(in Vector2d a, in Vector2d b, out Vector2d result) => result = ComponentMax(a, b);
+  public static void ComponentMin(in Vector2d a, in Vector2d b, out Vector2d result) => result = ComponentMin(a, b);
+  public static void ComponentMax(in Vector2d a, in Vector2d b, out Vector2d result) => result = ComponentMax(a, b);
   public static Vector2d MagnitudeMin(Vector2d left, Vector2d right) => left.LengthSquared < right.LengthSquared ? left : right;
-  public static void MagnitudeMin(ref Vector2d left, ref Vector2d right, out Vector2d result) => result = MagnitudeMin(left, right);
+  public static void MagnitudeMin(in Vector2d left, in Vector2d right, out Vector2d result) => result = MagnitudeMin(left, right);
   public static Vector2d MagnitudeMax(Vector2d left, Vector2d right) => left.LengthSquared >= right.LengthSquared ? left : right;
-  public static void MagnitudeMax(ref Vector2d left, ref Vector2d right, out Vector2d result) => result = MagnitudeMax(left, right);
+  public static void MagnitudeMax(in Vector2d left, in Vector2d right, out Vector2d result) => result = MagnitudeMax(left, right);
   public static Vector2d Clamp(Vector2d vec, Vector2d min, Vector2d max) =>
-    new(Math.Clamp(vec.X, min.X, max.X), Math.Clamp(vec.Y, min.Y, max.Y));
-  public static void Clamp(ref Vector2d vec, ref Vector2d min, ref Vector2d max, out Vector2d result) => result = Clamp(vec, min, max);
+    new(MathHelper.ClampComponent(vec.X, min.X, max.X), MathHelper.ClampComponent(vec.Y, min.Y, max.Y));
+  public static void Clamp(in Vector2d vec, in Vector2d min, in Vector2d max, out Vector2d result) => result = Clamp(vec, min, max);
 
-  public static void Normalize(ref Vector2d vec, out Vector2d result) => result = vec.Normalized();
+  public static void Normalize(in Vector2d vec, out Vector2d result) => result = vec.Normalized();
   public static Vector2d NormalizeFast(Vector2d vec) => vec.Normalized();
-  public static void NormalizeFast(ref Vector2d vec, out Vector2d result) => result = vec.Normalized();
-  public static void Dot(ref Vector2d left, ref Vector2d right, out double result) => result = Dot(left, right);
-  public static void Lerp(ref Vector2d a, ref Vector2d b, double blend, out Vector2d result) => result = Lerp(a, b, blend);
+  public static void NormalizeFast(in Vector2d vec, out Vector2d result) => result = vec.Normalized();
+  public static void Dot(in Vector2d left, in Vector2d right, out double result) => result = Dot(left, right);
+  public static void Lerp(in Vector2d a, in Vector2d b, double blend, out Vector2d result) => result = Lerp(a, b, blend);
 
   /// <summary>The point <c>a + u (b − a) + v (c − a)</c> of triangle abc.</summary>
   public static Vector2d BaryCentric(Vector2d a, Vector2d b, Vector2d c, double u, double v) => a + (b - a) * u + (c - a) * v;
-  public static void BaryCentric(ref Vector2d a, ref Vector2d b, ref Vector2d c, double u, double v, out Vector2d result) =>
+  public static void BaryCentric(in Vector2d a, in Vector2d b, in Vector2d c, double u, double v, out Vector2d result) =>
     result = BaryCentric(a, b, c, u, v);
 
   /// <summary>Rotates (x, y, 0) by the quaternion and keeps x and y.</summary>
   public static Vector2d Transform(Vector2d vec, Quaterniond quat) => Vector3d.Transform(new Vector3d(vec.X, vec.Y, 0), quat).Xy;
-  public static void Transform(ref Vector2d vec, ref Quaterniond quat, out Vector2d result) => result = Transform(vec, quat);
+  public static void Transform(in Vector2d vec, in Quaterniond quat, out Vector2d result) => result = Transform(vec, quat);
+  /// <summary>OpenTK 4's operator form of <see cref="Transform(Vector2d, Quaterniond)"/>.</summary>
+  public static Vector2d operator *(Quaterniond quat, Vector2d vec) => Transform(vec, quat);
 
   public static explicit operator Vector2d(Vector2 v) => new(v.X, v.Y);
   public static explicit operator Vector2(Vector2d v) => new((float)v.X, (float)v.Y);

@@ -42,9 +42,9 @@ public partial struct Vector2d : IEquatable<Vector2d>
 
   public static double DistanceSquared(Vector2d a, Vector2d b) => (a - b).LengthSquared;
 
-  public static void Distance(ref Vector2d a, ref Vector2d b, out double result) => result = Distance(a, b);
+  public static void Distance(in Vector2d a, in Vector2d b, out double result) => result = Distance(a, b);
 
-  public static void DistanceSquared(ref Vector2d a, ref Vector2d b, out double result) => result = DistanceSquared(a, b);
+  public static void DistanceSquared(in Vector2d a, in Vector2d b, out double result) => result = DistanceSquared(a, b);
   public static Vector2d Lerp(Vector2d a, Vector2d b, double t) => a + (b - a) * t;
   public static Vector2d ComponentMin(Vector2d a, Vector2d b) => new(Math.Min(a.X, b.X), Math.Min(a.Y, b.Y));
   public static Vector2d ComponentMax(Vector2d a, Vector2d b) => new(Math.Max(a.X, b.X), Math.Max(a.Y, b.Y));

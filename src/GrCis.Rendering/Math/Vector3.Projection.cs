@@ -4,7 +4,7 @@ namespace OpenTK.Mathematics;
 // viewport projection, the rotation by a float Quaternion, and the products with a float Matrix3.
 public partial struct Vector3
 {
-  public static void TransformNormalInverse(ref Vector3 norm, ref Matrix4 invMat, out Vector3 result) => result = TransformNormalInverse(norm, invMat);
+  public static void TransformNormalInverse(in Vector3 norm, in Matrix4 invMat, out Vector3 result) => result = TransformNormalInverse(norm, invMat);
 
   /// <summary>The point (w = 1) times the matrix, divided by the resulting w.</summary>
   public static Vector3 TransformPerspective(Vector3 vec, Matrix4 mat)
@@ -13,7 +13,7 @@ public partial struct Vector3
     return new Vector3(h.X, h.Y, h.Z) / h.W;
   }
 
-  public static void TransformPerspective(ref Vector3 vec, ref Matrix4 mat, out Vector3 result) => result = TransformPerspective(vec, mat);
+  public static void TransformPerspective(in Vector3 vec, in Matrix4 mat, out Vector3 result) => result = TransformPerspective(vec, mat);
 
   /// <summary>
   /// World to window coordinates: the point through <paramref name="worldViewProjection"/> and the perspective
@@ -48,7 +48,7 @@ public partial struct Vector3
     return vec + quat.W * t + Cross(u, t);
   }
 
-  public static void Transform(ref Vector3 vec, ref Quaternion quat, out Vector3 result) => result = Transform(vec, quat);
+  public static void Transform(in Vector3 vec, in Quaternion quat, out Vector3 result) => result = Transform(vec, quat);
   public static Vector3 operator *(Quaternion quat, Vector3 vec) => Transform(vec, quat);
 
   // By a Matrix3, in float and in OpenTK's order of terms. "Row" is v · M (this port's convention), "column" is M · v.
@@ -62,16 +62,16 @@ public partial struct Vector3
   static Vector3 TimesColumn(Matrix3 m, Vector3 v) => new(Dot(m.Row0, v), Dot(m.Row1, v), Dot(m.Row2, v));
 
   public static Vector3 Transform(Vector3 vec, Matrix3 mat) => RowTimes(vec, mat);
-  public static void Transform(ref Vector3 vec, ref Matrix3 mat, out Vector3 result) => result = RowTimes(vec, mat);
+  public static void Transform(in Vector3 vec, in Matrix3 mat, out Vector3 result) => result = RowTimes(vec, mat);
   /// <summary>v · M despite the order of the arguments (OpenTK 3 marks it obsolete for that); see <see cref="TransformColumn(Matrix3, Vector3)"/>.</summary>
   public static Vector3 Transform(Matrix3 mat, Vector3 vec) => RowTimes(vec, mat);
   /// <summary>M · v, unlike <see cref="Transform(Matrix3, Vector3)"/>: OpenTK 3's ref twin disagrees with it.</summary>
-  public static void Transform(ref Matrix3 mat, ref Vector3 vec, out Vector3 result) => result = TimesColumn(mat, vec);
+  public static void Transform(in Matrix3 mat, in Vector3 vec, out Vector3 result) => result = TimesColumn(mat, vec);
   public static Vector3 TransformColumn(Matrix3 mat, Vector3 vec) => TimesColumn(mat, vec);
-  public static void TransformColumn(ref Matrix3 mat, ref Vector3 vec, out Vector3 result) => result = TimesColumn(mat, vec);
+  public static void TransformColumn(in Matrix3 mat, in Vector3 vec, out Vector3 result) => result = TimesColumn(mat, vec);
   /// <summary>M · v, as in OpenTK 3.3.3 (a slip there: the ref twin and <c>v * M</c> give v · M).</summary>
   public static Vector3 TransformRow(Vector3 vec, Matrix3 mat) => TimesColumn(mat, vec);
-  public static void TransformRow(ref Vector3 vec, ref Matrix3 mat, out Vector3 result) => result = RowTimes(vec, mat);
+  public static void TransformRow(in Vector3 vec, in Matrix3 mat, out Vector3 result) => result = RowTimes(vec, mat);
   public static Vector3 operator *(Vector3 vec, Matrix3 mat) => RowTimes(vec, mat);
   public static Vector3 operator *(Matrix3 mat, Vector3 vec) => TimesColumn(mat, vec);
 }

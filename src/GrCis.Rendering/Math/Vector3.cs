@@ -61,16 +61,26 @@ public partial struct Vector3 : IEquatable<Vector3>
   public static Vector3 Cross(Vector3 a, Vector3 b) => new(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
   public static Vector3 Lerp(Vector3 a, Vector3 b, float t) => a + (b - a) * t;
 
-  // OpenTK 3's transforms by a float matrix (row vectors). Transform treats the vector as a point (w = 1).
+  // OpenTK 3's transforms by a float matrix (row vectors), in float and OpenTK's order. Transform treats the vector as a point (w = 1).
   public static Vector3 Transform(Vector3 vec, Matrix4 mat) => TransformPosition(vec, mat);
-  public static void Transform(ref Vector3 vec, ref Matrix4 mat, out Vector3 result) => result = TransformPosition(vec, mat);
-  public static Vector3 TransformPosition(Vector3 vec, Matrix4 mat) => (Vector3)Vector3d.TransformPosition(vec, mat);
-  public static void TransformPosition(ref Vector3 vec, ref Matrix4 mat, out Vector3 result) => result = TransformPosition(vec, mat);
-  public static Vector3 TransformVector(Vector3 vec, Matrix4 mat) => (Vector3)Vector3d.TransformVector(vec, mat);
-  public static void TransformVector(ref Vector3 vec, ref Matrix4 mat, out Vector3 result) => result = TransformVector(vec, mat);
-  public static Vector3 TransformNormal(Vector3 norm, Matrix4 mat) => (Vector3)Vector3d.TransformNormal(norm, mat);
-  public static void TransformNormal(ref Vector3 norm, ref Matrix4 mat, out Vector3 result) => result = TransformNormal(norm, mat);
-  public static Vector3 TransformNormalInverse(Vector3 norm, Matrix4 invMat) => (Vector3)Vector3d.TransformNormalInverse(norm, invMat);
+  public static void Transform(in Vector3 vec, in Matrix4 mat, out Vector3 result) => result = TransformPosition(vec, mat);
+  public static Vector3 TransformPosition(Vector3 vec, Matrix4 mat) => new(
+    vec.X * mat.Row0.X + vec.Y * mat.Row1.X + vec.Z * mat.Row2.X + mat.Row3.X,
+    vec.X * mat.Row0.Y + vec.Y * mat.Row1.Y + vec.Z * mat.Row2.Y + mat.Row3.Y,
+    vec.X * mat.Row0.Z + vec.Y * mat.Row1.Z + vec.Z * mat.Row2.Z + mat.Row3.Z);
+  public static void TransformPosition(in Vector3 vec, in Matrix4 mat, out Vector3 result) => result = TransformPosition(vec, mat);
+  public static Vector3 TransformVector(Vector3 vec, Matrix4 mat) => new(
+    vec.X * mat.Row0.X + vec.Y * mat.Row1.X + vec.Z * mat.Row2.X,
+    vec.X * mat.Row0.Y + vec.Y * mat.Row1.Y + vec.Z * mat.Row2.Y,
+    vec.X * mat.Row0.Z + vec.Y * mat.Row1.Z + vec.Z * mat.Row2.Z);
+  public static void TransformVector(in Vector3 vec, in Matrix4 mat, out Vector3 result) => result = TransformVector(vec, mat);
+  /// <summary>By the inverse transpose of <paramref name="mat"/> (inverted in float); a singular matrix throws.</summary>
+  public static Vector3 TransformNormal(Vector3 norm, Matrix4 mat) => TransformNormalInverse(norm, Matrix4.Invert(mat));
+  public static void TransformNormal(in Vector3 norm, in Matrix4 mat, out Vector3 result) => result = TransformNormal(norm, mat);
+  public static Vector3 TransformNormalInverse(Vector3 norm, Matrix4 invMat) => new(
+    norm.X * invMat.Row0.X + norm.Y * invMat.Row0.Y + norm.Z * invMat.Row0.Z,
+    norm.X * invMat.Row1.X + norm.Y * invMat.Row1.Y + norm.Z * invMat.Row1.Z,
+    norm.X * invMat.Row2.X + norm.Y * invMat.Row2.Y + norm.Z * invMat.Row2.Z);
   public static float Distance(Vector3 a, Vector3 b) => (a - b).Length;
   public static float DistanceSquared(Vector3 a, Vector3 b) => (a - b).LengthSquared;
 

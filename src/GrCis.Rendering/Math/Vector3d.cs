@@ -78,17 +78,17 @@ public partial struct Vector3d : IEquatable<Vector3d>
   }
 
   public static Vector3d Normalize(Vector3d v) => v.Normalized();
-  public static void Normalize(ref Vector3d v, out Vector3d result) => result = v.Normalized();
+  public static void Normalize(in Vector3d v, out Vector3d result) => result = v.Normalized();
   public static Vector3d NormalizeFast(Vector3d v) => v.Normalized();
 
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static double Dot(Vector3d a, Vector3d b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
-  public static void Dot(ref Vector3d a, ref Vector3d b, out double result) => result = Dot(a, b);
+  public static void Dot(in Vector3d a, in Vector3d b, out double result) => result = Dot(a, b);
 
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static Vector3d Cross(Vector3d a, Vector3d b) =>
     new(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
-  public static void Cross(ref Vector3d a, ref Vector3d b, out Vector3d result) => result = Cross(a, b);
+  public static void Cross(in Vector3d a, in Vector3d b, out Vector3d result) => result = Cross(a, b);
 
   public static Vector3d Add(Vector3d a, Vector3d b) => a + b;
   public static Vector3d Subtract(Vector3d a, Vector3d b) => a - b;
@@ -102,7 +102,7 @@ public partial struct Vector3d : IEquatable<Vector3d>
   public static Vector3d Min(Vector3d a, Vector3d b) => a.LengthSquared < b.LengthSquared ? a : b;
   public static Vector3d Max(Vector3d a, Vector3d b) => a.LengthSquared >= b.LengthSquared ? a : b;
   public static Vector3d Clamp(Vector3d v, Vector3d min, Vector3d max) =>
-    new(Math.Clamp(v.X, min.X, max.X), Math.Clamp(v.Y, min.Y, max.Y), Math.Clamp(v.Z, min.Z, max.Z));
+    new(MathHelper.ClampComponent(v.X, min.X, max.X), MathHelper.ClampComponent(v.Y, min.Y, max.Y), MathHelper.ClampComponent(v.Z, min.Z, max.Z));
   public static Vector3d Abs(Vector3d v) => new(Math.Abs(v.X), Math.Abs(v.Y), Math.Abs(v.Z));
 
   public static double Distance(Vector3d a, Vector3d b) => (a - b).Length;
@@ -126,7 +126,7 @@ public partial struct Vector3d : IEquatable<Vector3d>
     v.X * m.Row0.X + v.Y * m.Row1.X + v.Z * m.Row2.X,
     v.X * m.Row0.Y + v.Y * m.Row1.Y + v.Z * m.Row2.Y,
     v.X * m.Row0.Z + v.Y * m.Row1.Z + v.Z * m.Row2.Z);
-  public static void TransformVector(ref Vector3d v, ref Matrix4d m, out Vector3d result) => result = TransformVector(v, m);
+  public static void TransformVector(in Vector3d v, in Matrix4d m, out Vector3d result) => result = TransformVector(v, m);
 
   /// <summary>Row vector times matrix with translation: <c>(v, 1) * m</c>.</summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -134,7 +134,7 @@ public partial struct Vector3d : IEquatable<Vector3d>
     v.X * m.Row0.X + v.Y * m.Row1.X + v.Z * m.Row2.X + m.Row3.X,
     v.X * m.Row0.Y + v.Y * m.Row1.Y + v.Z * m.Row2.Y + m.Row3.Y,
     v.X * m.Row0.Z + v.Y * m.Row1.Z + v.Z * m.Row2.Z + m.Row3.Z);
-  public static void TransformPosition(ref Vector3d v, ref Matrix4d m, out Vector3d result) => result = TransformPosition(v, m);
+  public static void TransformPosition(in Vector3d v, in Matrix4d m, out Vector3d result) => result = TransformPosition(v, m);
 
   /// <summary>Transforms a normal by the inverse transpose of <paramref name="m"/>; a singular m throws, as in OpenTK 3.</summary>
   public static Vector3d TransformNormal(Vector3d n, Matrix4d m) => TransformNormalInverse(n, Matrix4d.Invert(m));
@@ -149,7 +149,7 @@ public partial struct Vector3d : IEquatable<Vector3d>
   /// <summary>Homogeneous transform with the perspective divide.</summary>
   /// <summary>OpenTK 3's name: the vector as a point (w = 1), times the matrix, without the perspective divide.</summary>
   public static Vector3d Transform(Vector3d vec, Matrix4d mat) => TransformPosition(vec, mat);
-  public static void Transform(ref Vector3d vec, ref Matrix4d mat, out Vector3d result) => result = TransformPosition(vec, mat);
+  public static void Transform(in Vector3d vec, in Matrix4d mat, out Vector3d result) => result = TransformPosition(vec, mat);
 
   /// <summary>Row vector times a 3×3 matrix.</summary>
   public static Vector3d Transform(Vector3d vec, Matrix3d mat) => vec * mat;

@@ -9,50 +9,50 @@ public partial struct Vector4
   public static readonly int SizeInBytes = Unsafe.SizeOf<Vector4>();
 
   public static Vector4 Add(Vector4 a, Vector4 b) => a + b;
-  public static void Add(ref Vector4 a, ref Vector4 b, out Vector4 result) => result = a + b;
+  public static void Add(in Vector4 a, in Vector4 b, out Vector4 result) => result = a + b;
   public static Vector4 Subtract(Vector4 a, Vector4 b) => a - b;
-  public static void Subtract(ref Vector4 a, ref Vector4 b, out Vector4 result) => result = a - b;
+  public static void Subtract(in Vector4 a, in Vector4 b, out Vector4 result) => result = a - b;
   public static Vector4 Multiply(Vector4 vector, float scale) => vector * scale;
-  public static void Multiply(ref Vector4 vector, float scale, out Vector4 result) => result = vector * scale;
+  public static void Multiply(in Vector4 vector, float scale, out Vector4 result) => result = vector * scale;
   public static Vector4 Multiply(Vector4 vector, Vector4 scale) => vector * scale;
-  public static void Multiply(ref Vector4 vector, ref Vector4 scale, out Vector4 result) => result = vector * scale;
+  public static void Multiply(in Vector4 vector, in Vector4 scale, out Vector4 result) => result = vector * scale;
   public static Vector4 Divide(Vector4 vector, float scale) => vector / scale;
-  public static void Divide(ref Vector4 vector, float scale, out Vector4 result) => result = vector / scale;
+  public static void Divide(in Vector4 vector, float scale, out Vector4 result) => result = vector / scale;
   public static Vector4 Divide(Vector4 vector, Vector4 scale) => new(vector.X / scale.X, vector.Y / scale.Y, vector.Z / scale.Z, vector.W / scale.W);
-  public static void Divide(ref Vector4 vector, ref Vector4 scale, out Vector4 result) => result = Divide(vector, scale);
+  public static void Divide(in Vector4 vector, in Vector4 scale, out Vector4 result) => result = Divide(vector, scale);
 
   public static Vector4 ComponentMin(Vector4 a, Vector4 b) =>
     new(MathF.Min(a.X, b.X), MathF.Min(a.Y, b.Y), MathF.Min(a.Z, b.Z), MathF.Min(a.W, b.W));
-  public static void ComponentMin(ref Vector4 a, ref Vector4 b, out Vector4 result) => result = ComponentMin(a, b);
+  public static void ComponentMin(in Vector4 a, in Vector4 b, out Vector4 result) => result = ComponentMin(a, b);
   public static Vector4 ComponentMax(Vector4 a, Vector4 b) =>
     new(MathF.Max(a.X, b.X), MathF.Max(a.Y, b.Y), MathF.Max(a.Z, b.Z), MathF.Max(a.W, b.W));
-  public static void ComponentMax(ref Vector4 a, ref Vector4 b, out Vector4 result) => result = ComponentMax(a, b);
+  public static void ComponentMax(in Vector4 a, in Vector4 b, out Vector4 result) => result = ComponentMax(a, b);
 
   // OpenTK 3's Min/Max of Vector4 are per component (unlike Vector2's and Vector3's, which compare lengths).
   public static Vector4 Min(Vector4 a, Vector4 b) => ComponentMin(a, b);
-  public static void Min(ref Vector4 a, ref Vector4 b, out Vector4 result) => result = ComponentMin(a, b);
+  public static void Min(in Vector4 a, in Vector4 b, out Vector4 result) => result = ComponentMin(a, b);
   public static Vector4 Max(Vector4 a, Vector4 b) => ComponentMax(a, b);
-  public static void Max(ref Vector4 a, ref Vector4 b, out Vector4 result) => result = ComponentMax(a, b);
+  public static void Max(in Vector4 a, in Vector4 b, out Vector4 result) => result = ComponentMax(a, b);
   public static Vector4 MagnitudeMin(Vector4 left, Vector4 right) => left.LengthSquared < right.LengthSquared ? left : right;
-  public static void MagnitudeMin(ref Vector4 left, ref Vector4 right, out Vector4 result) => result = MagnitudeMin(left, right);
+  public static void MagnitudeMin(in Vector4 left, in Vector4 right, out Vector4 result) => result = MagnitudeMin(left, right);
   public static Vector4 MagnitudeMax(Vector4 left, Vector4 right) => left.LengthSquared >= right.LengthSquared ? left : right;
-  public static void MagnitudeMax(ref Vector4 left, ref Vector4 right, out Vector4 result) => result = MagnitudeMax(left, right);
+  public static void MagnitudeMax(in Vector4 left, in Vector4 right, out Vector4 result) => result = MagnitudeMax(left, right);
 
   public static Vector4 Clamp(Vector4 vec, Vector4 min, Vector4 max) => new(
-    MathHelper.Clamp(vec.X, min.X, max.X), MathHelper.Clamp(vec.Y, min.Y, max.Y), MathHelper.Clamp(vec.Z, min.Z, max.Z), MathHelper.Clamp(vec.W, min.W, max.W));
-  public static void Clamp(ref Vector4 vec, ref Vector4 min, ref Vector4 max, out Vector4 result) => result = Clamp(vec, min, max);
+    MathHelper.ClampComponent(vec.X, min.X, max.X), MathHelper.ClampComponent(vec.Y, min.Y, max.Y), MathHelper.ClampComponent(vec.Z, min.Z, max.Z), MathHelper.ClampComponent(vec.W, min.W, max.W));
+  public static void Clamp(in Vector4 vec, in Vector4 min, in Vector4 max, out Vector4 result) => result = Clamp(vec, min, max);
 
   public static Vector4 Normalize(Vector4 vec) => vec.Normalized();
-  public static void Normalize(ref Vector4 vec, out Vector4 result) => result = vec.Normalized();
+  public static void Normalize(in Vector4 vec, out Vector4 result) => result = vec.Normalized();
   public static Vector4 NormalizeFast(Vector4 vec) { vec.NormalizeFast(); return vec; }
-  public static void NormalizeFast(ref Vector4 vec, out Vector4 result) => result = NormalizeFast(vec);
+  public static void NormalizeFast(in Vector4 vec, out Vector4 result) => result = NormalizeFast(vec);
 
   public static float Dot(Vector4 a, Vector4 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z + a.W * b.W;
-  public static void Dot(ref Vector4 a, ref Vector4 b, out float result) => result = Dot(a, b);
-  public static void Lerp(ref Vector4 a, ref Vector4 b, float blend, out Vector4 result) => result = Lerp(a, b, blend);
+  public static void Dot(in Vector4 a, in Vector4 b, out float result) => result = Dot(a, b);
+  public static void Lerp(in Vector4 a, in Vector4 b, float blend, out Vector4 result) => result = Lerp(a, b, blend);
   /// <summary>The point <c>a + u (b − a) + v (c − a)</c> of triangle abc.</summary>
   public static Vector4 BaryCentric(Vector4 a, Vector4 b, Vector4 c, float u, float v) => a + (b - a) * u + (c - a) * v;
-  public static void BaryCentric(ref Vector4 a, ref Vector4 b, ref Vector4 c, float u, float v, out Vector4 result) =>
+  public static void BaryCentric(in Vector4 a, in Vector4 b, in Vector4 c, float u, float v, out Vector4 result) =>
     result = BaryCentric(a, b, c, u, v);
 
   /// <summary><c>q v q⁻¹</c> with v as the quaternion (x, y, z, w): xyz rotated, w kept.</summary>
@@ -62,6 +62,6 @@ public partial struct Vector4
     return new Vector4(r.X, r.Y, r.Z, r.W);
   }
 
-  public static void Transform(ref Vector4 vec, ref Quaternion quat, out Vector4 result) => result = Transform(vec, quat);
+  public static void Transform(in Vector4 vec, in Quaternion quat, out Vector4 result) => result = Transform(vec, quat);
   public static Vector4 operator *(Quaternion quat, Vector4 vec) => Transform(vec, quat);
 }

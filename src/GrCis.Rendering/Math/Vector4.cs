@@ -52,14 +52,18 @@ public partial struct Vector4 : IEquatable<Vector4>
 
   public static Vector4 Lerp(Vector4 a, Vector4 b, float t) => a + (b - a) * t;
 
-  /// <summary>Row vector times matrix.</summary>
-  public static Vector4 Transform(Vector4 vec, Matrix4 mat) => (Vector4)Vector4d.Transform(vec, mat);
-  public static void Transform(ref Vector4 vec, ref Matrix4 mat, out Vector4 result) => result = Transform(vec, mat);
+  /// <summary>Row vector times matrix, in float, summed x to w as OpenTK does.</summary>
+  public static Vector4 Transform(Vector4 vec, Matrix4 mat) => new(
+    vec.X * mat.Row0.X + vec.Y * mat.Row1.X + vec.Z * mat.Row2.X + vec.W * mat.Row3.X,
+    vec.X * mat.Row0.Y + vec.Y * mat.Row1.Y + vec.Z * mat.Row2.Y + vec.W * mat.Row3.Y,
+    vec.X * mat.Row0.Z + vec.Y * mat.Row1.Z + vec.Z * mat.Row2.Z + vec.W * mat.Row3.Z,
+    vec.X * mat.Row0.W + vec.Y * mat.Row1.W + vec.Z * mat.Row2.W + vec.W * mat.Row3.W);
+  public static void Transform(in Vector4 vec, in Matrix4 mat, out Vector4 result) => result = Transform(vec, mat);
   public static Vector4 operator *(Vector4 vec, Matrix4 mat) => Transform(vec, mat);
 
   /// <summary>Matrix times column vector: each row of the matrix dotted with the vector.</summary>
   public static Vector4 Transform(Matrix4 mat, Vector4 vec) => new(Dot(mat.Row0, vec), Dot(mat.Row1, vec), Dot(mat.Row2, vec), Dot(mat.Row3, vec));
-  public static void Transform(ref Matrix4 mat, ref Vector4 vec, out Vector4 result) => result = Transform(mat, vec);
+  public static void Transform(in Matrix4 mat, in Vector4 vec, out Vector4 result) => result = Transform(mat, vec);
   public static Vector4 operator *(Matrix4 mat, Vector4 vec) => Transform(mat, vec);
 
   public static Vector4 operator +(Vector4 a, Vector4 b) => new(a.X + b.X, a.Y + b.Y, a.Z + b.Z, a.W + b.W);

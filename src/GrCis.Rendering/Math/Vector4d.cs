@@ -60,7 +60,7 @@ public partial struct Vector4d : IEquatable<Vector4d>
     v.X * m.Row0.Y + v.Y * m.Row1.Y + v.Z * m.Row2.Y + v.W * m.Row3.Y,
     v.X * m.Row0.Z + v.Y * m.Row1.Z + v.Z * m.Row2.Z + v.W * m.Row3.Z,
     v.X * m.Row0.W + v.Y * m.Row1.W + v.Z * m.Row2.W + v.W * m.Row3.W);
-  public static void Transform(ref Vector4d v, ref Matrix4d m, out Vector4d result) => result = Transform(v, m);
+  public static void Transform(in Vector4d v, in Matrix4d m, out Vector4d result) => result = Transform(v, m);
 
   public static Vector4d operator +(Vector4d a, Vector4d b) => new(a.X + b.X, a.Y + b.Y, a.Z + b.Z, a.W + b.W);
   public static Vector4d operator -(Vector4d a, Vector4d b) => new(a.X - b.X, a.Y - b.Y, a.Z - b.Z, a.W - b.W);

@@ -12,8 +12,10 @@ namespace Scene3D;
 /// Supports <c>v</c>, <c>vt</c>, <c>vn</c> and <c>f</c> with the forms <c>v</c>, <c>v/vt</c>,
 /// <c>v//vn</c>, <c>v/vt/vn</c>, negative (relative) indices, polygons (fan-triangulated), <c>#</c>
 /// comments and gzip-compressed files (<c>.gz</c>). Other statements (g, o, s, usemtl, mtllib, …)
-/// are ignored. Attributes are per vertex in <see cref="SceneBrep"/>: a position used with
-/// different texture coordinates or normals is duplicated. Malformed lines throw
+/// are ignored, and so are unknown ones in a file that has OBJ statements; binary data, or a text
+/// without any OBJ statement, is not an OBJ file. An OBJ without faces gives an empty mesh.
+/// Attributes are per vertex in <see cref="SceneBrep"/>: a position used with different texture
+/// coordinates or normals is duplicated. Malformed lines and files that are not OBJ throw
 /// <see cref="MeshFormatException"/> naming the file and line.
 /// </summary>
 public class WavefrontObj
@@ -87,11 +89,17 @@ public class WavefrontObj
     Matrix4d normalMatrix = m.Inverted();
     int triangles = 0;
     int lineNo = 0;
+    bool anyStatement = false;     // an OBJ statement seen (read or ignored)
+    int foreignLine = 0;           // first line whose keyword is no OBJ statement
+    string foreignKeyword = "";
 
     string? line;
     while ((line = NextLine(reader, name, lineNo)) != null)
     {
       lineNo++;
+      int binary = BinaryCharacter(line);
+      if (binary >= 0)
+        throw new MeshFormatException(name, lineNo, $"binary data (character 0x{(int)line[binary]:X2}): not a Wavefront OBJ text file");
       int hash = line.IndexOf('#');
       ReadOnlySpan<char> text = (hash >= 0 ? line.AsSpan(0, hash) : line.AsSpan()).Trim();
       if (text.IsEmpty)
@@ -146,11 +154,45 @@ public class WavefrontObj
           break;
         }
         default:
-          break;   // g, o, s, usemtl, mtllib, l, p, … are not needed
+          // g, o, s, usemtl, mtllib, l, p, … are not needed.
+          if (IsOtherStatement(keyword))
+            anyStatement = true;
+          else if (foreignLine == 0)
+          {
+            foreignLine = lineNo;
+            foreignKeyword = keyword.Length > 20 ? keyword[..20].ToString() + "…" : keyword.ToString();
+          }
+          continue;
       }
+      anyStatement = true;
     }
+    // Unknown statements among OBJ ones are skipped; a text with none at all is some other file.
+    if (!anyStatement && foreignLine > 0)
+      throw new MeshFormatException(name, foreignLine, $"'{foreignKeyword}' is not an OBJ statement and the file has none: not a Wavefront OBJ file");
     return triangles;
   }
+
+  /// <summary>Index of the first control character that no text file holds (not whitespace, not DOS's end-of-file mark), or −1.</summary>
+  static int BinaryCharacter(string line)
+  {
+    for (int i = 0; i < line.Length; i++)
+    {
+      char c = line[i];
+      if ((c < ' ' && c != '\t' && c != '\v' && c != '\f' && c != '\r' && c != '\x1A') || c == '\x7F')
+        return i;
+    }
+    return -1;
+  }
+
+  /// <summary>The OBJ statements this reader skips (grouping, materials, free-form geometry, display attributes).</summary>
+  static bool IsOtherStatement(ReadOnlySpan<char> keyword) => keyword switch
+  {
+    "vp" or "l" or "p" or "g" or "o" or "s" or "mg" or "usemtl" or "mtllib" or "usemap" or "maplib" or "cstype" or "deg"
+      or "bmat" or "step" or "curv" or "curv2" or "surf" or "parm" or "trim" or "hole" or "scrv" or "sp" or "end" or "con"
+      or "bevel" or "c_interp" or "d_interp" or "lod" or "shadow_obj" or "trace_obj" or "ctech" or "stech" or "call"
+      or "csh" => true,
+    _ => false,
+  };
 
   /// <summary>The scene vertex for a corner: the position's own vertex, or a copy when its attributes differ.</summary>
   static int Bind(SceneBrep scene, List<int> positions, List<(int vt, int vn)> bound,

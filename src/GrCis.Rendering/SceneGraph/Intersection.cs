@@ -114,6 +114,7 @@ public class Intersection : IComparable<Intersection>
       Textures = Solid.GetTextures();
 
       Solid.CompleteIntersection(this);
+      CompleteFrame();
       Normal.Normalize();
       if (Enter != Front)
         Normal = -Normal;
@@ -121,6 +122,27 @@ public class Intersection : IComparable<Intersection>
     BlackIfUncoloured();
     completed = true;
   }
+
+  /// <summary>
+  /// GrCis's completion contract (since May 2020) for what the solid's <c>CompleteIntersection</c> left zero:
+  /// no tangents — GrCis's tangents of <see cref="NormalLocal"/>; tangents but no local normal — their cross
+  /// product; no world normal — the cross product of the tangents carried to world space (the normal transform,
+  /// right under non-uniform scale too). A student's solid may fill only <see cref="NormalLocal"/> or only the
+  /// local tangents. The library's solids fill all three, so for them this changes nothing.
+  /// </summary>
+  void CompleteFrame()
+  {
+    if (IsZeroLength(TangentU))
+      MathSupport.Geometry.GetTangents(ref NormalLocal, out TangentU, out TangentV);
+    else if (IsZeroLength(NormalLocal))
+      NormalLocal = Vector3d.Cross(TangentU, TangentV);
+
+    if (IsZeroLength(Normal))
+      Normal = Vector3d.Cross(Vector3d.TransformVector(TangentU, LocalToWorld), Vector3d.TransformVector(TangentV, LocalToWorld));
+  }
+
+  /// <summary>GrCis's test of a vector left unset: length at most 1e-12.</summary>
+  static bool IsZeroLength(in Vector3d v) => v.LengthSquared <= 1.0e-24;
 
   /// <summary>The solid's RECURSION attribute resolved at prepare time (valid when <see cref="RecursionCached"/>).</summary>
   internal object? CachedRecursion;
@@ -192,6 +214,7 @@ public class Intersection : IComparable<Intersection>
     Textures = textures;
 
     Solid!.CompleteIntersection(this);
+    CompleteFrame();
     Normal.Normalize();
     if (Enter != Front)
       Normal = -Normal;

@@ -101,8 +101,8 @@ public class ImageTexture : ITexture
   {
     string? script = Utilities.DataFiles.ScriptDirectory;
     string where = Path.IsPathRooted(fileName) ? ""
-      : script != null ? $" (looked in {Environment.CurrentDirectory} and beside the script in {script})"
-      : $" (looked in {Environment.CurrentDirectory})";
+      : script != null ? $" (looked in {Environment.CurrentDirectory} and beside the script in {script}, in any letter case, and in the folders above as from GrCis's bin/Debug)"
+      : $" (looked in {Environment.CurrentDirectory}, in any letter case, and in the folders above as from GrCis's bin/Debug)";
     return new FileNotFoundException($"Image file not found: '{fileName}'{where}", fileName);
   }
 

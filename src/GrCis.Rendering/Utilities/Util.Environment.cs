@@ -68,6 +68,7 @@ public static partial class Util
   public static bool ReadTextFile(string filename, out string content)
   {
     content = string.Empty;
+    filename = DataFiles.Resolve(filename);
     if (!File.Exists(filename))
       return false;
     try

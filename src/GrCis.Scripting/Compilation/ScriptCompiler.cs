@@ -44,6 +44,13 @@ internal static class ScriptCompiler
 
   static int serial;
 
+  /// <summary>
+  /// Warnings about code that is right for its GrCis year: CS9191, a <c>ref</c> argument (OpenTK 3's
+  /// <c>Vector3d.Add(ref a, ref b, out c)</c>) for an <c>in</c> parameter (OpenTK 4's signature, which ours is).
+  /// </summary>
+  static readonly ImmutableDictionary<string, ReportDiagnostic> QuietWarnings =
+    ImmutableDictionary<string, ReportDiagnostic>.Empty.Add("CS9191", ReportDiagnostic.Suppress);
+
   public static CompiledScript CompileScript(string path, string source, string key, IReadOnlyList<ScriptModule> modules, bool optimize)
   {
     int nul = source.IndexOf('\0', StringComparison.Ordinal);
@@ -56,6 +63,13 @@ internal static class ScriptCompiler
       throw new ScriptCompilationException(path, new[] { new ScriptDiagnostic(path, 1, 1, "error", ScriptDiagnostic.EmptyScriptId,
         "the scene script is empty (only whitespace or comments); it must build the scene: set scene.Intersectable, scene.Camera, scene.Sources") });
     (tree, InstrumentedSource instrumented) = Instrument(tree, scriptParseOptions);
+    // A module type that shadows a library type of the same name is the one the script means.
+    InstrumentedSource aliased = ShadowedLibraryTypes.WithAliases(instrumented, modules);
+    if (!ReferenceEquals(aliased, instrumented))
+    {
+      instrumented = aliased;
+      tree = CSharpSyntaxTree.ParseText(instrumented.Instrumented, scriptParseOptions, path);
+    }
     var options = new CSharpCompilationOptions(
       OutputKind.DynamicallyLinkedLibrary,
       usings: ScriptImports(modules),
@@ -63,6 +77,7 @@ internal static class ScriptCompiler
       optimizationLevel: optimize ? OptimizationLevel.Release : OptimizationLevel.Debug,
       allowUnsafe: true,
       nullableContextOptions: NullableContextOptions.Disable,
+      specificDiagnosticOptions: QuietWarnings,
       concurrentBuild: false);
 
     string assemblyName = $"GrCisScript{Interlocked.Increment(ref serial)}_{key[..12]}";
@@ -75,6 +90,7 @@ internal static class ScriptCompiler
     compilation = DropMissingNamespaces(compilation, sources, scriptParseOptions, removed);
     var overrides = new List<OverrideAccess.Changed>();
     compilation = OverrideAccess.Normalize(compilation, sources, scriptParseOptions, overrides);
+    compilation = DataFileCalls.Rewrite(compilation, sources, scriptParseOptions);
     instrumented = sources.Values.Single();
     (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, path, sources, removed, overrides);
 
@@ -112,12 +128,15 @@ internal static class ScriptCompiler
       optimizationLevel: optimize ? OptimizationLevel.Release : OptimizationLevel.Debug,
       allowUnsafe: true,
       nullableContextOptions: NullableContextOptions.Disable,
+      specificDiagnosticOptions: QuietWarnings,
       concurrentBuild: false);
 
     // GrCis was written against OpenTK 3, whose math types live in namespace OpenTK: students write
     // `using OpenTK;`. Here they live in OpenTK.Mathematics (OpenTK 4), imported for every module file
     // as scripts import it; a file's own types still win over imported ones.
-    trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(ModuleImports, Encoding.UTF8), moduleParseOptions, "GrCisModuleImports.g.cs"));
+    // Types an earlier module compiled under a suffixed name (see ShadowedLibraryTypes) keep their plain name here too.
+    string imports = ModuleImports + string.Concat(earlier.SelectMany(m => m.Renamed).Select(r => "global " + r.Alias + "\n"));
+    trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(imports, Encoding.UTF8), moduleParseOptions, "GrCisModuleImports.g.cs"));
 
     string dirName = new string(Path.GetFileName(directory.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar))
       .Select(c => char.IsLetterOrDigit(c) ? c : '_').ToArray());
@@ -128,12 +147,16 @@ internal static class ScriptCompiler
     compilation = DropMissingNamespaces(compilation, instrumented, moduleParseOptions, removed);
     var overrides = new List<OverrideAccess.Changed>();
     compilation = OverrideAccess.Normalize(compilation, instrumented, moduleParseOptions, overrides);
+    compilation = DataFileCalls.Rewrite(compilation, instrumented, moduleParseOptions);
+    var shadowed = new List<ShadowedLibraryTypes.Renamed>();
+    compilation = ShadowedLibraryTypes.Rename(compilation, instrumented, moduleParseOptions, shadowed);
     (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides);
+    warnings.AddRange(ShadowedLibraryTypes.Report(shadowed));
     byte[] image = pe.ToArray();
     var context = new ScriptLoadContext(assemblyName, ModuleMap(earlier));
     Assembly assembly = context.LoadFromStream(new MemoryStream(image), pdb);
     return new ScriptModule(directories, files, hash, assembly, MetadataReference.CreateFromImage(image), context, warnings,
-      instrumented.ToDictionary(kv => kv.Key.FilePath, kv => kv.Value, StringComparer.Ordinal));
+      instrumented.ToDictionary(kv => kv.Key.FilePath, kv => kv.Value, StringComparer.Ordinal)) { Renamed = shadowed };
   }
 
   /// <summary>The user's tree with interruption points inserted (see <see cref="InterruptionPoints"/>), parsed again, and the way back to the original.</summary>

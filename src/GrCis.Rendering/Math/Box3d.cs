@@ -1,0 +1,91 @@
+using System;
+using System.Globalization;
+
+namespace OpenTK.Mathematics;
+
+/// <summary>
+/// OpenTK 4's axis-aligned 3D box of doubles, kept ordered: the constructor sorts each axis, and setting
+/// <see cref="Min"/> above <see cref="Max"/> (or Max below Min) drags the other corner along.
+/// </summary>
+[Serializable]
+public struct Box3d : IEquatable<Box3d>, IFormattable
+{
+  Vector3d min, max;
+
+  public Box3d(Vector3d min, Vector3d max)
+  {
+    this.min = Vector3d.ComponentMin(min, max);
+    this.max = Vector3d.ComponentMax(min, max);
+  }
+
+  public Box3d(double minX, double minY, double minZ, double maxX, double maxY, double maxZ)
+    : this(new Vector3d(minX, minY, minZ), new Vector3d(maxX, maxY, maxZ))
+  {
+  }
+
+  public Vector3d Min
+  {
+    readonly get => min;
+    set { if (value.X > max.X) max.X = value.X; if (value.Y > max.Y) max.Y = value.Y; if (value.Z > max.Z) max.Z = value.Z; min = value; }
+  }
+
+  public Vector3d Max
+  {
+    readonly get => max;
+    set { if (value.X < min.X) min.X = value.X; if (value.Y < min.Y) min.Y = value.Y; if (value.Z < min.Z) min.Z = value.Z; max = value; }
+  }
+
+  /// <summary>Max − Min; setting it keeps the centre.</summary>
+  public Vector3d Size
+  {
+    readonly get => max - min;
+    set { Vector3d c = Center; min = c - value * 0.5; max = c + value * 0.5; }
+  }
+
+  public Vector3d HalfSize { readonly get => Size / 2; set => Size = value * 2; }
+  public Vector3d Center { readonly get => HalfSize + min; set => Translate(value - Center); }
+
+  /// <summary>Strictly inside (boundary excluded), as OpenTK's obsolete one-argument form.</summary>
+  public readonly bool Contains(Vector3d point) => ContainsExclusive(point);
+  public readonly bool ContainsInclusive(Vector3d point) => min.X <= point.X && point.X <= max.X && min.Y <= point.Y && point.Y <= max.Y && min.Z <= point.Z && point.Z <= max.Z;
+  public readonly bool ContainsExclusive(Vector3d point) => min.X < point.X && point.X < max.X && min.Y < point.Y && point.Y < max.Y && min.Z < point.Z && point.Z < max.Z;
+  public readonly bool Contains(Vector3d point, bool boundaryInclusive) => boundaryInclusive ? ContainsInclusive(point) : ContainsExclusive(point);
+  /// <summary>Whether the boxes overlap (touching counts), despite the name.</summary>
+  public readonly bool Contains(Box3d other) => max.X >= other.min.X && min.X <= other.max.X && max.Y >= other.min.Y && min.Y <= other.max.Y && max.Z >= other.min.Z && min.Z <= other.max.Z;
+
+  /// <summary>The distance from <paramref name="point"/> to the box, 0 inside.</summary>
+  public readonly double DistanceToNearestEdge(Vector3d point) =>
+    new Vector3d(Math.Max(0.0, Math.Max(min.X - point.X, point.X - max.X)), Math.Max(0.0, Math.Max(min.Y - point.Y, point.Y - max.Y)), Math.Max(0.0, Math.Max(min.Z - point.Z, point.Z - max.Z))).Length;
+
+  public void Translate(Vector3d distance) { min += distance; max += distance; }
+  public readonly Box3d Translated(Vector3d distance) { Box3d b = this; b.Translate(distance); return b; }
+  /// <summary>Scales the corners' offsets from <paramref name="anchor"/> by <paramref name="scale"/>.</summary>
+  public void Scale(Vector3d scale, Vector3d anchor) { min = anchor + (min - anchor) * scale; max = anchor + (max - anchor) * scale; }
+  public readonly Box3d Scaled(Vector3d scale, Vector3d anchor) { Box3d b = this; b.Scale(scale, anchor); return b; }
+
+  /// <summary>Grows each side by <paramref name="size"/>; a negative size shrinks, at most to the centre.</summary>
+  public void Inflate(Vector3d size)
+  {
+    size = Vector3d.ComponentMax(size, -HalfSize);
+    Vector3d lo = min - size, hi = max + size;
+    min = Vector3d.ComponentMin(lo, hi);
+    max = Vector3d.ComponentMax(lo, hi);
+  }
+
+  public readonly Box3d Inflated(Vector3d size) { Box3d b = this; b.Inflate(size); return b; }
+  /// <summary>Grows the box just enough to hold <paramref name="point"/>.</summary>
+  public void Extend(Vector3d point) { min = Vector3d.ComponentMin(min, point); max = Vector3d.ComponentMax(max, point); }
+  public readonly Box3d Extended(Vector3d point) { Box3d b = this; b.Extend(point); return b; }
+
+  public static bool operator ==(Box3d left, Box3d right) => left.Equals(right);
+  public static bool operator !=(Box3d left, Box3d right) => !left.Equals(right);
+  public readonly bool Equals(Box3d other) => min.Equals(other.min) && max.Equals(other.max);
+  public override readonly bool Equals(object? obj) => obj is Box3d b && Equals(b);
+  public override readonly int GetHashCode() => HashCode.Combine(min, max);
+  public override readonly string ToString() => ToString(null, null);
+  public readonly string ToString(string? format) => ToString(format, null);
+  public readonly string ToString(IFormatProvider? formatProvider) => ToString(null, formatProvider);
+  /// <summary>"min - max"; the corners are written as their vectors write themselves.</summary>
+  public readonly string ToString(string? format, IFormatProvider? formatProvider) =>
+    string.Format(formatProvider ?? CultureInfo.CurrentCulture, "{0} - {1}", min, max);
+}
