@@ -289,8 +289,10 @@ public sealed class DemoController : IDisposable
         // On the UI context when one is set, so history and the display change together.
         LastResult = e.Result;
         History.Add(RenderRecord.From(e.Result));
+        // A script's or module's error already names its place (file(line,col): runtime error: …), as grcis prints it.
         if (e.Result.Error != null)
-          Error?.Invoke(this, $"Rendering failed: {e.Result.Error.Message}");
+          Error?.Invoke(this, e.Result.Error is GrCis.Scripting.ScriptRuntimeException located
+            ? located.Message : $"Rendering failed: {e.Result.Error.Message}");
         RenderCompleted?.Invoke(this, e);
       };
       s.Start();

@@ -18,6 +18,9 @@ public sealed class ScriptDiagnostic
   /// <summary>Id of the warning about a module type that has the full name of a library type (the module's wins).</summary>
   public const string ShadowedLibraryTypeId = "GRCIS007";
 
+  /// <summary>Id of the error about a module's <c>partial</c> class that would add to a library class.</summary>
+  public const string PartialLibraryTypeId = "GRCIS008";
+
   public ScriptDiagnostic(string path, int line, int column, string severity, string id, string message)
   {
     Path = path;

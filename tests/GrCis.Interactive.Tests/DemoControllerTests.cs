@@ -76,4 +76,33 @@ public class DemoControllerTests
     Assert.Null(await demo.RenderAsync());
     Assert.Contains("Bad.cs", error);
   }
+  [Fact]
+  public async Task A_script_class_that_throws_while_rendering_is_reported_with_its_file_and_line_as_grcis_reports_it()
+  {
+    using var tmp = new TempDir();
+    string path = tmp.File("Throws.cs");
+    File.WriteAllText(path, """
+      scene.Intersectable = new Sphere();
+      scene.Camera = new StaticCamera(new Vector3d(0, 0, -5), new Vector3d(0, 0, 1), 40);
+      scene.Sources = new List<ILightSource> { new PointLightSource(new Vector3d(-5, 5, -5), 1.0) };
+      context[PropertyName.CTX_ALGORITHM] = new Failing();
+
+      class Failing : RayTracing
+      {
+        public override long GetSample (double x, double y, double[] color) =>
+          throw new InvalidOperationException("homework not finished");
+      }
+      """);
+    using var host = new GrCis.Scripting.ScriptHost();
+    var catalog = new SceneCatalog(host);
+    using var demo = new DemoController(catalog) { Settings = new RenderSettings { Width = 8, Height = 6 } };
+    demo.Selected = catalog.AddScriptFile(path);
+    string? error = null;
+    demo.Error += (_, m) => error = m;
+
+    RenderResult r = (await demo.RenderAsync())!;
+
+    Assert.False(r.Succeeded);
+    Assert.Equal($"{path}(9,5): runtime error: InvalidOperationException: homework not finished", error);
+  }
 }

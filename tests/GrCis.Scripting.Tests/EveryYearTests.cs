@@ -408,4 +408,25 @@ public sealed class EveryYearTests : IDisposable
     ScriptDiagnostic error = Assert.Single(ex.Diagnostics, d => d.IsError);
     Assert.Equal((1, 39), (error.Line, error.Column));
   }
+  [Fact]
+  public void A_module_adding_to_a_library_class_with_partial_is_told_why_it_cannot()
+  {
+    // A student's OBJ loader of 2020 added methods to GrCis's SceneBrep, which its project compiled in.
+    string dir = Path.Combine(scratch.Path, "objloader");
+    Write("objloader/ObjLoader.cs", """
+      namespace Scene3D
+      {
+        public partial class SceneBrep
+        {
+          public int LoadObj (string file) { BuildCornerTable(); return 0; }
+        }
+      }
+      """);
+    var ex = Assert.Throws<ScriptCompilationException>(() => host.AddModule(dir));
+    ScriptDiagnostic first = ex.Diagnostics[0];
+    Assert.Equal((ScriptDiagnostic.PartialLibraryTypeId, 3, 24), (first.Id, first.Line, first.Column));
+    Assert.Contains("'Scene3D.SceneBrep' adds to a class of the library", first.Message);
+    // The library's SceneBrep is not renamed or shadowed by the failed attempt.
+    Assert.Empty(host.Modules);
+  }
 }

@@ -5,8 +5,9 @@ namespace GrCis.Hosting;
 
 /// <summary>
 /// Wraps the job's renderer for <see cref="Rendering.Execution.TileRenderer"/>: each pixel is computed
-/// by the inner renderer exactly as usual, and also copied into the live preview buffer. The pixels the
-/// coarse pass rendered exactly (a block's top-left pixel) are taken from the buffer instead.
+/// by the inner renderer exactly as usual (through its own RenderRectangle when it overrides that), and also
+/// copied into the live preview buffer. The pixels the coarse pass rendered exactly (a block's top-left
+/// pixel) are taken from the buffer instead.
 /// </summary>
 internal sealed class PreviewSynthesizer : ImageSynthesizer
 {
@@ -27,6 +28,27 @@ internal sealed class PreviewSynthesizer : ImageSynthesizer
     Height = inner.Height;
     Gamma = inner.Gamma;
     Adaptive = inner.Adaptive;
+    innerRectangles = Overrides(inner.GetType(), nameof(RenderRectangle), [typeof(FloatImage), typeof(int), typeof(int), typeof(int), typeof(int)]);
+  }
+
+  /// <summary>The inner renderer renders its rectangles its own way (a subclass overrides RenderRectangle).</summary>
+  readonly bool innerRectangles;
+
+  public override void RenderRectangle(FloatImage image, int x1, int y1, int x2, int y2)
+  {
+    if (!innerRectangles)
+    {
+      base.RenderRectangle(image, x1, y1, x2, y2);
+      return;
+    }
+    inner.RenderRectangle(image, x1, y1, x2, y2);
+    var color = new double[image.Bands];
+    for (int y = y1; y < y2; y++)
+      for (int x = x1; x < x2; x++)
+      {
+        image.GetPixel(x, y, color);
+        preview.SetPixel(x, y, color);
+      }
   }
 
   public override int SamplesPerPixel => inner.SamplesPerPixel;
@@ -41,7 +63,7 @@ internal sealed class PreviewSynthesizer : ImageSynthesizer
         color[b] = preview.Data[p + b];
       return;
     }
-    inner.RenderPixelLinear(x, y, color);
+    inner.PixelLinear(x, y, color);
     preview.SetPixel(x, y, color);
   }
 }

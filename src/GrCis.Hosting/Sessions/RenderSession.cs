@@ -246,7 +246,7 @@ public sealed class RenderSession : IDisposable
         {
           for (int x0 = 0; x0 < w; x0 += block)
           {
-            renderer.RenderPixelLinear(x0, y0, color);
+            renderer.PixelLinear(x0, y0, color);
             int x1 = Math.Min(x0 + block, w);
             for (int y = y0; y < y1; y++)
               for (int x = x0; x < x1; x++)

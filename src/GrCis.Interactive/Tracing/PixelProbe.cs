@@ -42,7 +42,7 @@ public static class PixelProbe
       else
       {
         pixel = new double[bands];
-        job.Renderer.RenderPixelLinear(x, y, pixel);
+        job.Renderer.PixelLinear(x, y, pixel);   // a GrCis-style RenderPixel override too
       }
 
       // One sample through the pixel centre, seeded as the renderer seeds the pixel.

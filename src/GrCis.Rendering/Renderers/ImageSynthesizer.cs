@@ -29,10 +29,53 @@ public abstract class ImageSynthesizer : IRenderer
   /// <summary>Samples per pixel this synthesizer takes at most.</summary>
   public abstract int SamplesPerPixel { get; }
 
-  public void RenderPixel(int x, int y, double[] color)
+  /// <summary>
+  /// Display colour of one pixel (gamma applied, clamped). GrCis's renderers override this (it was virtual
+  /// in every GrCis year); a renderer written here overrides <see cref="RenderPixelLinear"/> instead. When a
+  /// class overrides this, the library takes its pixels from here (<see cref="PixelLinear"/>), as GrCis did.
+  /// </summary>
+  public virtual void RenderPixel(int x, int y, double[] color)
   {
     RenderPixelLinear(x, y, color);
     ApplyGamma(color, Gamma);
+  }
+
+  /// <summary>Whether this class overrides <see cref="RenderPixel"/> (a renderer written against GrCis).</summary>
+  readonly bool displayPixels;
+
+  protected ImageSynthesizer() => displayPixels = Overrides(GetType(), nameof(RenderPixel), [typeof(int), typeof(int), typeof(double[])]);
+
+  /// <summary>Whether <paramref name="type"/> overrides this class's virtual method <paramref name="name"/> (not merely hides it).</summary>
+  protected static bool Overrides(Type type, string name, Type[] parameters)
+  {
+    ArgumentNullException.ThrowIfNull(type);
+    System.Reflection.MethodInfo? m = type.GetMethod(name, parameters);
+    return m != null && m.DeclaringType != typeof(ImageSynthesizer) && m.GetBaseDefinition().DeclaringType == typeof(ImageSynthesizer);
+  }
+
+  /// <summary>
+  /// The linear colour of pixel (x, y), as the library's loops take it: <see cref="RenderPixelLinear"/>, or, for a
+  /// class that overrides <see cref="RenderPixel"/>, its display colour with the gamma taken back off
+  /// (<see cref="RemoveGamma"/>), so the image shows exactly what that override returned.
+  /// </summary>
+  public void PixelLinear(int x, int y, double[] color)
+  {
+    if (!displayPixels)
+    {
+      RenderPixelLinear(x, y, color);
+      return;
+    }
+    RenderPixel(x, y, color);
+    RemoveGamma(color, Gamma);
+  }
+
+  /// <summary>c ← max(c, 0)^gamma: the inverse of <see cref="ApplyGamma"/> on [0, 1]; gamma ≤ 0.001 leaves the colour as it is.</summary>
+  public static void RemoveGamma(Span<double> color, double gamma)
+  {
+    if (gamma <= 0.001)
+      return;
+    for (int b = 0; b < color.Length; b++)
+      color[b] = color[b] > 0.0 ? Math.Pow(color[b], gamma) : 0.0;   // negative or NaN → black, as ApplyGamma
   }
 
   /// <summary>c ← clamp(c^(1/gamma), 0, 1); gamma ≤ 0.001 leaves the colour linear.</summary>
@@ -45,7 +88,11 @@ public abstract class ImageSynthesizer : IRenderer
       color[b] = color[b] > 0.0 ? Math.Min(Math.Pow(color[b], inv), 1.0) : 0.0;   // negative or NaN → black
   }
 
-  public void RenderRectangle(FloatImage image, int x1, int y1, int x2, int y2)
+  /// <summary>
+  /// Renders pixels [x1, x2) × [y1, y2) into <paramref name="image"/> (linear colours), row by row through
+  /// <see cref="PixelLinear"/>. Virtual as in GrCis; an override must be re-entrant (threads share the renderer).
+  /// </summary>
+  public virtual void RenderRectangle(FloatImage image, int x1, int y1, int x2, int y2)
   {
     ArgumentNullException.ThrowIfNull(image);
     double[] color = new double[image.Bands];
@@ -55,7 +102,7 @@ public abstract class ImageSynthesizer : IRenderer
         return;
       for (int x = x1; x < x2; x++)
       {
-        RenderPixelLinear(x, y, color);
+        PixelLinear(x, y, color);
         image.SetPixel(x, y, color);
       }
     }

@@ -10,8 +10,9 @@ namespace Rendering;
 /// different n-ths of the column's width, and those of one row different n-ths of its height, so the samples'
 /// x and y alone are each stratified into n² strata too. An edge along either axis (a light's border, a wall)
 /// is then antialiased to within 1/n² of its exact coverage, where plain jitter leaves errors of about 1/n.
+/// Derives from <see cref="SimpleImageSynthesizer"/> as in GrCis (code may hold it as one).
 /// </summary>
-public class SupersamplingImageSynthesizer : ImageSynthesizer
+public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
 {
   /// <summary>Samples per row and column of a pixel's grid.</summary>
   protected int superXY = 1;
@@ -37,7 +38,7 @@ public class SupersamplingImageSynthesizer : ImageSynthesizer
   /// <summary>Fraction of a grid cell the sample may move, 0 to 1.</summary>
   public double Jittering { get; set; } = 1.0;
 
-  public SupersamplingImageSynthesizer(int adaptive = 1) => Adaptive = adaptive;
+  public SupersamplingImageSynthesizer(int adaptive = 1) : base(adaptive) { }
 
   public override int SamplesPerPixel => Supersampling;
 

@@ -48,7 +48,7 @@ public class DefaultSceneNode : ISceneNode
 
   public ICollection<ISceneNode> Children { get; protected set; } = new LinkedList<ISceneNode>();
 
-  public ISceneNode? ObjectRoot { get; set; }
+  public bool ObjectRoot { get; set; }
 
   public virtual object? GetAttribute(string name)
   {
@@ -70,12 +70,12 @@ public class DefaultSceneNode : ISceneNode
   /// <summary>Local → world: <c>ToParent * Parent.ToWorld()</c>; the root's own space is the world.</summary>
   public virtual Matrix4d ToWorld() => Parent == null ? Matrix4d.Identity : ToParent * Parent.ToWorld();
 
-  /// <summary>Local → object root; the world when no object root is set.</summary>
+  /// <summary>Local → object space: the transforms up to the nearest node marked <see cref="ObjectRoot"/> (this one: identity), or up to the root.</summary>
   public virtual Matrix4d ToObject()
   {
     Matrix4d m = Matrix4d.Identity;
     ISceneNode? node = this;
-    while (node != null && node.Parent != null && node != ObjectRoot)
+    while (node != null && node.Parent != null && !node.ObjectRoot)
     {
       m *= node.ToParent;
       node = node.Parent;

@@ -7,10 +7,25 @@ public interface IRayScene
 {
   IIntersectable? Intersectable { get; set; }
 
-  /// <summary>Optional object that receives time first (see AnimatedRayScene).</summary>
-  ITimeDependent? Animator { get; set; }
+  /// <summary>
+  /// Optional object that receives time first (see AnimatedRayScene). GrCis added it on 2020-05-12; a scene
+  /// written before has none (null) and cannot take one.
+  /// </summary>
+  ITimeDependent? Animator
+  {
+    get => null;
+    set => OlderScene.Refuse(this, nameof(Animator), value);
+  }
 
-  IBackground? Background { get; set; }
+  /// <summary>
+  /// The colour of rays that hit nothing, or null for <see cref="BackgroundColor"/>. GrCis added it on
+  /// 2020-05-09; a scene written before uses its <see cref="BackgroundColor"/> (null) and cannot take one.
+  /// </summary>
+  IBackground? Background
+  {
+    get => null;
+    set => OlderScene.Refuse(this, nameof(Background), value);
+  }
 
   /// <summary>Plain background colour used when <see cref="Background"/> is null.</summary>
   double[]? BackgroundColor { get; set; }

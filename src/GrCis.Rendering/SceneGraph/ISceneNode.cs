@@ -16,8 +16,11 @@ public interface ISceneNode : IIntersectable
 
   ICollection<ISceneNode> Children { get; }
 
-  /// <summary>The nearest node up the hierarchy marked as an object root (for object-space texture coordinates).</summary>
-  ISceneNode? ObjectRoot { get; set; }
+  /// <summary>
+  /// Marks this node as an object root: its local space is the object space of the nodes below it
+  /// (<see cref="ToObject"/>, object-space texture coordinates). A flag in every GrCis year.
+  /// </summary>
+  bool ObjectRoot { get; set; }
 
   /// <summary>Attribute value, looking up the parents when this node has none.</summary>
   object? GetAttribute(string name);
@@ -29,7 +32,7 @@ public interface ISceneNode : IIntersectable
   /// <summary>Local → world transform.</summary>
   Matrix4d ToWorld();
 
-  /// <summary>Local → object-root transform.</summary>
+  /// <summary>Local → object transform: up to the nearest node marked <see cref="ObjectRoot"/> (this one: identity), or the root.</summary>
   Matrix4d ToObject();
 
   /// <summary>All textures that apply to this node, the outermost parent's first.</summary>

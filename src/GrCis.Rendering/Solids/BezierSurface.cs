@@ -20,8 +20,14 @@ public partial class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
   /// <summary>Exact surface normals (otherwise the flat normal of the piece that was hit).</summary>
   public bool PreciseNormals { get; set; }
 
-  /// <summary>Pieces are subdivided at least until their box's squared diagonal is below this or they are flat.</summary>
-  public static double Epsilon { get; set; } = 1.0e-3;
+  /// <summary>
+  /// Pieces are subdivided at least until their box's squared diagonal is below this or they are flat; one threshold
+  /// for all surfaces built afterwards, as in GrCis. Code sets it as <c>BezierSurface.Epsilon</c> (GrCis until May 2020,
+  /// static) or <c>surface.Epsilon</c> (since June 2020, an instance property setting the same threshold): a class cannot
+  /// have a static and an instance property of one name, so both are extension properties
+  /// (<see cref="BezierSurfaceStaticEpsilon"/>, <see cref="BezierSurfaceInstanceEpsilon"/>).
+  /// </summary>
+  internal static double SharedEpsilon { get; set; } = 1.0e-3;
 
   readonly int patchesK, patchesL;
   readonly Vector3d[][] control;   // per patch: 16 points, index 4·row + column
@@ -101,7 +107,7 @@ public partial class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
     pieces.Add(piece);
 
     double diag2 = (piece.Max - piece.Min).LengthSquared;
-    if (depth >= 16 || (depth >= 2 && (diag2 < Epsilon || Flatness(p) <= 0.02 * Math.Sqrt(diag2))))
+    if (depth >= 16 || (depth >= 2 && (diag2 < SharedEpsilon || Flatness(p) <= 0.02 * Math.Sqrt(diag2))))
       return index;
 
     // Halve along the longer parameter direction of the control net.

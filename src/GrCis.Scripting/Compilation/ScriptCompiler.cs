@@ -149,8 +149,9 @@ internal static class ScriptCompiler
     compilation = OverrideAccess.Normalize(compilation, instrumented, moduleParseOptions, overrides);
     compilation = DataFileCalls.Rewrite(compilation, instrumented, moduleParseOptions);
     var shadowed = new List<ShadowedLibraryTypes.Renamed>();
-    compilation = ShadowedLibraryTypes.Rename(compilation, instrumented, moduleParseOptions, shadowed);
-    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides);
+    var partials = new List<ScriptDiagnostic>();
+    compilation = ShadowedLibraryTypes.Rename(compilation, instrumented, moduleParseOptions, shadowed, partials);
+    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides, partials);
     warnings.AddRange(ShadowedLibraryTypes.Report(shadowed));
     byte[] image = pe.ToArray();
     var context = new ScriptLoadContext(assemblyName, ModuleMap(earlier));
@@ -192,7 +193,8 @@ internal static class ScriptCompiler
 
   static (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) Emit(
     CSharpCompilation compilation, string path, IReadOnlyDictionary<SyntaxTree, InstrumentedSource> sources,
-    IReadOnlyList<MissingNamespaces.Removed> removed, IReadOnlyList<OverrideAccess.Changed> overrides)
+    IReadOnlyList<MissingNamespaces.Removed> removed, IReadOnlyList<OverrideAccess.Changed> overrides,
+    IReadOnlyList<ScriptDiagnostic>? causes = null)
   {
     var pe = new MemoryStream();
     var pdb = new MemoryStream();
@@ -202,6 +204,9 @@ internal static class ScriptCompiler
     {
       // First what is gone, then the errors it causes.
       diagnostics.InsertRange(0, MissingNamespaces.Report(removed, compiled: false));
+      // What the compiler's own errors follow from comes first.
+      if (causes != null)
+        diagnostics.InsertRange(0, causes);
       diagnostics.AddRange(OverrideAccess.Report(overrides));
       throw new ScriptCompilationException(path, diagnostics);
     }

@@ -29,9 +29,14 @@ internal static class ShadowedLibraryTypes
     public string Alias => $"using {Name} = global::{FullName}{Suffix}; ";
   }
 
-  /// <summary>Renames the top-level public non-generic types of the module that a GrCis library assembly also declares.</summary>
+  /// <summary>
+  /// Renames the top-level public non-generic types of the module that a GrCis library assembly also declares.
+  /// A <c>partial</c> one meant to add members to the library's class (as a student's project, which compiled
+  /// GrCis's sources in, could): that cannot work across assemblies, so it is not renamed but explained in
+  /// <paramref name="partials"/>, an error to show when the module does not compile.
+  /// </summary>
   public static CSharpCompilation Rename(CSharpCompilation compilation, Dictionary<SyntaxTree, InstrumentedSource> sources,
-                                         CSharpParseOptions parseOptions, List<Renamed> renamed)
+                                         CSharpParseOptions parseOptions, List<Renamed> renamed, List<ScriptDiagnostic> partials)
   {
     List<IAssemblySymbol> libraries = compilation.References
       .Select(compilation.GetAssemblyOrModuleSymbol).OfType<IAssemblySymbol>()
@@ -48,6 +53,14 @@ internal static class ShadowedLibraryTypes
         if (!libraries.Any(a => a.GetTypeByMetadataName(fullName) is { DeclaredAccessibility: Accessibility.Public }) || !clashing.Add(type))
           continue;
         LinePosition at = source.Original.Lines.GetLinePosition(source.ToOriginal(declaration.Identifier.SpanStart));
+        if (type.DeclaringSyntaxReferences.Length > 1 || declaration.Modifiers.Any(SyntaxKind.PartialKeyword))
+        {
+          clashing.Remove(type);
+          partials.Add(new ScriptDiagnostic(tree.FilePath, at.Line + 1, at.Character + 1, "error", ScriptDiagnostic.PartialLibraryTypeId,
+            $"'partial' '{fullName}' adds to a class of the library, which a module cannot do (the library is compiled apart); " +
+            "put the new members in a class of the module's own (a subclass, or a static class of helpers)"));
+          continue;
+        }
         renamed.Add(new Renamed(tree.FilePath, at, fullName));
       }
     }

@@ -74,7 +74,7 @@ static class GrCisApi
         PropertyInfo? p = member == "Item" ? t.GetProperties(all).FirstOrDefault(x => x.GetIndexParameters().Length > 0) : t.GetProperty(member, all);
         if (p != null && p.GetAccessors(nonPublic: true).Any(Reachable))
           return true;
-        return t.GetEvent(member, all) != null;
+        return t.GetEvent(member, all) != null || ExtensionProperty(t, member);
 
       case "conversion":
         // "implicit int(MutableInt)": a conversion operator of that direction taking one value (declared here or on a base class).
@@ -90,6 +90,23 @@ static class GrCisApi
           : t.GetMethods(all).Where(m => m.Name == (e.Kind == "operator" ? operatorNames.GetValueOrDefault(name, name) : name));
         return candidates.Any(m => Reachable(m) && Matches(m.GetParameters(), parameters));
     }
+  }
+
+  /// <summary>
+  /// A C# extension property of <paramref name="t"/> named <paramref name="member"/> (static or instance), declared in a static
+  /// class of its namespace and assembly: code that imports the type's namespace reads it as the type's own.
+  /// </summary>
+  static bool ExtensionProperty(Type t, string member) =>
+    t.Assembly.GetExportedTypes().Any(c => c.IsAbstract && c.IsSealed && c.Namespace == t.Namespace && Extends(c, t) &&
+      c.GetMethods(BindingFlags.Public | BindingFlags.Static | BindingFlags.DeclaredOnly).Any(m =>
+        m.Name == "get_" + member && m.GetParameters() is var ps && (ps.Length == 0 || (ps.Length == 1 && ps[0].ParameterType == t))));
+
+  /// <summary>Whether static class <paramref name="c"/> has an <c>extension(T)</c> block for <paramref name="t"/> (the compiler's marker method).</summary>
+  static bool Extends(Type c, Type t)
+  {
+    const BindingFlags any = BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Static | BindingFlags.Instance | BindingFlags.DeclaredOnly;
+    return c.GetNestedTypes(any).SelectMany(g => g.GetNestedTypes(any)).SelectMany(m => m.GetMethods(any))
+      .Any(m => m.Name == "<Extension>$" && m.GetParameters() is [var p] && p.ParameterType == t);
   }
 
   /// <summary>Same count, and a by-reference parameter where GrCis has <c>ref</c> or <c>out</c> (an <c>in</c> or a value parameter both take a value).</summary>

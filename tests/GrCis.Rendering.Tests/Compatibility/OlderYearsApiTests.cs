@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using MathSupport;
 using Rendering;
@@ -44,5 +45,40 @@ public class OlderYearsApiTests
     Assert.Same(Scenes.staticRepository, Scenes.Repository);
     Assert.IsType<InitSceneDelegate>(Scenes.Repository["Five balls"]);
     Assert.IsType<InitSceneParamDelegate>(Scenes.Repository["Sphere flake"]);
+  }
+
+  [Fact]
+  public void BezierSurface_Epsilon_static_until_2020_and_per_surface_since_set_one_shared_threshold()
+  {
+    double old = BezierSurface.Epsilon;
+    // The next double up: a distinct value that subdivides every surface exactly as the old one, so tests running alongside see no change.
+    double other = Math.BitIncrement(old);
+    var surface = new BezierSurface(1, 1, FlatPatch());
+    try
+    {
+      BezierSurface.Epsilon = other;          // GrCis until May 2020
+      Assert.Equal(other, surface.Epsilon);
+      surface.Epsilon = old;                  // GrCis since June 2020
+      Assert.Equal(old, BezierSurface.Epsilon);
+      var initialized = new BezierSurface(1, 1, FlatPatch()) { Epsilon = other };
+      Assert.Equal(other, BezierSurface.Epsilon);
+      Assert.Equal(other, initialized.Epsilon);
+    }
+    finally
+    {
+      BezierSurface.Epsilon = old;
+    }
+  }
+
+  /// <summary>One flat bicubic patch over [0, 3]².</summary>
+  static double[] FlatPatch()
+  {
+    var net = new double[16 * 3];
+    for (int i = 0; i < 16; i++)
+    {
+      net[3 * i] = i % 4;
+      net[3 * i + 1] = i / 4;
+    }
+    return net;
   }
 }
