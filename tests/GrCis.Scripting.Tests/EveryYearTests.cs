@@ -12,19 +12,8 @@ namespace GrCis.Scripting.Tests;
 /// context GrCis filled before every call, overrides with another year's access, modules built as a Debug
 /// project built them (DEBUG, TRACE, one assembly), and runtime errors that name the module line.
 /// </summary>
-public sealed class EveryYearTests : IDisposable
+public sealed class EveryYearTests() : ScratchScriptTests("grcis-years-")
 {
-  readonly ScratchFolder scratch = new("grcis-years-");
-  readonly ScriptHost host = new();
-
-  public void Dispose()
-  {
-    host.Dispose();
-    scratch.Dispose();
-  }
-
-  string Write(string relative, string text) => scratch.Write(relative, text);
-
   [Fact]
   public void A_March_2018_script_fills_sc_and_a_2018_to_2020_script_writes_outParam_and_reads_sceneName()
   {

@@ -11,19 +11,8 @@ namespace GrCis.Scripting.Tests;
 /// <c>BezierSurface.Epsilon</c> static (until May 2020) and per surface (since June 2020), interface members
 /// an older class lacks, renderers that override <c>RenderPixel</c>.
 /// </summary>
-public sealed class OlderFormsTests : IDisposable
+public sealed class OlderFormsTests() : ScratchScriptTests("grcis-oldforms-")
 {
-  readonly ScratchFolder scratch = new("grcis-oldforms-");
-  readonly ScriptHost host = new();
-
-  public void Dispose()
-  {
-    host.Dispose();
-    scratch.Dispose();
-  }
-
-  string Write(string relative, string text) => scratch.Write(relative, text);
-
   // One bicubic patch, flat in z = 0, over [0, 3] × [0, 3].
   const string FlatPatch = """
     double[] net = new double[16 * 3];
