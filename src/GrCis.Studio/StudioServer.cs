@@ -122,7 +122,7 @@ public sealed class StudioServer : IAsyncDisposable
 
   public async ValueTask DisposeAsync()
   {
-    Session.Controller.Stop();
+    Session.Stop();
     await app.StopAsync().ConfigureAwait(false);
     await app.DisposeAsync().ConfigureAwait(false);
     Session.Dispose();

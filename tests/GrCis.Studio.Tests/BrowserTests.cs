@@ -191,4 +191,47 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     ScriptValuesShown();
     Shot(browser, "studio-script-values.png");
   }
+
+  [SkippableFact]
+  public void Saving_a_script_that_is_not_rendered_shows_compiling_then_its_errors()
+  {
+    string path = Path.Combine(studio.ScriptsFolder, "Edited.cs");
+    File.WriteAllText(path, "Rendering.Scenes.FiveBalls(scene);\n");
+    string marker = Path.Combine(studio.Folder, "browser-stuck").Replace("\\", "/", StringComparison.Ordinal);
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    browser.FindElement(By.Id("open")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#files option")).Count > 0, "the file picker");
+    Js(browser, "document.getElementById('files').value = arguments[0];", path);
+    browser.FindElement(By.Id("add")).Click();
+    Until(browser, () => browser.FindElement(By.Id("edit")).Displayed, "the Edit button of the added script");
+    browser.FindElement(By.Id("edit")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
+    string Phase() => browser.FindElement(By.Id("phase")).Text;
+    void SaveText(string text)
+    {
+      Js(browser, "document.querySelector('#editor .CodeMirror').CodeMirror.setValue(arguments[0]);", text);
+      browser.FindElement(By.Id("save")).Click();
+    }
+
+    // A script that is slow to build: the page says so, and Stop ends it.
+    SaveText(StuckScripts.WhileBuilding(marker));
+    Until(browser, () => File.Exists(marker) && Phase() == "compiling the script…" && browser.FindElement(By.Id("stop")).Enabled,
+          "the compiling state");
+    browser.FindElement(By.Id("stop")).Click();
+    Until(browser, () => Phase() == "" && !browser.FindElement(By.Id("stop")).Enabled, "idle after Stop");
+
+    // A typo: marked at its line, though the script is not the one rendered.
+    SaveText("// edited\n// here\nRendering.Scenes.FiveBals(scene);\n");
+    Until(browser, () => browser.FindElements(By.CssSelector("#diagnostics li")).Count > 0, "the diagnostics");
+    IWebElement error = browser.FindElement(By.CssSelector("#diagnostics li"));
+    Assert.Equal("3", error.GetAttribute("data-line"));
+    Assert.Contains("CS0117", error.Text);
+
+    SaveText("Rendering.Scenes.FiveBalls(scene);\n");
+    Until(browser, () => browser.FindElements(By.CssSelector("#diagnostics li")).Count == 0 &&
+                         browser.FindElement(By.Id("messages")).Text == "Edited.cs compiles; Render shows it", "the fixed script compiled");
+    browser.FindElement(By.Id("closeEditor")).Click();
+  }
 }

@@ -53,8 +53,8 @@ internal static class StudioApi
     app.MapPost("/api/scene/values", (SceneBody body, StudioSession s, AllowedFiles files) => ScriptValues(body, s, files));
     app.MapPost("/api/stop", (StudioSession s) =>
     {
-      // Whatever runs: the script being built, the render, and an animation.
-      s.Controller.Stop();
+      // Whatever runs: the script being built, the render, a saved script being compiled, and an animation.
+      s.Stop();
       s.Animation?.Stop();
       return Results.NoContent();
     });
@@ -91,8 +91,12 @@ internal static class StudioApi
         return Results.StatusCode(StatusCodes.Status403Forbidden);
       using var reader = new StreamReader(request.Body, System.Text.Encoding.UTF8);
       SaveAtomically(real, await reader.ReadToEndAsync());
-      // The script's watcher re-renders it (as for a save from any other editor).
-      return Results.NoContent();
+      // The selected script's watcher re-renders it (as for a save from any other editor): 204. Any other script is
+      // compiled here, so its diagnostics show too: 202, and /api/status says compiling until they are known.
+      if (IsWatched(s.Controller, entry))
+        return Results.NoContent();
+      s.Check(entry);
+      return Results.Accepted();
     });
     app.MapGet("/api/file", (string path, AllowedFiles files) =>
       files.Resolve(path) is not string real ? Results.StatusCode(StatusCodes.Status403Forbidden)
@@ -249,6 +253,11 @@ internal static class StudioApi
     blocked = n.Blocked,
     children = n.Children.Select(RayJson).ToArray(),
   };
+
+  /// <summary>Whether the controller's watcher follows <paramref name="entry"/>'s file (the selected script's).</summary>
+  static bool IsWatched(DemoController controller, SceneEntry entry) =>
+    controller.WatchScript && controller.Selected?.Path is string watched && entry.Path != null &&
+    string.Equals(Path.GetFullPath(watched), Path.GetFullPath(entry.Path), StringComparison.Ordinal);
 
   /// <summary>Writes the whole text to a temporary file beside <paramref name="path"/>, then moves it over: never half a script.</summary>
   static void SaveAtomically(string path, string text)

@@ -20,8 +20,12 @@ const rangeGiven = new Set();
 let pageError = "";
 function showError(message) {
   pageError = message;
+  pageNote = "";
   $("messages").textContent = message;
 }
+// A saved script that is not the one rendered is compiled by the studio: its name until the result is known, then a note.
+let compilingSave = null, pageNote = "";
+const phaseText = { compiling: "compiling the script…", rendering: "rendering…", idle: "" };
 
 async function api(path, options) {
   const r = await fetch("api/" + path, options);
@@ -169,16 +173,23 @@ async function poll() {
   $("stats").textContent = s.statistics || (s.samples != null
     ? `${s.samples} spp so far` + (s.noise != null ? `, noise ${s.noise.toPrecision(3)} RMSE` : "")
     : "");
-  $("messages").textContent = [...s.notes, s.error, pageError].filter(Boolean).join("\n");
+  // The first compile of a script takes seconds: say so, not a still page.
+  $("phase").textContent = phaseText[s.phase] ?? s.phase;
+  $("phase").dataset.phase = s.phase;
+  if (compilingSave && s.phase === "idle") {
+    if (!s.error && s.diagnostics.length === 0) pageNote = `${compilingSave} compiles; Render shows it`;
+    compilingSave = null;
+  }
+  $("messages").textContent = [...s.notes, s.error, pageError, pageNote].filter(Boolean).join("\n");
   showDiagnostics(s.diagnostics);
-  $("stop").disabled = !s.rendering;
+  $("stop").disabled = s.phase === "idle";
   if (s.version !== shownVersion && s.version > 0) await showImage(s.version);
   // The history once per finished image (the image fetched may already be newer than the status that asked for it).
   if (!s.rendering && s.version > 0 && s.version !== historyFor) {
     historyFor = s.version;
     await loadHistory();
   }
-  return s.rendering;
+  return s.phase !== "idle";
 }
 
 function showDiagnostics(list) {
@@ -265,10 +276,12 @@ async function openEditor() {
 async function save() {
   if (!editor || !editedScene) return;
   try {
-    await api("source?scene=" + encodeURIComponent(editedScene), {
+    const r = await api("source?scene=" + encodeURIComponent(editedScene), {
       method: "PUT", headers: { "Content-Type": "text/plain; charset=utf-8" }, body: editor.getValue(),
     });
     showError("");
+    // 204: the rendered script, which the studio re-renders; 202: another script, which it compiles.
+    if (r.status === 202) compilingSave = $("editorName").textContent;
     $("messages").textContent = "saved; compiling…";
   } catch (e) {
     showError(e.message);
