@@ -100,6 +100,54 @@ public sealed class EditorTests(StudioFixture studio) : IClassFixture<StudioFixt
   }
 
   [Fact]
+  public async Task The_editor_learns_of_a_change_on_disk_and_its_save_never_replaces_a_text_it_has_not_seen()
+  {
+    string file = Path.Combine(studio.ScriptsFolder, "Balls.cs");
+    File.WriteAllText(file, Good);
+    using HttpResponseMessage loaded = await studio.Client.GetAsync("/api/source?scene=Balls");
+    string loadedTag = loaded.Headers.ETag!.Tag;
+    using (var same = new HttpRequestMessage(HttpMethod.Get, "/api/source?scene=Balls"))
+    {
+      same.Headers.TryAddWithoutValidation("If-None-Match", loadedTag);
+      using HttpResponseMessage unchanged = await studio.Client.SendAsync(same);
+      Assert.Equal(HttpStatusCode.NotModified, unchanged.StatusCode);
+    }
+
+    const string Outside = "// changed by another editor\nRendering.Scenes.FiveBalls(scene);\n";
+    File.WriteAllText(file, Outside);
+    string diskTag;
+    using (var again = new HttpRequestMessage(HttpMethod.Get, "/api/source?scene=Balls"))
+    {
+      again.Headers.TryAddWithoutValidation("If-None-Match", loadedTag);
+      using HttpResponseMessage changed = await studio.Client.SendAsync(again);
+      Assert.Equal(HttpStatusCode.OK, changed.StatusCode);
+      Assert.Equal(Outside, await changed.Content.ReadAsStringAsync());
+      diskTag = changed.Headers.ETag!.Tag;
+      Assert.NotEqual(loadedTag, diskTag);
+    }
+
+    // A save from the text loaded before the change is refused, and the file keeps the other editor's text.
+    HttpRequestMessage Put(string tag) => new(HttpMethod.Put, "/api/source?scene=Balls")
+    {
+      Content = new StringContent(Good, Encoding.UTF8, "text/plain"),
+      Headers = { { "If-Match", tag } },
+    };
+    using (HttpResponseMessage stale = await studio.Client.SendAsync(Put(loadedTag)))
+    {
+      Assert.Equal(HttpStatusCode.PreconditionFailed, stale.StatusCode);
+      Assert.Contains("changed on disk", await stale.Content.ReadAsStringAsync());
+    }
+    Assert.Equal(Outside, File.ReadAllText(file));
+
+    // From the disk's text (reloaded, or kept knowingly) it saves, and answers the new version.
+    using HttpResponseMessage saved = await studio.Client.SendAsync(Put(diskTag));
+    Assert.True(saved.IsSuccessStatusCode, saved.StatusCode.ToString());
+    Assert.Equal(Good, File.ReadAllText(file));
+    using HttpResponseMessage now = await studio.Client.GetAsync("/api/source?scene=Balls");
+    Assert.Equal(now.Headers.ETag!.Tag, saved.Headers.ETag!.Tag);
+  }
+
+  [Fact]
   public async Task A_save_by_another_editor_re_renders()
   {
     await studio.RenderAndWait(new { scene = "Balls", settings = new { width = 32, height = 24 } });
