@@ -199,6 +199,7 @@ public sealed class StudioSession : IDisposable
                               Controller.Algorithm is RenderAlgorithm a ? RenderAlgorithmNames.Name(a) : null)
       {
         Phase = Phase(),
+        Tab = Tab,
         Progressive = Controller.Progressive,
         Samples = samples,
         Noise = noise,
@@ -225,6 +226,20 @@ public sealed class StudioSession : IDisposable
   /// <summary>Computes the depth, normal and ray maps of the last render.</summary>
   /// <exception cref="InvalidOperationException">Nothing rendered yet, or a render is running.</exception>
   public ExtraViews ComputeViews(System.Threading.CancellationToken cancel) => Views = Controller.ComputeExtraViews(cancel);
+
+  /// <summary>The page (browser tab) that asked for the work on show: one studio serves one render, so a tab whose own is
+  /// replaced by another's says so (<see cref="StudioStatus.Tab"/>). Null = none named (a script saved by another editor).</summary>
+  public string? Tab { get; private set; }
+
+  /// <summary>The header in which a page names itself (a random id per page load).</summary>
+  public const string TabHeader = "X-GrCis-Tab";
+
+  /// <summary>Records the tab of a request that starts work, from its <see cref="TabHeader"/> (ignored when absent or too long).</summary>
+  public void ActedFor(Microsoft.AspNetCore.Http.HttpRequest request)
+  {
+    string? tab = request.Headers[TabHeader];
+    Tab = string.IsNullOrEmpty(tab) || tab.Length > 64 ? null : tab;
+  }
 
   /// <summary>The last animation run, if any.</summary>
   public StudioAnimation? Animation { get; set; }

@@ -15,6 +15,9 @@ public sealed record StudioStatus(bool Rendering, int Version, double Fraction, 
   /// </summary>
   public string Phase { get; init; } = "idle";
 
+  /// <summary>The page (its random id) that started the work on show; null = not known. Another id means another tab took over.</summary>
+  public string? Tab { get; init; }
+
   /// <summary>Passes of samples (true), tiles (false) or by the algorithm (null), as chosen for the render.</summary>
   public bool? Progressive { get; init; }
 

@@ -280,4 +280,31 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     Assert.False(Asking());
     browser.FindElement(By.Id("closeEditor")).Click();
   }
+
+  [SkippableFact]
+  public void A_tab_whose_render_another_tab_replaced_says_so()
+  {
+    using ChromeDriver browser = Browser();
+    string Messages() => browser.FindElement(By.Id("messages")).Text;
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    string first = browser.CurrentWindowHandle;
+    RenderIn(browser, "Five balls", 48, 36);
+    Assert.DoesNotContain("Another tab", Messages());
+
+    browser.SwitchTo().NewWindow(WindowType.Tab);
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the second tab's scene list");
+    string second = browser.CurrentWindowHandle;
+    RenderIn(browser, "Five balls", 40, 30);
+    Assert.DoesNotContain("Another tab", Messages());
+
+    browser.SwitchTo().Window(first);
+    Until(browser, () => Messages().Contains("Another tab or window of this studio started what is on show", StringComparison.Ordinal),
+          "the first tab's notice");
+    RenderIn(browser, "Five balls", 48, 36);
+    Until(browser, () => !Messages().Contains("Another tab", StringComparison.Ordinal), "the first tab's own render again");
+    browser.SwitchTo().Window(second);
+    Until(browser, () => Messages().Contains("Another tab", StringComparison.Ordinal), "the second tab's notice");
+  }
 }

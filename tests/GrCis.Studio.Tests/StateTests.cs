@@ -91,6 +91,26 @@ public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixtu
   }
 
   [Fact]
+  public async Task The_status_names_the_tab_whose_render_is_on_show()
+  {
+    async Task RenderFrom(string tab)
+    {
+      using var request = new HttpRequestMessage(HttpMethod.Post, "/api/render")
+      {
+        Content = JsonContent.Create(new { scene = "Five balls", settings = new { width = 16, height = 12 } }),
+      };
+      request.Headers.Add(StudioSession.TabHeader, tab);
+      using HttpResponseMessage started = await studio.Client.SendAsync(request);
+      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    }
+    await RenderFrom("first-tab");
+    Assert.Equal("first-tab", (await Status()).GetProperty("tab").GetString());
+    await RenderFrom("second-tab");
+    Assert.Equal("second-tab", (await Status()).GetProperty("tab").GetString());
+    await studio.PollUntil("/api/status", s => s.GetProperty("phase").GetString() == "idle", "the end of the render");
+  }
+
+  [Fact]
   public async Task An_error_stays_until_the_next_action()
   {
     string name = await AddScript("Typo.cs", "scene.NoSuchMember = 2;\n");

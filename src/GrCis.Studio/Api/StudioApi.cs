@@ -49,7 +49,7 @@ internal static class StudioApi
       };
     });
     app.MapGet("/api/settings", (StudioSession s) => s.Controller.Settings);
-    app.MapPost("/api/render", (RenderBody body, StudioSession s, AllowedFiles files) => Render(body, s, files));
+    app.MapPost("/api/render", (RenderBody body, StudioSession s, AllowedFiles files, HttpRequest request) => Render(body, s, files, request));
     app.MapPost("/api/scene/values", (SceneBody body, StudioSession s, AllowedFiles files) => ScriptValues(body, s, files));
     app.MapPost("/api/stop", (StudioSession s) =>
     {
@@ -106,6 +106,7 @@ internal static class StudioApi
       using var reader = new StreamReader(request.Body, System.Text.Encoding.UTF8);
       string text = await reader.ReadToEndAsync();
       SaveAtomically(real, text);
+      s.ActedFor(request);
       response.Headers.ETag = SourceTag(File.ReadAllBytes(real));
       // The selected script's watcher re-renders it (as for a save from any other editor): 204. Any other script is
       // compiled here, so its diagnostics show too: 202, and /api/status says compiling until they are known.
@@ -192,7 +193,7 @@ internal static class StudioApi
     });
   }
 
-  static IResult Render(RenderBody body, StudioSession s, AllowedFiles files)
+  static IResult Render(RenderBody body, StudioSession s, AllowedFiles files, HttpRequest request)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
@@ -212,6 +213,7 @@ internal static class StudioApi
     {
       return Results.BadRequest(new { error = e.Message });
     }
+    s.ActedFor(request);
     s.Render(entry, body.Param ?? entry.ParameterText, settings, algorithm, body.Progressive, given);
     return Results.Accepted();
   }

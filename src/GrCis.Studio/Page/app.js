@@ -29,8 +29,12 @@ function showError(message) {
 let compilingSave = null, pageNote = "";
 const phaseText = { compiling: "compiling the script…", rendering: "rendering…", idle: "" };
 
+// This page's id: the studio has one render at a time, so a page tells when another tab's request replaced its own.
+const tab = Array.from(crypto.getRandomValues(new Uint8Array(8)), b => b.toString(16).padStart(2, "0")).join("");
+const tookOver = "Another tab or window of this studio started what is on show (one render at a time; Render here to take it back).";
+
 async function api(path, options) {
-  const r = await fetch("api/" + path, options);
+  const r = await fetch("api/" + path, { ...options, headers: { ...options?.headers, "X-GrCis-Tab": tab } });
   if (!r.ok && r.status !== 404) {
     let text = await r.text();
     try { text = JSON.parse(text).error ?? text; } catch { }
@@ -182,7 +186,8 @@ async function poll() {
     if (!s.error && s.diagnostics.length === 0) pageNote = `${compilingSave} compiles; Render shows it`;
     compilingSave = null;
   }
-  $("messages").textContent = [...s.notes, s.error, pageError, pageNote].filter(Boolean).join("\n");
+  const other = s.tab && s.tab !== tab ? tookOver : "";
+  $("messages").textContent = [other, ...s.notes, s.error, pageError, pageNote].filter(Boolean).join("\n");
   showDiagnostics(s.diagnostics);
   $("stop").disabled = s.phase === "idle";
   await checkSource();
@@ -316,7 +321,7 @@ async function checkSource() {
 async function save() {
   if (!editor || !editedScene) return;
   sourceEpoch++;
-  const text = editor.getValue(), headers = { "Content-Type": "text/plain; charset=utf-8" };
+  const text = editor.getValue(), headers = { "Content-Type": "text/plain; charset=utf-8", "X-GrCis-Tab": tab };
   // Only over the text it was loaded from (or the disk's, once the user chose to keep theirs): never over a newer file unseen.
   if (editorTag) headers["If-Match"] = editorTag;
   try {
