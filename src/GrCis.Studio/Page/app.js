@@ -30,7 +30,10 @@ let compilingSave = null, pageNote = "";
 const phaseText = { compiling: "compiling the script…", rendering: "rendering…", idle: "" };
 
 // This page's id: the studio has one render at a time, so a page tells when another tab's request replaced its own.
-const tab = Array.from(crypto.getRandomValues(new Uint8Array(8)), b => b.toString(16).padStart(2, "0")).join("");
+// Kept per tab across reloads (sessionStorage), so a reloaded page still knows its own render.
+const tab = sessionStorage.getItem("grcis-tab") ??
+  Array.from(crypto.getRandomValues(new Uint8Array(8)), b => b.toString(16).padStart(2, "0")).join("");
+sessionStorage.setItem("grcis-tab", tab);
 const tookOver = "Another tab or window of this studio started what is on show (one render at a time; Render here to take it back).";
 
 async function api(path, options) {
