@@ -119,6 +119,16 @@ public sealed class DemoController : IDisposable
     }
   }
 
+  /// <summary>True while the last render asked for builds its scene (compiles and runs its script), before its pixels; false after Stop.</summary>
+  public bool IsBuilding
+  {
+    get
+    {
+      lock (sync)
+        return building;
+    }
+  }
+
   /// <summary>The number of the render asked for last (<see cref="RenderAsync"/>, a watched script's change); its events are the only ones raised.</summary>
   public long RenderId => Interlocked.Read(ref renderId);
 
@@ -384,6 +394,7 @@ public sealed class DemoController : IDisposable
       inspecting?.Cancel();
       session?.Stop();
       building = false;   // a script that ignores the stop is left behind (see AbandonStuckScriptAfter)
+      finishedId = renderId;   // idle at once, even while a stuck script's texture keeps the session winding down
     }
   }
 

@@ -99,7 +99,7 @@ public sealed class StudioServer : IAsyncDisposable
 
     // Kestrel listens on the one endpoint configured above, so its one address names the port.
     int port = new Uri(app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses.First()).Port;
-    Volatile.Write(ref guard, new AccessGuard(token, AccessGuard.HostsFor(options.Host, port, options.IsLoopback), options.IsAnyAddress ? port : 0));
+    Volatile.Write(ref guard, new AccessGuard(token, AccessGuard.HostsFor(options.Host, port, options.IsLoopback), options.IsAnyAddress ? port : 0, port));
     string shown = options.IsLoopback ? "127.0.0.1" : StudioOptions.UrlHost(options.Host);
     return new StudioServer(app, session, token, $"http://{shown}:{port}/?token={token}");
   }
@@ -122,7 +122,7 @@ public sealed class StudioServer : IAsyncDisposable
 
   public async ValueTask DisposeAsync()
   {
-    Session.Controller.Stop();
+    Session.Stop();
     await app.StopAsync().ConfigureAwait(false);
     await app.DisposeAsync().ConfigureAwait(false);
     Session.Dispose();

@@ -24,6 +24,9 @@ public sealed class StudioSession : IDisposable
   int? samples;
   double? noise;
   IReadOnlyList<ScriptError> diagnostics = Array.Empty<ScriptError>();
+  // A saved script other than the watched one being compiled (Check); its number, so a stopped or replaced check says nothing.
+  bool checking;
+  long checkId;
 
   public StudioSession(DemoController controller)
   {
@@ -99,6 +102,67 @@ public sealed class StudioSession : IDisposable
     }, System.Threading.Tasks.TaskScheduler.Default);
   }
 
+  /// <summary>
+  /// Builds a saved script without rendering it (the watcher re-renders only the selected one), so its compiler
+  /// diagnostics, or the error of running it, show in <see cref="Status"/> as a watched script's do. The phase is
+  /// <c>compiling</c> meanwhile; <see cref="Stop"/> ends it.
+  /// </summary>
+  public void Check(SceneEntry entry)
+  {
+    long id;
+    lock (sync)
+    {
+      id = ++checkId;
+      checking = true;
+      error = null;
+      diagnostics = Array.Empty<ScriptError>();
+    }
+    _ = CheckAsync(entry, id);
+  }
+
+  async System.Threading.Tasks.Task CheckAsync(SceneEntry entry, long id)
+  {
+    string? message = null;
+    try
+    {
+      await Controller.ReadScriptValuesAsync(entry).ConfigureAwait(false);
+    }
+    catch (Exception e) when (e is SceneEvaluationException or ArgumentException)
+    {
+      message = e.Message;
+    }
+    catch (OperationCanceledException)
+    {
+      // Stopped, or another scene's values asked for: nothing to report.
+    }
+    lock (sync)
+    {
+      if (id != checkId)
+        return;
+      checking = false;
+      if (message != null)
+      {
+        error = message;
+        diagnostics = ScriptErrors.Parse(message);
+      }
+    }
+  }
+
+  /// <summary>Stops whatever runs: the script being built, the render, a saved script being compiled. Idle at once.</summary>
+  public void Stop()
+  {
+    Controller.Stop();
+    lock (sync)
+    {
+      checkId++;
+      checking = false;
+    }
+  }
+
+  /// <summary>What the studio does now: <c>compiling</c> (a script being built: compiled and run), <c>rendering</c> or <c>idle</c>.</summary>
+  string Phase() =>
+    Controller.IsBuilding || checking ? "compiling" : Controller.IsBusy ? "rendering" : "idle";
+
   // A render is starting (asked by the page, or a watched script changed): its state starts afresh.
   void Started()
   {
@@ -134,6 +198,8 @@ public sealed class StudioSession : IDisposable
                               Controller.LastJob?.Notes ?? Array.Empty<string>(), diagnostics,
                               Controller.Algorithm is RenderAlgorithm a ? RenderAlgorithmNames.Name(a) : null)
       {
+        Phase = Phase(),
+        Tab = Tab,
         Progressive = Controller.Progressive,
         Samples = samples,
         Noise = noise,
@@ -160,6 +226,20 @@ public sealed class StudioSession : IDisposable
   /// <summary>Computes the depth, normal and ray maps of the last render.</summary>
   /// <exception cref="InvalidOperationException">Nothing rendered yet, or a render is running.</exception>
   public ExtraViews ComputeViews(System.Threading.CancellationToken cancel) => Views = Controller.ComputeExtraViews(cancel);
+
+  /// <summary>The page (browser tab) that asked for the work on show: one studio serves one render, so a tab whose own is
+  /// replaced by another's says so (<see cref="StudioStatus.Tab"/>). Null = none named (a script saved by another editor).</summary>
+  public string? Tab { get; private set; }
+
+  /// <summary>The header in which a page names itself (a random id per page load).</summary>
+  public const string TabHeader = "X-GrCis-Tab";
+
+  /// <summary>Records the tab of a request that starts work, from its <see cref="TabHeader"/> (ignored when absent or too long).</summary>
+  public void ActedFor(Microsoft.AspNetCore.Http.HttpRequest request)
+  {
+    string? tab = request.Headers[TabHeader];
+    Tab = string.IsNullOrEmpty(tab) || tab.Length > 64 ? null : tab;
+  }
 
   /// <summary>The last animation run, if any.</summary>
   public StudioAnimation? Animation { get; set; }

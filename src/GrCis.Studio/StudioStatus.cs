@@ -3,12 +3,21 @@ using System.Collections.Generic;
 namespace GrCis.Studio;
 
 /// <summary>The render's state for the page.</summary>
-/// <param name="Rendering">A script is being built or a render runs.</param>
+/// <param name="Rendering">The script of the render asked for last is being built, or the render runs.</param>
 /// <param name="Diagnostics">The last build's compiler diagnostics (empty when it compiled).</param>
 /// <param name="Algorithm">The algorithm chosen for the render (<c>--algorithm</c>'s name); null = the scene's choice.</param>
 public sealed record StudioStatus(bool Rendering, int Version, double Fraction, double Seconds, string Statistics, string? Error,
                                   IReadOnlyList<string> Notes, IReadOnlyList<ScriptError> Diagnostics, string? Algorithm = null)
 {
+  /// <summary>
+  /// <c>compiling</c> while a script is built (compiled and run: a render's, or a saved script's that is not the one
+  /// rendered), <c>rendering</c> while the pixels are computed, else <c>idle</c>.
+  /// </summary>
+  public string Phase { get; init; } = "idle";
+
+  /// <summary>The page (its random id) that started the work on show; null = not known. Another id means another tab took over.</summary>
+  public string? Tab { get; init; }
+
   /// <summary>Passes of samples (true), tiles (false) or by the algorithm (null), as chosen for the render.</summary>
   public bool? Progressive { get; init; }
 

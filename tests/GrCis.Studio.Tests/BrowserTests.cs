@@ -191,4 +191,120 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     ScriptValuesShown();
     Shot(browser, "studio-script-values.png");
   }
+
+  [SkippableFact]
+  public void Saving_a_script_that_is_not_rendered_shows_compiling_then_its_errors()
+  {
+    string path = Path.Combine(studio.ScriptsFolder, "Edited.cs");
+    File.WriteAllText(path, "Rendering.Scenes.FiveBalls(scene);\n");
+    string marker = Path.Combine(studio.Folder, "browser-stuck").Replace("\\", "/", StringComparison.Ordinal);
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    browser.FindElement(By.Id("open")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#files option")).Count > 0, "the file picker");
+    Js(browser, "document.getElementById('files').value = arguments[0];", path);
+    browser.FindElement(By.Id("add")).Click();
+    Until(browser, () => browser.FindElement(By.Id("edit")).Displayed, "the Edit button of the added script");
+    browser.FindElement(By.Id("edit")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
+    string Phase() => browser.FindElement(By.Id("phase")).Text;
+    void SaveText(string text)
+    {
+      Js(browser, "document.querySelector('#editor .CodeMirror').CodeMirror.setValue(arguments[0]);", text);
+      browser.FindElement(By.Id("save")).Click();
+    }
+
+    // A script that is slow to build: the page says so, and Stop ends it.
+    SaveText(StuckScripts.WhileBuilding(marker));
+    Until(browser, () => File.Exists(marker) && Phase() == "compiling the script…" && browser.FindElement(By.Id("stop")).Enabled,
+          "the compiling state");
+    browser.FindElement(By.Id("stop")).Click();
+    Until(browser, () => Phase() == "" && !browser.FindElement(By.Id("stop")).Enabled, "idle after Stop");
+
+    // A typo: marked at its line, though the script is not the one rendered.
+    SaveText("// edited\n// here\nRendering.Scenes.FiveBals(scene);\n");
+    Until(browser, () => browser.FindElements(By.CssSelector("#diagnostics li")).Count > 0, "the diagnostics");
+    IWebElement error = browser.FindElement(By.CssSelector("#diagnostics li"));
+    Assert.Equal("3", error.GetAttribute("data-line"));
+    Assert.Contains("CS0117", error.Text);
+
+    SaveText("Rendering.Scenes.FiveBalls(scene);\n");
+    Until(browser, () => browser.FindElements(By.CssSelector("#diagnostics li")).Count == 0 &&
+                         browser.FindElement(By.Id("messages")).Text == "Edited.cs compiles; Render shows it", "the fixed script compiled");
+    browser.FindElement(By.Id("closeEditor")).Click();
+  }
+
+  [SkippableFact]
+  public void A_change_on_disk_reloads_the_editor_or_asks_over_unsaved_edits()
+  {
+    string path = Path.Combine(studio.ScriptsFolder, "ChangedOnDisk.cs");
+    File.WriteAllText(path, "Rendering.Scenes.FiveBalls(scene);\n");
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    browser.FindElement(By.Id("open")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#files option")).Count > 0, "the file picker");
+    Js(browser, "document.getElementById('files').value = arguments[0];", path);
+    browser.FindElement(By.Id("add")).Click();
+    Until(browser, () => browser.FindElement(By.Id("edit")).Displayed, "the Edit button of the added script");
+    browser.FindElement(By.Id("edit")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
+    string Text() => (string)Js(browser, "return document.querySelector('#editor .CodeMirror').CodeMirror.getValue();")!;
+    bool Asking() => browser.FindElement(By.Id("sourceChanged")).Displayed;
+    Until(browser, () => Text() == "Rendering.Scenes.FiveBalls(scene);\n", "the script's text");
+
+    // No edits in the page: another editor's save shows at once.
+    const string First = "// saved elsewhere\nRendering.Scenes.FiveBalls(scene);\n";
+    File.WriteAllText(path, First);
+    Until(browser, () => Text() == First, "the reloaded text");
+    Assert.False(Asking());
+
+    // Unsaved edits: the page asks, keeping them until the user chooses.
+    const string Mine = "// mine\nRendering.Scenes.Flags(scene);\n", Second = "// saved elsewhere again\nRendering.Scenes.FiveBalls(scene);\n";
+    Js(browser, "document.querySelector('#editor .CodeMirror').CodeMirror.setValue(arguments[0]);", Mine);
+    File.WriteAllText(path, Second);
+    Until(browser, Asking, "the question about the change on disk");
+    Assert.Equal(Mine, Text());
+    Shot(browser, "studio-editor-changed-on-disk.png");
+    browser.FindElement(By.Id("reloadSource")).Click();
+    Until(browser, () => Text() == Second && !Asking(), "the disk's text after Reload");
+
+    // Keep mine: the next save replaces the file knowingly.
+    Js(browser, "document.querySelector('#editor .CodeMirror').CodeMirror.setValue(arguments[0]);", Mine);
+    File.WriteAllText(path, First);
+    Until(browser, Asking, "the question again");
+    browser.FindElement(By.Id("keepMine")).Click();
+    browser.FindElement(By.Id("save")).Click();
+    Until(browser, () => File.ReadAllText(path) == Mine, "the user's text saved");
+    Assert.False(Asking());
+    browser.FindElement(By.Id("closeEditor")).Click();
+  }
+
+  [SkippableFact]
+  public void A_tab_whose_render_another_tab_replaced_says_so()
+  {
+    using ChromeDriver browser = Browser();
+    string Messages() => browser.FindElement(By.Id("messages")).Text;
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    string first = browser.CurrentWindowHandle;
+    RenderIn(browser, "Five balls", 48, 36);
+    Assert.DoesNotContain("Another tab", Messages());
+
+    browser.SwitchTo().NewWindow(WindowType.Tab);
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the second tab's scene list");
+    string second = browser.CurrentWindowHandle;
+    RenderIn(browser, "Five balls", 40, 30);
+    Assert.DoesNotContain("Another tab", Messages());
+
+    browser.SwitchTo().Window(first);
+    Until(browser, () => Messages().Contains("Another tab or window of this studio started what is on show", StringComparison.Ordinal),
+          "the first tab's notice");
+    RenderIn(browser, "Five balls", 48, 36);
+    Until(browser, () => !Messages().Contains("Another tab", StringComparison.Ordinal), "the first tab's own render again");
+    browser.SwitchTo().Window(second);
+    Until(browser, () => Messages().Contains("Another tab", StringComparison.Ordinal), "the second tab's notice");
+  }
 }

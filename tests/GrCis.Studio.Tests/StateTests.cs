@@ -40,10 +40,35 @@ public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixtu
       Assert.True(DateTime.UtcNow < deadline, "the script never started");
       await Task.Delay(20);
     }
-    Assert.True((await Status()).GetProperty("rendering").GetBoolean(), "busy while the script builds");
+    JsonElement building = await Status();
+    Assert.True(building.GetProperty("rendering").GetBoolean(), "busy while the script builds");
+    Assert.Equal("compiling", building.GetProperty("phase").GetString());
     using (HttpResponseMessage stop = await studio.Client.PostAsync("/api/stop", null))
       Assert.Equal(HttpStatusCode.NoContent, stop.StatusCode);
-    Assert.False((await Status()).GetProperty("rendering").GetBoolean(), "still 'rendering' after Stop");
+    JsonElement stopped = await Status();
+    Assert.False(stopped.GetProperty("rendering").GetBoolean(), "still 'rendering' after Stop");
+    Assert.Equal("idle", stopped.GetProperty("phase").GetString());
+  }
+
+  [Fact]
+  public async Task The_phase_is_rendering_once_the_script_is_built_and_idle_after_stop()
+  {
+    string marker = Path.Combine(studio.Folder, "stuck-rendering").Replace("\\", "/", StringComparison.Ordinal);
+    string name = await AddScript("StuckRender.cs", StuckScripts.WhileRendering(marker));
+    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", new { scene = name, settings = new { width = 8, height = 6 } }))
+      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    DateTime deadline = DateTime.UtcNow + TimeSpan.FromMinutes(1);
+    while (!File.Exists(marker))
+    {
+      Assert.True(DateTime.UtcNow < deadline, "the render never reached the script's texture");
+      await Task.Delay(20);
+    }
+    JsonElement rendering = await Status();
+    Assert.True(rendering.GetProperty("rendering").GetBoolean());
+    Assert.Equal("rendering", rendering.GetProperty("phase").GetString());
+    using (HttpResponseMessage stop = await studio.Client.PostAsync("/api/stop", null))
+      Assert.Equal(HttpStatusCode.NoContent, stop.StatusCode);
+    Assert.Equal("idle", (await Status()).GetProperty("phase").GetString());
   }
 
   [Fact]
@@ -63,6 +88,26 @@ public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixtu
     JsonElement later = await Status();
     Assert.False(later.GetProperty("rendering").GetBoolean());
     Assert.StartsWith("40x30", later.GetProperty("statistics").GetString());
+  }
+
+  [Fact]
+  public async Task The_status_names_the_tab_whose_render_is_on_show()
+  {
+    async Task RenderFrom(string tab)
+    {
+      using var request = new HttpRequestMessage(HttpMethod.Post, "/api/render")
+      {
+        Content = JsonContent.Create(new { scene = "Five balls", settings = new { width = 16, height = 12 } }),
+      };
+      request.Headers.Add(StudioSession.TabHeader, tab);
+      using HttpResponseMessage started = await studio.Client.SendAsync(request);
+      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    }
+    await RenderFrom("first-tab");
+    Assert.Equal("first-tab", (await Status()).GetProperty("tab").GetString());
+    await RenderFrom("second-tab");
+    Assert.Equal("second-tab", (await Status()).GetProperty("tab").GetString());
+    await studio.PollUntil("/api/status", s => s.GetProperty("phase").GetString() == "idle", "the end of the render");
   }
 
   [Fact]

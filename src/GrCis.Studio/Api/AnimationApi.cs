@@ -18,7 +18,8 @@ internal static class AnimationApi
 
   public static void Map(WebApplication app)
   {
-    app.MapPost("/api/animation", (AnimationBody body, StudioSession s, AllowedFiles files) => Start(body, s, files));
+    app.MapPost("/api/animation", (AnimationBody body, StudioSession s, AllowedFiles files, Microsoft.AspNetCore.Http.HttpRequest request) =>
+      Start(body, s, files, request));
     app.MapGet("/api/animation", (StudioSession s) => s.Animation is { } a ? Results.Ok(a.Status()) : Results.NotFound());
     app.MapPost("/api/animation/stop", (StudioSession s) =>
     {
@@ -29,7 +30,7 @@ internal static class AnimationApi
       s.Animation?.Frame(k) is byte[] png ? Results.Bytes(png, "image/png") : Results.NotFound());
   }
 
-  static IResult Start(AnimationBody body, StudioSession s, AllowedFiles files)
+  static IResult Start(AnimationBody body, StudioSession s, AllowedFiles files, Microsoft.AspNetCore.Http.HttpRequest request)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
@@ -81,6 +82,7 @@ internal static class AnimationApi
     AnimationTimeline t = run.Timeline;
     if (t.FrameCount > 100_000)
       return Results.BadRequest(new { error = $"the range {t.Start}–{t.End} s at {t.Fps} fps has {t.FrameCount} frames; at most 100000" });
+    s.ActedFor(request);
     s.Animation = StudioAnimation.Start(run, folder);
     return Results.Accepted();
   }

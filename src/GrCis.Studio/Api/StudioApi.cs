@@ -49,12 +49,12 @@ internal static class StudioApi
       };
     });
     app.MapGet("/api/settings", (StudioSession s) => s.Controller.Settings);
-    app.MapPost("/api/render", (RenderBody body, StudioSession s, AllowedFiles files) => Render(body, s, files));
+    app.MapPost("/api/render", (RenderBody body, StudioSession s, AllowedFiles files, HttpRequest request) => Render(body, s, files, request));
     app.MapPost("/api/scene/values", (SceneBody body, StudioSession s, AllowedFiles files) => ScriptValues(body, s, files));
     app.MapPost("/api/stop", (StudioSession s) =>
     {
-      // Whatever runs: the script being built, the render, and an animation.
-      s.Controller.Stop();
+      // Whatever runs: the script being built, the render, a saved script being compiled, and an animation.
+      s.Stop();
       s.Animation?.Stop();
       return Results.NoContent();
     });
@@ -70,18 +70,27 @@ internal static class StudioApi
     app.MapGet("/api/image.pfm", (StudioSession s) =>
       s.FinalImage() is FloatImage f ? Results.Bytes(PfmWriter.Encode(f), "application/octet-stream", "render.pfm") : Results.NotFound());
     app.MapGet("/api/probe", (int x, int y, StudioSession s) => Probe(s, x, y));
-    app.MapGet("/api/source", (string scene, StudioSession s, AllowedFiles files) =>
+    app.MapGet("/api/source", (string scene, StudioSession s, AllowedFiles files, HttpRequest request, HttpResponse response) =>
     {
       SceneEntry? entry = s.Controller.Catalog.Find(scene);
       if (entry?.Path == null)
         return Results.NotFound();
-      return files.Resolve(entry.Path) is string real ? Results.Text(File.ReadAllText(real), "text/plain; charset=utf-8") : Results.StatusCode(StatusCodes.Status403Forbidden);
+      if (files.Resolve(entry.Path) is not string real)
+        return Results.StatusCode(StatusCodes.Status403Forbidden);
+      // The editor asks with the tag of the text it holds: 304 while the file is unchanged, else the new text.
+      byte[] bytes = File.ReadAllBytes(real);
+      string tag = SourceTag(bytes);
+      response.Headers.ETag = tag;
+      response.Headers.CacheControl = "no-store";
+      if (request.Headers.IfNoneMatch == tag)
+        return Results.StatusCode(StatusCodes.Status304NotModified);
+      return Results.Bytes(bytes, "text/plain; charset=utf-8");
     });
     ViewsApi.Map(app);
     HistoryApi.Map(app);
     AnimationApi.Map(app);
     FilesApi.Map(app);
-    app.MapPut("/api/source", async (string scene, HttpRequest request, StudioSession s, AllowedFiles files) =>
+    app.MapPut("/api/source", async (string scene, HttpRequest request, HttpResponse response, StudioSession s, AllowedFiles files) =>
     {
       SceneEntry? entry = s.Controller.Catalog.Find(scene);
       if (entry?.Path == null)
@@ -89,10 +98,22 @@ internal static class StudioApi
       // The real file is written (a link inside the folders keeps pointing at it); a link leading out is refused.
       if (files.Resolve(entry.Path) is not string real)
         return Results.StatusCode(StatusCodes.Status403Forbidden);
+      // The editor says which text it started from (If-Match: its tag): a file changed on disk since is not overwritten.
+      string? expected = request.Headers.IfMatch;
+      if (!string.IsNullOrEmpty(expected) && File.Exists(real) && expected != SourceTag(File.ReadAllBytes(real)))
+        return Results.Json(new { error = $"{Path.GetFileName(entry.Path)} changed on disk since the editor loaded it: reload it, or save again to replace it" },
+                            statusCode: StatusCodes.Status412PreconditionFailed);
       using var reader = new StreamReader(request.Body, System.Text.Encoding.UTF8);
-      SaveAtomically(real, await reader.ReadToEndAsync());
-      // The script's watcher re-renders it (as for a save from any other editor).
-      return Results.NoContent();
+      string text = await reader.ReadToEndAsync();
+      SaveAtomically(real, text);
+      s.ActedFor(request);
+      response.Headers.ETag = SourceTag(File.ReadAllBytes(real));
+      // The selected script's watcher re-renders it (as for a save from any other editor): 204. Any other script is
+      // compiled here, so its diagnostics show too: 202, and /api/status says compiling until they are known.
+      if (IsWatched(s.Controller, entry))
+        return Results.NoContent();
+      s.Check(entry);
+      return Results.Accepted();
     });
     app.MapGet("/api/file", (string path, AllowedFiles files) =>
       files.Resolve(path) is not string real ? Results.StatusCode(StatusCodes.Status403Forbidden)
@@ -172,7 +193,7 @@ internal static class StudioApi
     });
   }
 
-  static IResult Render(RenderBody body, StudioSession s, AllowedFiles files)
+  static IResult Render(RenderBody body, StudioSession s, AllowedFiles files, HttpRequest request)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
@@ -192,6 +213,7 @@ internal static class StudioApi
     {
       return Results.BadRequest(new { error = e.Message });
     }
+    s.ActedFor(request);
     s.Render(entry, body.Param ?? entry.ParameterText, settings, algorithm, body.Progressive, given);
     return Results.Accepted();
   }
@@ -249,6 +271,14 @@ internal static class StudioApi
     blocked = n.Blocked,
     children = n.Children.Select(RayJson).ToArray(),
   };
+
+  /// <summary>Whether the controller's watcher follows <paramref name="entry"/>'s file (the selected script's).</summary>
+  static bool IsWatched(DemoController controller, SceneEntry entry) =>
+    controller.WatchScript && controller.Selected?.Path is string watched && entry.Path != null &&
+    string.Equals(Path.GetFullPath(watched), Path.GetFullPath(entry.Path), StringComparison.Ordinal);
+
+  /// <summary>A script's version as an entity tag: the start of its SHA-256, quoted.</summary>
+  internal static string SourceTag(byte[] bytes) => "\"" + Convert.ToHexStringLower(System.Security.Cryptography.SHA256.HashData(bytes), 0, 16) + "\"";
 
   /// <summary>Writes the whole text to a temporary file beside <paramref name="path"/>, then moves it over: never half a script.</summary>
   static void SaveAtomically(string path, string text)

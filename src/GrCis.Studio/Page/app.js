@@ -8,6 +8,8 @@ let scenes = [], shownVersion = -1, polling = null;
 let zoom = 1, panX = 0, panY = 0, drag = null;
 let viewsFor = -1, hoverTimer = null, historyFor = -1;
 let editor = null, editedScene = null, marks = [], lastProbe = null;
+// The version (ETag) of the file the editor's text started from, and a newer one found on disk while it has unsaved edits.
+let editorTag = null, diskTag = null, diskText = null, sourceEpoch = 0, checkingSource = false;
 // Settings the user changed since the scene was chosen: they win over the script's own values (as command-line
 // options do); the other fields show the script's values, marked, and are sent as not given.
 const given = new Set();
@@ -20,11 +22,22 @@ const rangeGiven = new Set();
 let pageError = "";
 function showError(message) {
   pageError = message;
+  pageNote = "";
   $("messages").textContent = message;
 }
+// A saved script that is not the one rendered is compiled by the studio: its name until the result is known, then a note.
+let compilingSave = null, pageNote = "";
+const phaseText = { compiling: "compiling the script…", rendering: "rendering…", idle: "" };
+
+// This page's id: the studio has one render at a time, so a page tells when another tab's request replaced its own.
+// Kept per tab across reloads (sessionStorage), so a reloaded page still knows its own render.
+const tab = sessionStorage.getItem("grcis-tab") ??
+  Array.from(crypto.getRandomValues(new Uint8Array(8)), b => b.toString(16).padStart(2, "0")).join("");
+sessionStorage.setItem("grcis-tab", tab);
+const tookOver = "Another tab or window of this studio started what is on show (one render at a time; Render here to take it back).";
 
 async function api(path, options) {
-  const r = await fetch("api/" + path, options);
+  const r = await fetch("api/" + path, { ...options, headers: { ...options?.headers, "X-GrCis-Tab": tab } });
   if (!r.ok && r.status !== 404) {
     let text = await r.text();
     try { text = JSON.parse(text).error ?? text; } catch { }
@@ -169,16 +182,25 @@ async function poll() {
   $("stats").textContent = s.statistics || (s.samples != null
     ? `${s.samples} spp so far` + (s.noise != null ? `, noise ${s.noise.toPrecision(3)} RMSE` : "")
     : "");
-  $("messages").textContent = [...s.notes, s.error, pageError].filter(Boolean).join("\n");
+  // The first compile of a script takes seconds: say so, not a still page.
+  $("phase").textContent = phaseText[s.phase] ?? s.phase;
+  $("phase").dataset.phase = s.phase;
+  if (compilingSave && s.phase === "idle") {
+    if (!s.error && s.diagnostics.length === 0) pageNote = `${compilingSave} compiles; Render shows it`;
+    compilingSave = null;
+  }
+  const other = s.tab && s.tab !== tab ? tookOver : "";
+  $("messages").textContent = [other, ...s.notes, s.error, pageError, pageNote].filter(Boolean).join("\n");
   showDiagnostics(s.diagnostics);
-  $("stop").disabled = !s.rendering;
+  $("stop").disabled = s.phase === "idle";
+  await checkSource();
   if (s.version !== shownVersion && s.version > 0) await showImage(s.version);
   // The history once per finished image (the image fetched may already be newer than the status that asked for it).
   if (!s.rendering && s.version > 0 && s.version !== historyFor) {
     historyFor = s.version;
     await loadHistory();
   }
-  return s.rendering;
+  return s.phase !== "idle";
 }
 
 function showDiagnostics(list) {
@@ -256,19 +278,72 @@ async function openEditor() {
   if (!editor) {
     editor = CodeMirror($("editor"), { value: text, mode: "text/x-csharp", lineNumbers: true, indentUnit: 2, tabSize: 2 });
     editor.setOption("extraKeys", { "Ctrl-S": save, "Cmd-S": save });
-  } else {
-    editor.setValue(text);
   }
   editedScene = name;
+  loadSource(text, r.headers.get("ETag"));
+}
+
+// The editor shows the file's text as it is on disk, with no unsaved edits.
+function loadSource(text, tag) {
+  sourceEpoch++;
+  const cursor = editor.getCursor();
+  if (editor.getValue() !== text) editor.setValue(text);
+  editor.setCursor(cursor);
+  editor.markClean();
+  editorTag = tag;
+  diskTag = diskText = null;
+  $("sourceChanged").hidden = true;
+}
+
+// Another editor changed the open script: the text is reloaded, or, over unsaved edits, the user is asked.
+async function checkSource() {
+  if (!editor || !editedScene || $("editorPane").hidden || checkingSource) return;
+  checkingSource = true;
+  const epoch = sourceEpoch;
+  try {
+    const r = await fetch("api/source?scene=" + encodeURIComponent(editedScene), {
+      cache: "no-store", headers: editorTag ? { "If-None-Match": editorTag } : {},
+    });
+    const tag = r.headers.get("ETag");
+    if (r.status !== 200 || epoch !== sourceEpoch || tag === editorTag || tag === diskTag) return;
+    const text = await r.text();
+    if (epoch !== sourceEpoch) return;   // saved or reloaded meanwhile
+    if (editor.isClean() || editor.getValue() === text) {
+      loadSource(text, tag);
+      pageNote = `${$("editorName").textContent} changed on disk: reloaded`;
+    } else {
+      diskTag = tag;
+      diskText = text;
+      $("sourceChanged").hidden = false;
+    }
+  } catch { } finally {
+    checkingSource = false;
+  }
 }
 
 async function save() {
   if (!editor || !editedScene) return;
+  sourceEpoch++;
+  const text = editor.getValue(), headers = { "Content-Type": "text/plain; charset=utf-8", "X-GrCis-Tab": tab };
+  // Only over the text it was loaded from (or the disk's, once the user chose to keep theirs): never over a newer file unseen.
+  if (editorTag) headers["If-Match"] = editorTag;
   try {
-    await api("source?scene=" + encodeURIComponent(editedScene), {
-      method: "PUT", headers: { "Content-Type": "text/plain; charset=utf-8" }, body: editor.getValue(),
-    });
+    const r = await fetch("api/source?scene=" + encodeURIComponent(editedScene), { method: "PUT", headers, body: text });
+    if (r.status === 412) {
+      await checkSource();   // asks, showing the bar (or reloads, when nothing was edited)
+      return;
+    }
+    if (!r.ok) {
+      let message = await r.text();
+      try { message = JSON.parse(message).error ?? message; } catch { }
+      throw new Error(message || r.statusText);
+    }
+    sourceEpoch++;
+    editorTag = r.headers.get("ETag");
+    if (editor.getValue() === text) editor.markClean();
     showError("");
+    // 204: the rendered script, which the studio re-renders; 202: another script, which it compiles.
+    if (r.status === 202) compilingSave = $("editorName").textContent;
     $("messages").textContent = "saved; compiling…";
   } catch (e) {
     showError(e.message);
@@ -442,6 +517,13 @@ $("animScrub").addEventListener("input", () => showFrame(Number($("animScrub").v
 $("show3d").addEventListener("click", async () => { $("rays3dPane").hidden = !$("rays3dPane").hidden; if (!$("rays3dPane").hidden) await show3d(); });
 $("save").addEventListener("click", save);
 $("closeEditor").addEventListener("click", () => { $("editorPane").hidden = true; });
+$("reloadSource").addEventListener("click", () => { if (diskText !== null) loadSource(diskText, diskTag); });
+$("keepMine").addEventListener("click", () => {
+  // The next save replaces the file on disk with the editor's text.
+  editorTag = diskTag ?? editorTag;
+  diskTag = diskText = null;
+  $("sourceChanged").hidden = true;
+});
 document.addEventListener("keydown", e => {
   // In the editor CodeMirror's own Ctrl+S has saved already (and prevented the default): one save per key press.
   if ((e.ctrlKey || e.metaKey) && e.key === "s" && !e.defaultPrevented) { e.preventDefault(); save(); }

@@ -12,12 +12,15 @@ namespace GrCis.Studio;
 /// must therefore (1) name the studio itself in its Host header (no DNS rebinding), (2) come from the
 /// studio's own page when it says where it comes from (Origin: no cross-site requests), and (3) carry the
 /// token printed with the URL — in the query (the first page load), the <c>X-GrCis-Token</c> header or the
-/// cookie the first page load sets (as Jupyter does).
+/// cookie the first page load sets (as Jupyter does). The cookie's name carries the port: a browser keeps cookies per
+/// host, not per port, so two studios on one machine would otherwise overwrite each other's and lock each other out.
 /// </summary>
 public sealed class AccessGuard
 {
   public const string HeaderName = "X-GrCis-Token";
-  public const string CookieName = "grcis-studio-token";
+
+  /// <summary>The name of the token's cookie for a studio on <paramref name="port"/>.</summary>
+  public static string CookieNameFor(int port) => FormattableString.Invariant($"grcis-studio-token-{port}");
 
   readonly byte[] token;
   readonly HashSet<string> hosts;
@@ -27,12 +30,17 @@ public sealed class AccessGuard
   /// <param name="hosts">Host header values that name this studio (<c>host:port</c>, case-insensitive).</param>
   /// <param name="anyAddressPort">For a studio bound to every interface (0.0.0.0, ::): its port, under which any
   /// IP address (not a name, which DNS rebinding could point here) is accepted; else 0.</param>
-  public AccessGuard(string token, IEnumerable<string> hosts, int anyAddressPort = 0)
+  /// <param name="port">The port the studio listens on, which names its cookie (<see cref="CookieNameFor"/>).</param>
+  public AccessGuard(string token, IEnumerable<string> hosts, int anyAddressPort = 0, int port = 0)
   {
+    CookieName = CookieNameFor(port);
     this.token = Encoding.UTF8.GetBytes(token);
     this.hosts = new HashSet<string>(hosts, StringComparer.OrdinalIgnoreCase);
     this.anyAddressPort = anyAddressPort;
   }
+
+  /// <summary>The cookie that carries the token for this studio's page.</summary>
+  public string CookieName { get; }
 
   /// <summary>The Host values of a studio on <paramref name="host"/>:<paramref name="port"/>; loopback ones are reachable under each loopback name.</summary>
   public static IEnumerable<string> HostsFor(string host, int port, bool loopback)
