@@ -8,7 +8,7 @@ namespace OpenTK.Mathematics;
 /// The rectangular matrices (<c>Matrix2x3</c> …) are not ported, so neither are the products with them.
 /// </summary>
 [Serializable]
-public struct Matrix2 : IEquatable<Matrix2>, IFormattable
+public partial struct Matrix2 : IEquatable<Matrix2>, IFormattable
 {
   public Vector2 Row0, Row1;
 
