@@ -13,9 +13,9 @@ import os, re, subprocess, sys, xml.etree.ElementTree as ET
 args = [a for a in sys.argv[1:] if not a.startswith('--')]
 gitdir, rev, dll, work = args[:4]
 # F# passes OpenTK 3's `ref x` arguments as ref cells, which bind a byref parameter but not an inref (C# `in`) one.
-# OpenTK 4 (and GrCis) declare those parameters `in`, so by default the harness writes them `&x`, as F# code for OpenTK 4
-# does; --raw keeps the suites' own text (then OpenTK 3's by-reference tests do not compile).
-raw = '--raw' in sys.argv
+# GrCis declares those parameters `in` (OpenTK 4) and gives each such method a `ref` twin (files *.RefForms.cs), so the
+# suites' own text compiles; --amp writes OpenTK 3's `ref x` as `&x` instead (to measure without the twins).
+raw = '--amp' not in sys.argv
 os.makedirs(work, exist_ok=True)
 
 def git_show(path):
