@@ -24,15 +24,22 @@ public sealed class StudioAnimation
   string? error;
   bool running = true;
 
-  StudioAnimation(string? folder) => Folder = folder;
+  StudioAnimation(string? folder, double fps)
+  {
+    Folder = folder;
+    Fps = fps;
+  }
 
   /// <summary>Where the frames are written, or null (kept in memory only).</summary>
   public string? Folder { get; }
 
+  /// <summary>The run's frames per second: the rate the page plays the finished frames at.</summary>
+  public double Fps { get; }
+
   /// <summary>Starts rendering <paramref name="run"/>'s frames on a worker thread.</summary>
   public static StudioAnimation Start(AnimationRun run, string? folder)
   {
-    var animation = new StudioAnimation(folder) { total = run.Timeline.FrameCount };
+    var animation = new StudioAnimation(folder, run.Timeline.Fps) { total = run.Timeline.FrameCount };
     run.FrameRendered += (_, e) =>
     {
       byte[]? png = e.File != null ? null : PngEncoder.Default.Encode(Rendering.Execution.RenderSetup.ToDisplayImage(e.Image, run.Job.Renderer.Gamma));
@@ -94,6 +101,6 @@ public sealed class StudioAnimation
   public object Status()
   {
     lock (sync)
-      return new { running, framesDone = frames.Count, framesTotal = total, seconds = elapsed.TotalSeconds, etaSeconds = eta.TotalSeconds, error, folder = Folder };
+      return new { running, framesDone = frames.Count, framesTotal = total, seconds = elapsed.TotalSeconds, etaSeconds = eta.TotalSeconds, error, folder = Folder, fps = Fps };
   }
 }

@@ -307,4 +307,131 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     browser.SwitchTo().Window(second);
     Until(browser, () => Messages().Contains("Another tab", StringComparison.Ordinal), "the second tab's notice");
   }
+
+  // The canvas's box on the page against the view's: (left, top, right, bottom) of each.
+  static (double[] Image, double[] View) Boxes(IWebDriver browser)
+  {
+    var boxes = (IReadOnlyCollection<object>)Js(browser, """
+      const b = r => [r.left, r.top, r.right, r.bottom];
+      return [b(document.getElementById('canvas').getBoundingClientRect()), b(document.getElementById('view').getBoundingClientRect())];
+      """)!;
+    double[][] both = boxes.Select(o => ((IReadOnlyCollection<object>)o).Select(Convert.ToDouble).ToArray()).ToArray();
+    return (both[0], both[1]);
+  }
+
+  static void AssertFitted(IWebDriver browser)
+  {
+    (double[] image, double[] view) = Boxes(browser);
+    Assert.True(image[0] >= view[0] - 0.5 && image[1] >= view[1] - 0.5 && image[2] <= view[2] + 0.5 && image[3] <= view[3] + 0.5,
+                $"image [{string.Join(", ", image)}] outside the view [{string.Join(", ", view)}]");
+    Assert.InRange(image[0] - view[0] - (view[2] - image[2]), -2.0, 2.0);
+    Assert.InRange(image[1] - view[1] - (view[3] - image[3]), -2.0, 2.0);
+    // As large as fits: it touches the view's sides or its top and bottom.
+    Assert.True(Math.Min(image[0] - view[0], image[1] - view[1]) <= 1.0, $"image [{string.Join(", ", image)}] smaller than fits [{string.Join(", ", view)}]");
+  }
+
+  [SkippableFact]
+  public void Fit_shows_the_whole_image_centred_and_key_1_shows_it_1_to_1()
+  {
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    RenderIn(browser, "Five balls", 160, 120);
+    Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 160, "the image");
+
+    // Zoomed and panned away first, so the fit has something to undo.
+    IWebElement view = browser.FindElement(By.Id("view"));
+    new Actions(browser).MoveToElement(view, 10, 10).ScrollByAmount(0, -300).Perform();
+    browser.FindElement(By.Id("fit")).Click();
+    AssertFitted(browser);
+    Assert.True(Boxes(browser).Image[2] - Boxes(browser).Image[0] > 160, "the small image is zoomed in to fit");
+
+    // Key 1: one image pixel per screen pixel, about the view's centre; key F fits again.
+    new Actions(browser).SendKeys("1").Perform();
+    (double[] image, double[] box) = Boxes(browser);
+    Assert.Equal(160.0, image[2] - image[0], 1);
+    Assert.InRange((image[0] + image[2]) / 2 - (box[0] + box[2]) / 2, -2.0, 2.0);
+    new Actions(browser).SendKeys("f").Perform();
+    AssertFitted(browser);
+    Shot(browser, "studio-fit.png");
+  }
+
+  [SkippableFact]
+  public void Play_steps_through_the_frames_and_the_frame_link_is_the_shown_frame()
+  {
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    Js(browser, "const s = document.getElementById('scene'); s.value = 'Balls'; s.dispatchEvent(new Event('change'));");
+    Js(browser, """
+      const set = (id, v) => { const f = document.getElementById(id); f.value = v; f.dispatchEvent(new Event('change')); };
+      set('width', 32); set('height', 24); set('animStart', 0); set('animEnd', 0.5); set('animFps', 10); set('animFolder', '');
+      """);
+    browser.FindElement(By.Id("animRender")).Click();
+    Until(browser, () => System.Text.RegularExpressions.Regex.IsMatch(browser.FindElement(By.Id("animStatus")).Text, @"^(\d+)/\1 frames") &&
+                         !browser.FindElement(By.Id("animStop")).Enabled, "the frames");
+    int last = int.Parse(browser.FindElement(By.Id("animStatus")).Text.Split('/')[0], System.Globalization.CultureInfo.InvariantCulture) - 1;
+    Assert.True(last >= 4, browser.FindElement(By.Id("animStatus")).Text);
+    IWebElement play = browser.FindElement(By.Id("animPlay"));
+    Until(browser, () => play.Enabled, "the Play button");
+    string Shown() => browser.FindElement(By.Id("animFrame")).GetAttribute("data-frame") ?? "";
+    Until(browser, () => Shown() == last.ToString(System.Globalization.CultureInfo.InvariantCulture), "the last frame on show");
+
+    // Play: the frames go round (from the last to the first and on).
+    play.Click();
+    Assert.Equal("Pause", play.Text);
+    var seen = new HashSet<string>();
+    Until(browser, () => { seen.Add(Shown()); return seen.Count >= 3; }, "three different frames while playing");
+    play.Click();
+    Assert.Equal("Play", play.Text);
+    System.Threading.Thread.Sleep(300);   // a step already under way ends
+    string k = Shown();
+    System.Threading.Thread.Sleep(400);
+    Assert.Equal(k, Shown());   // paused: it stays
+
+    // The link's PNG is the frame on show: the served frame's bytes, and the pixels the canvas shows.
+    IWebElement link = browser.FindElement(By.Id("framePng"));
+    Assert.True(link.Displayed);
+    string linked = (string)((IJavaScriptExecutor)browser).ExecuteAsyncScript("""
+      const done = arguments[arguments.length - 1];
+      fetch(document.getElementById('framePng').href).then(r => r.arrayBuffer()).then(b => {
+        let s = ''; for (const x of new Uint8Array(b)) s += String.fromCharCode(x); done(btoa(s)); });
+      """)!;
+    byte[] bytes = Convert.FromBase64String(linked);
+    byte[] frame = studio.Client.GetByteArrayAsync($"/api/animation/frame/{k}.png").GetAwaiter().GetResult();
+    Assert.Equal(frame, bytes);
+    string png = Path.Combine(studio.Folder, "shown-frame.png");
+    File.WriteAllBytes(png, bytes);
+    Rgb8Image expected = ImageFile.LoadRgb8(png);
+    var shown = ((IReadOnlyCollection<object>)Js(browser,
+      "const c = document.getElementById('canvas'); return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);")!)
+      .Select(Convert.ToByte).ToArray();
+    Assert.Equal(4 * 32 * 24, shown.Length);
+    for (int y = 0; y < 24; y++)
+      for (int x = 0; x < 32; x++)
+      {
+        (byte r, byte g, byte b) = expected.GetPixel(x, y);
+        int i = 4 * (y * 32 + x);
+        Assert.True(shown[i] == r && shown[i + 1] == g && shown[i + 2] == b, $"pixel [{x}, {y}] of frame {k}");
+      }
+  }
+
+  [SkippableFact]
+  public void The_probes_line_with_its_hash_is_readable_in_full()
+  {
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    RenderIn(browser, "Five balls", 160, 120);
+    Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 160, "the image");
+    Js(browser, "window.dispatchEvent(new KeyboardEvent('keydown', { key: 'r' }));");
+    IWebElement canvas = browser.FindElement(By.Id("canvas"));
+    new Actions(browser).MoveToElement(canvas, 80 - canvas.Size.Width / 2, 60 - canvas.Size.Height / 2).Click().Perform();
+    Until(browser, () => browser.FindElement(By.Id("rays")).Text.Contains("Primary", StringComparison.Ordinal), "the ray tree");
+    IWebElement rays = browser.FindElement(By.Id("rays"));
+    Assert.Contains("hash ", rays.Text);
+    long scroll = (long)Js(browser, "return document.getElementById('rays').scrollWidth;")!;
+    long client = (long)Js(browser, "return document.getElementById('rays').clientWidth;")!;
+    Assert.True(scroll <= client, $"the ray tree is {scroll} px wide in {client} px");
+  }
 }

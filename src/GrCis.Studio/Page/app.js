@@ -250,14 +250,19 @@ async function renderFrames() {
   followFrames();
 }
 
+// Play: the finished frames one after another at the animation's rate, from the first again after the last.
+let playing = false, playTimer = null, animFps = 25;
+
 async function followFrames() {
   const a = await (await api("animation")).json();
+  if (a.fps > 0) animFps = a.fps;
   $("animStatus").textContent = `${a.framesDone}/${a.framesTotal} frames, ${a.seconds.toFixed(1)} s` +
     (a.running ? `, ETA ${a.etaSeconds.toFixed(1)} s` : "") + (a.folder ? ` → ${a.folder}` : "") + (a.error ? ` (${a.error})` : "");
   const scrub = $("animScrub");
-  const follow = Number(scrub.value) >= Number(scrub.max);
+  const follow = !playing && Number(scrub.value) >= Number(scrub.max);
   scrub.max = Math.max(0, a.framesDone - 1);
   scrub.disabled = a.framesDone === 0;
+  $("animPlay").disabled = a.framesDone === 0;
   if (a.framesDone > 0 && follow) { scrub.value = a.framesDone - 1; await showFrame(a.framesDone - 1); }
   if (a.running) setTimeout(followFrames, 250);
   else $("animStop").disabled = true;
@@ -265,7 +270,31 @@ async function followFrames() {
 
 async function showFrame(k) {
   const r = await api(`animation/frame/${k}.png`);
-  if (r.ok) { $("view-kind").value = ""; await draw(r); }
+  if (!r.ok) return;
+  $("view-kind").value = "";
+  await draw(r);
+  // The shown frame: its number and its PNG, the bytes served (the file written, when frames go to a folder).
+  $("animFrame").textContent = `frame ${k + 1}/${Number($("animScrub").max) + 1}`;
+  $("animFrame").dataset.frame = k;
+  $("framePng").href = `api/animation/frame/${k}.png`;
+  $("framePng").download = `out${String(k).padStart(4, "0")}.png`;
+  $("framePng").hidden = false;
+}
+
+function togglePlay() {
+  playing = !playing;
+  $("animPlay").textContent = playing ? "Pause" : "Play";
+  clearTimeout(playTimer);
+  if (playing) playStep();
+}
+
+async function playStep() {
+  const scrub = $("animScrub"), started = performance.now();
+  const next = Number(scrub.value) >= Number(scrub.max) ? 0 : Number(scrub.value) + 1;
+  scrub.value = next;
+  try { await showFrame(next); } catch { }
+  // The frame's time less the time it took to fetch and draw, so the rate holds when it can.
+  if (playing) playTimer = setTimeout(playStep, Math.max(0, 1000 / animFps - (performance.now() - started)));
 }
 
 async function openEditor() {
@@ -411,6 +440,24 @@ async function draw(response) {
 
 function place() { canvas.style.transform = `translate(${panX}px, ${panY}px) scale(${zoom})`; }
 
+// The whole image in the view, as large as it fits (within the zoom's 1/8 to 64), centred.
+function fit() {
+  const w = $("view").clientWidth, h = $("view").clientHeight;
+  zoom = Math.min(64, Math.max(1 / 8, Math.min(w / canvas.width, h / canvas.height)));
+  panX = (w - canvas.width * zoom) / 2;
+  panY = (h - canvas.height * zoom) / 2;
+  place();
+}
+
+// 1:1 about the view's centre: the pixel in the middle stays there.
+function actualSize() {
+  const cx = $("view").clientWidth / 2, cy = $("view").clientHeight / 2;
+  panX = cx - (cx - panX) / zoom;
+  panY = cy - (cy - panY) / zoom;
+  zoom = 1;
+  place();
+}
+
 function pixelAt(e) {
   const box = $("view").getBoundingClientRect();
   return { x: Math.floor((e.clientX - box.left - panX) / zoom), y: Math.floor((e.clientY - box.top - panY) / zoom) };
@@ -456,7 +503,13 @@ $("view").addEventListener("mousemove", e => {
   const d = ctx.getImageData(p.x, p.y, 1, 1).data;
   $("readout").textContent = `[${p.x}, ${p.y}] = (${d[0]}, ${d[1]}, ${d[2]})`;
 });
-window.addEventListener("keydown", e => { if (e.key === "r" && e.target === document.body) { zoom = 1; panX = panY = 0; place(); } });
+window.addEventListener("keydown", e => {
+  // Keys for the view, except while typing (a field, the editor) or with a modifier (Ctrl+S and the like).
+  if (e.ctrlKey || e.metaKey || e.altKey || e.target.closest?.("input, textarea, select, .CodeMirror")) return;
+  if (e.key === "r") { zoom = 1; panX = panY = 0; place(); }
+  else if (e.key === "f" || e.key === "F") fit();
+  else if (e.key === "1") actualSize();
+});
 
 async function probe(p) {
   if (p.x < 0 || p.y < 0 || p.x >= canvas.width || p.y >= canvas.height) return;
@@ -514,6 +567,8 @@ $("add").addEventListener("click", async () => {
 $("animRender").addEventListener("click", renderFrames);
 $("animStop").addEventListener("click", () => api("animation/stop", { method: "POST" }));
 $("animScrub").addEventListener("input", () => showFrame(Number($("animScrub").value)));
+$("animPlay").addEventListener("click", togglePlay);
+$("fit").addEventListener("click", fit);
 $("show3d").addEventListener("click", async () => { $("rays3dPane").hidden = !$("rays3dPane").hidden; if (!$("rays3dPane").hidden) await show3d(); });
 $("save").addEventListener("click", save);
 $("closeEditor").addEventListener("click", () => { $("editorPane").hidden = true; });
