@@ -434,4 +434,53 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     long client = (long)Js(browser, "return document.getElementById('rays').clientWidth;")!;
     Assert.True(scroll <= client, $"the ray tree is {scroll} px wide in {client} px");
   }
+
+  static byte[] CanvasPixels(IWebDriver browser, string id) => ((IReadOnlyCollection<object>)Js(browser,
+    "const c = document.getElementById(arguments[0]); return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);", id)!)
+    .Select(Convert.ToByte).ToArray();
+
+  [SkippableFact]
+  public void A_kept_render_is_compared_with_the_one_on_show_left_and_right_of_the_split()
+  {
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    RenderIn(browser, "Five balls", 64, 48);
+    Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 64, "the first image");
+    byte[] first = CanvasPixels(browser, "canvas");
+    RenderIn(browser, "Flags", 64, 48);
+    Until(browser, () => browser.FindElement(By.Id("historyLabel")).Text.Contains("Flags", StringComparison.Ordinal) &&
+                         CanvasPixels(browser, "canvas") is var shown && !shown.SequenceEqual(first), "the second image");
+    byte[] second = CanvasPixels(browser, "canvas");
+
+    // B: the render before the one on show, drawn over it, its pixels the first render's.
+    long options = (long)Js(browser, "return document.getElementById('abWith').options.length;")!;
+    string b = (options - 3).ToString(System.Globalization.CultureInfo.InvariantCulture);
+    Js(browser, "const s = document.getElementById('abWith'); s.value = arguments[0]; s.dispatchEvent(new Event('change'));", b);
+    Assert.Contains("Five balls", (string)Js(browser, "return document.getElementById('abWith').selectedOptions[0].textContent;")!);
+    Until(browser, () => (string?)Js(browser, "return document.getElementById('canvasB').dataset.item;") == b, "the B image");
+    Assert.Equal(first, CanvasPixels(browser, "canvasB"));
+    Assert.True(browser.FindElement(By.Id("abSplit")).Displayed);
+
+    // On screen (fitted): left of the split A, right of it B; with the split at 100 % all A.
+    new Actions(browser).SendKeys("f").Perform();
+    int row = Enumerable.Range(0, 48).First(y => Differs(y, 8) && Differs(y, 56));
+    bool Differs(int y, int x) => Enumerable.Range(0, 3).Any(c => Math.Abs(first[4 * (y * 64 + x) + c] - second[4 * (y * 64 + x) + c]) > 16);
+    (byte, byte, byte) Pixel(byte[] image, int x) => (image[4 * (row * 64 + x)], image[4 * (row * 64 + x) + 1], image[4 * (row * 64 + x) + 2]);
+    Assert.Equal((Pixel(second, 8), Pixel(first, 56)), (OnScreen(8), OnScreen(56)));
+    Shot(browser, "studio-ab.png");
+    Js(browser, "const s = document.getElementById('abSplit'); s.value = 100; s.dispatchEvent(new Event('input'));");
+    Assert.Equal((Pixel(second, 8), Pixel(second, 56)), (OnScreen(8), OnScreen(56)));
+
+    (byte, byte, byte) OnScreen(int x)
+    {
+      var box = ((IReadOnlyCollection<object>)Js(browser, "const r = document.getElementById('canvas').getBoundingClientRect(); return [r.left, r.top, r.width];")!)
+        .Select(Convert.ToDouble).ToArray();
+      string shot = Path.Combine(studio.Folder, "ab-shot.png");
+      File.WriteAllBytes(shot, browser.GetScreenshot().AsByteArray);
+      Rgb8Image screen = ImageFile.LoadRgb8(shot);
+      double scale = box[2] / 64;
+      return screen.GetPixel((int)(box[0] + (x + 0.5) * scale), (int)(box[1] + (row + 0.5) * scale));
+    }
+  }
 }

@@ -13,6 +13,11 @@ internal static class HistoryApi
     app.MapGet("/api/history", (StudioSession s) => List(s.Controller.History));
     app.MapPost("/api/history/back", (StudioSession s) => Move(s, back: true));
     app.MapPost("/api/history/forward", (StudioSession s) => Move(s, back: false));
+    // Any kept render's image (0 = the oldest), for the page's A/B comparison with the image on show.
+    app.MapGet("/api/history/{i:int}.png", (int i, StudioSession s) =>
+      s.Controller.History.Items.ElementAtOrDefault(i) is RenderRecord r
+        ? Results.Bytes(Rendering.Imaging.PngEncoder.Default.Encode(r.ToRgb8()), "image/png")
+        : Results.NotFound());
   }
 
   static object List(RenderHistory h) => new

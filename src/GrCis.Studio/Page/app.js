@@ -385,6 +385,12 @@ async function loadHistory(list) {
   $("back").disabled = !h.canGoBack;
   $("forward").disabled = !h.canGoForward;
   $("historyLabel").textContent = h.position >= 0 ? `${h.position + 1}/${h.items.length}: ${h.items[h.position].label}` : "";
+  // The B choices: every kept render; a choice whose render is no longer the same one is dropped.
+  const select = $("abWith"), chosen = select.value, chosenLabel = select.selectedOptions[0]?.textContent;
+  select.length = 1;
+  h.items.forEach((item, i) => select.add(new Option(`${i + 1}: ${item.label}`, String(i))));
+  select.value = chosen !== "" && select.options[Number(chosen) + 1]?.textContent === chosenLabel ? chosen : "";
+  if (select.value !== chosen) await compareWith();
 }
 
 async function moveHistory(direction) {
@@ -438,7 +444,29 @@ async function draw(response) {
   place();
 }
 
-function place() { canvas.style.transform = `translate(${panX}px, ${panY}px) scale(${zoom})`; }
+function place() {
+  canvas.style.transform = $("canvasB").style.transform = `translate(${panX}px, ${panY}px) scale(${zoom})`;
+}
+
+// A/B: a kept render (B) drawn over the image on show (A), placed as it is and cut at the split: A left of it, B right.
+async function compareWith() {
+  const i = $("abWith").value, b = $("canvasB");
+  $("abSplit").hidden = b.hidden = i === "";
+  if (i === "") return;
+  try {
+    const bitmap = await createImageBitmap(await (await api(`history/${i}.png`)).blob());
+    b.width = bitmap.width;
+    b.height = bitmap.height;
+    b.getContext("2d").drawImage(bitmap, 0, 0);
+    b.dataset.item = i;
+    split();
+    place();
+  } catch (e) {
+    showError(e.message);
+  }
+}
+
+function split() { $("canvasB").style.clipPath = `inset(0 0 0 ${$("abSplit").value}%)`; }
 
 // The whole image in the view, as large as it fits (within the zoom's 1/8 to 64), centred.
 function fit() {
@@ -569,6 +597,8 @@ $("animStop").addEventListener("click", () => api("animation/stop", { method: "P
 $("animScrub").addEventListener("input", () => showFrame(Number($("animScrub").value)));
 $("animPlay").addEventListener("click", togglePlay);
 $("fit").addEventListener("click", fit);
+$("abWith").addEventListener("change", compareWith);
+$("abSplit").addEventListener("input", split);
 $("show3d").addEventListener("click", async () => { $("rays3dPane").hidden = !$("rays3dPane").hidden; if (!$("rays3dPane").hidden) await show3d(); });
 $("save").addEventListener("click", save);
 $("closeEditor").addEventListener("click", () => { $("editorPane").hidden = true; });
