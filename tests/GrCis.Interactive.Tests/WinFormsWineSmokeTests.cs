@@ -9,8 +9,9 @@ namespace GrCis.Interactive.Tests;
 /// <summary>
 /// The WinForms demo window itself (demos/GrCis.Demo.WinForms), published for win-x64 and started under
 /// Wine on a virtual X display: <c>-render-to</c> drives the window's own Render and Save image path,
-/// and the saved PNG must equal <c>grcis render</c>'s byte for byte, for a still script (Five balls) and an
-/// animated one (Orbit, whose moving ball the window once lost). Needs the Debian packages wine and
+/// and the saved PNG must equal <c>grcis render</c>'s byte for byte, for five kinds of script: plain (Five balls),
+/// animated (Orbit, whose moving ball the window once lost), textured (an image texture), distributed ray
+/// tracing (depth of field) and path-traced (the Cornell box). Needs the Debian packages wine and
 /// xvfb (skipped without them unless GRCIS_REQUIRE_TOOLS=1).
 /// </summary>
 public class WinFormsWineSmokeTests
@@ -45,7 +46,7 @@ public class WinFormsWineSmokeTests
   }
 
   [SkippableFact]
-  public void Demo_window_under_wine_renders_a_still_and_an_animated_script_like_grcis_render()
+  public void Demo_window_under_wine_renders_five_kinds_of_script_like_grcis_render()
   {
     RequiredTool.Find("wine", "wine");
     string xvfbRun = RequiredTool.Find("xvfb-run", "xvfb");
@@ -63,12 +64,12 @@ public class WinFormsWineSmokeTests
       // The CLR under Wine 8 needs W^X off (docs/interactive.md).
       ["DOTNET_EnableWriteXorExecute"] = "0",
     };
-    foreach (string name in new[] { "FiveBalls", "Orbit" })
+    foreach (string name in new[] { "FiveBalls", "Orbit", "ImageTexture", "DepthOfField", "CornellBox" })
     {
       string script = Path.Combine(root, "scripts", name + ".cs");
       string window = tmp.File(name + "-window.png"), cli = tmp.File(name + "-cli.png");
       (code, log) = Run(xvfbRun, ["-a", "-s", "-screen 0 1280x900x24", "wine", tmp.File("demo/grcis-demo.exe"),
-        "-nodefault", "-scene", script, "-render-to", window], env, TimeSpan.FromMinutes(5));
+        "-nodefault", "-scene", script, "-render-to", window], env, TimeSpan.FromMinutes(6));
       Assert.True(File.Exists(window), $"the window saved no image of {name} (exit {code}): {log}");
 
       var error = new StringWriter();
