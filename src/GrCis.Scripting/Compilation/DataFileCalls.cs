@@ -61,10 +61,7 @@ internal static class DataFileCalls
       InstrumentedSource edited = source;
       foreach ((int at, string insert) in inserts)
         edited = edited.WithReplacement(new TextSpan(at, 0), insert);
-      SyntaxTree rewritten = CSharpSyntaxTree.ParseText(edited.Instrumented, parseOptions, tree.FilePath);
-      compilation = compilation.ReplaceSyntaxTree(tree, rewritten);
-      sources.Remove(tree);
-      sources[rewritten] = edited;
+      compilation = edited.Replace(tree, compilation, sources, parseOptions);
     }
     return compilation;
   }

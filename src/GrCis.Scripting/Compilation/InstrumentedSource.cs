@@ -1,4 +1,7 @@
 using System;
+using System.Collections.Generic;
+using Microsoft.CodeAnalysis;
+using Microsoft.CodeAnalysis.CSharp;
 using Microsoft.CodeAnalysis.Text;
 
 namespace GrCis.Scripting.Compilation;
@@ -87,5 +90,18 @@ internal sealed class InstrumentedSource
     if (line <= 0 || column <= 0)
       return column;
     return ToOriginal(new LinePosition(line - 1, column - 1)).Character + 1;
+  }
+
+  /// <summary>
+  /// Puts this source (an edit of <paramref name="tree"/>'s) in the place of <paramref name="tree"/>: parsed with
+  /// <paramref name="parseOptions"/>, in <paramref name="compilation"/> and in the <paramref name="sources"/> of a pass.
+  /// </summary>
+  public CSharpCompilation Replace(SyntaxTree tree, CSharpCompilation compilation, Dictionary<SyntaxTree, InstrumentedSource> sources,
+                                   CSharpParseOptions parseOptions)
+  {
+    SyntaxTree rewritten = CSharpSyntaxTree.ParseText(Instrumented, parseOptions, tree.FilePath);
+    sources.Remove(tree);
+    sources[rewritten] = this;
+    return compilation.ReplaceSyntaxTree(tree, rewritten);
   }
 }

@@ -64,10 +64,7 @@ internal static class OverrideAccess
       InstrumentedSource edited = source;
       foreach ((TextSpan span, string text, Changed _) in edits.OrderByDescending(e => e.Span.Start))
         edited = edited.WithReplacement(span, text);
-      SyntaxTree rewritten = CSharpSyntaxTree.ParseText(edited.Instrumented, parseOptions, tree.FilePath);
-      compilation = compilation.ReplaceSyntaxTree(tree, rewritten);
-      sources.Remove(tree);
-      sources[rewritten] = edited;
+      compilation = edited.Replace(tree, compilation, sources, parseOptions);
       changed.AddRange(edits.Select(e => e.What));
     }
     return compilation;

@@ -180,10 +180,7 @@ internal static class ScriptCompiler
       if (missing.Count == 0)
         continue;
       SourceText blanked = MissingNamespaces.Blank(tree.GetText(), missing);
-      SyntaxTree edited = CSharpSyntaxTree.ParseText(blanked, parseOptions, tree.FilePath);
-      compilation = compilation.ReplaceSyntaxTree(tree, edited);
-      sources.Remove(tree);
-      sources[edited] = source.WithInstrumented(blanked);
+      compilation = source.WithInstrumented(blanked).Replace(tree, compilation, sources, parseOptions);
       foreach (MissingNamespaces.Missing m in missing)
         removed.Add(new MissingNamespaces.Removed(tree.FilePath,
           source.Original.Lines.GetLinePosition(source.ToOriginal(m.Span.Start)), m.Namespace));

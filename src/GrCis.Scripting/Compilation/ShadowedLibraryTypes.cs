@@ -97,10 +97,7 @@ internal static class ShadowedLibraryTypes
       InstrumentedSource edited = source;
       foreach (int end in ends.OrderByDescending(e => e))
         edited = edited.WithReplacement(new TextSpan(end, 0), Suffix);
-      SyntaxTree rewritten = CSharpSyntaxTree.ParseText(edited.Instrumented, parseOptions, tree.FilePath);
-      compilation = compilation.ReplaceSyntaxTree(tree, rewritten);
-      sources.Remove(tree);
-      sources[rewritten] = edited;
+      compilation = edited.Replace(tree, compilation, sources, parseOptions);
     }
     return compilation;
   }
