@@ -54,6 +54,17 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
 
   static object? Js(IWebDriver browser, string script, params object[] args) => ((IJavaScriptExecutor)browser).ExecuteScript(script, args);
 
+  /// <summary>Opens the studio's page and adds the script file <paramref name="path"/> to its scene list through the file picker.</summary>
+  void OpenAndAdd(ChromeDriver browser, string path)
+  {
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    browser.FindElement(By.Id("open")).Click();
+    Until(browser, () => browser.FindElements(By.CssSelector("#files option")).Count > 0, "the file picker");
+    Js(browser, "document.getElementById('files').value = arguments[0];", path);
+    browser.FindElement(By.Id("add")).Click();
+  }
+
   static void RenderIn(ChromeDriver browser, string scene, int width, int height)
   {
     Js(browser, "const s = document.getElementById('scene'); s.value = arguments[0]; s.dispatchEvent(new Event('change'));", scene);
@@ -151,12 +162,7 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
       context[PropertyName.CTX_FPS] = 5.0;
       """);
     using ChromeDriver browser = Browser();
-    browser.Navigate().GoToUrl(studio.Server.Url);
-    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
-    browser.FindElement(By.Id("open")).Click();
-    Until(browser, () => browser.FindElements(By.CssSelector("#files option")).Count > 0, "the file picker");
-    Js(browser, "document.getElementById('files').value = arguments[0];", path);
-    browser.FindElement(By.Id("add")).Click();
+    OpenAndAdd(browser, path);
     Js(browser, "document.getElementById('algorithm').value = '';");   // the scene's choice, whatever an earlier test left
 
     string Value(string id) => (string)Js(browser, "return document.getElementById(arguments[0]).value;", id)!;
@@ -199,12 +205,7 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     File.WriteAllText(path, "Rendering.Scenes.FiveBalls(scene);\n");
     string marker = Path.Combine(studio.Folder, "browser-stuck").Replace("\\", "/", StringComparison.Ordinal);
     using ChromeDriver browser = Browser();
-    browser.Navigate().GoToUrl(studio.Server.Url);
-    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
-    browser.FindElement(By.Id("open")).Click();
-    Until(browser, () => browser.FindElements(By.CssSelector("#files option")).Count > 0, "the file picker");
-    Js(browser, "document.getElementById('files').value = arguments[0];", path);
-    browser.FindElement(By.Id("add")).Click();
+    OpenAndAdd(browser, path);
     Until(browser, () => browser.FindElement(By.Id("edit")).Displayed, "the Edit button of the added script");
     browser.FindElement(By.Id("edit")).Click();
     Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
@@ -241,12 +242,7 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     string path = Path.Combine(studio.ScriptsFolder, "ChangedOnDisk.cs");
     File.WriteAllText(path, "Rendering.Scenes.FiveBalls(scene);\n");
     using ChromeDriver browser = Browser();
-    browser.Navigate().GoToUrl(studio.Server.Url);
-    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
-    browser.FindElement(By.Id("open")).Click();
-    Until(browser, () => browser.FindElements(By.CssSelector("#files option")).Count > 0, "the file picker");
-    Js(browser, "document.getElementById('files').value = arguments[0];", path);
-    browser.FindElement(By.Id("add")).Click();
+    OpenAndAdd(browser, path);
     Until(browser, () => browser.FindElement(By.Id("edit")).Displayed, "the Edit button of the added script");
     browser.FindElement(By.Id("edit")).Click();
     Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
