@@ -181,6 +181,13 @@ public sealed partial class DemoController : IDisposable
   public event EventHandler<ScriptChangedEventArgs>? ScriptChanged;
 
   /// <summary>
+  /// Raised when a render is asked for (<see cref="RenderAsync"/>, a watched script's change) once it has its number
+  /// (<see cref="RenderId"/>, the argument) and is busy building: a front end told of changes rather than polling learns here
+  /// that the work on show is a new one.
+  /// </summary>
+  public event EventHandler<long>? RenderStarted;
+
+  /// <summary>
   /// Builds the selected scene with its parameter text and renders it, stopping any build or render in
   /// progress. The script runs on a worker thread, so a slow or stuck script never blocks the caller's
   /// (UI) thread, and <see cref="Stop"/> ends it (see <see cref="Interruption"/>). Returns the result, or
@@ -202,6 +209,7 @@ public sealed partial class DemoController : IDisposable
       building = build = new CancellationTokenSource();
       previous = buildTask;
     }
+    Raise(RenderStarted, id);
     try
     {
       return await RenderAsync(id, entry, settings, given, building, previous).ConfigureAwait(false);

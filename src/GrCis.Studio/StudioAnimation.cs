@@ -37,7 +37,8 @@ public sealed class StudioAnimation
   public double Fps { get; }
 
   /// <summary>Starts rendering <paramref name="run"/>'s frames on a worker thread.</summary>
-  public static StudioAnimation Start(AnimationRun run, string? folder)
+  /// <param name="changed">Called after each frame and at the end of the run (the page is told of them).</param>
+  public static StudioAnimation Start(AnimationRun run, string? folder, Action? changed = null)
   {
     var animation = new StudioAnimation(folder, run.Timeline.Fps) { total = run.Timeline.FrameCount };
     run.FrameRendered += (_, e) =>
@@ -49,6 +50,7 @@ public sealed class StudioAnimation
         animation.elapsed = e.Elapsed;
         animation.eta = e.Eta;
       }
+      changed?.Invoke();
     };
     string? pattern = folder == null ? null : System.IO.Path.Combine(folder, "out####.png");
     run.RunAsync(pattern, animation.cancel.Token).ContinueWith(t =>
@@ -59,6 +61,7 @@ public sealed class StudioAnimation
         if (t.Exception != null)
           animation.error = t.Exception.GetBaseException().Message;
       }
+      changed?.Invoke();
     }, TaskScheduler.Default);
     return animation;
   }
@@ -98,9 +101,9 @@ public sealed class StudioAnimation
   }
 
   /// <summary>What the page shows of the run.</summary>
-  public object Status()
+  public AnimationStatus Status()
   {
     lock (sync)
-      return new { running, framesDone = frames.Count, framesTotal = total, seconds = elapsed.TotalSeconds, etaSeconds = eta.TotalSeconds, error, folder = Folder, fps = Fps };
+      return new AnimationStatus(running, frames.Count, total, elapsed.TotalSeconds, eta.TotalSeconds, error, Folder, Fps);
   }
 }

@@ -12,6 +12,7 @@ using Microsoft.AspNetCore.Hosting.Server;
 using Microsoft.AspNetCore.Hosting.Server.Features;
 using Microsoft.AspNetCore.Http.Json;
 using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.FileProviders;
 using Microsoft.Extensions.Logging;
 
 namespace GrCis.Studio;
@@ -19,7 +20,8 @@ namespace GrCis.Studio;
 /// <summary>
 /// <c>grcis studio</c>: the interactive demo as a local web page. One Kestrel server on <see cref="StudioOptions.Host"/>
 /// (loopback by default) serves the page from the assembly and a small JSON/PNG API over one
-/// <see cref="DemoController"/>, behind the <see cref="AccessGuard"/>.
+/// <see cref="DemoController"/> (<see cref="StudioApi"/>, its changes pushed as events by <see cref="StudioEvents"/>),
+/// all behind the <see cref="AccessGuard"/>; every error is a problem details document (RFC 7807).
 /// </summary>
 public sealed class StudioServer : IAsyncDisposable
 {
@@ -72,9 +74,15 @@ public sealed class StudioServer : IAsyncDisposable
         k.Listen(IPAddress.Parse(options.Host.Trim('[', ']')), options.Port);
     });
     builder.Services.Configure<JsonOptions>(o => o.SerializerOptions.Converters.Add(new JsonStringEnumConverter()));
+    builder.Services.AddProblemDetails();
     builder.Services.AddSingleton(session);
     builder.Services.AddSingleton(files);
     WebApplication app = builder.Build();
+
+    // A failure inside an endpoint, and an answer with a status and no body (a 404 of an image not rendered yet), are
+    // problem details too.
+    app.UseExceptionHandler();
+    app.UseStatusCodePages();
 
     // The port is known only once Kestrel listens (--port 0): the guard reads the hosts it allows then.
     AccessGuard? guard = null;
@@ -85,7 +93,16 @@ public sealed class StudioServer : IAsyncDisposable
       context.Response.StatusCode = Microsoft.AspNetCore.Http.StatusCodes.Status503ServiceUnavailable;
       return Task.CompletedTask;
     });
-    StudioApi.Map(app);
+    // The page: its files as built into the assembly, read in place (no copy per request), with an entity tag so a
+    // reload costs a 304; "no-cache" makes the browser ask, so a new studio's page is never an old one from the cache.
+    var page = new EmbeddedFileProvider(typeof(StudioServer).Assembly, "page");
+    app.UseDefaultFiles(new DefaultFilesOptions { FileProvider = page });
+    app.UseStaticFiles(new StaticFileOptions
+    {
+      FileProvider = page,
+      OnPrepareResponse = f => f.Context.Response.Headers.CacheControl = "no-cache",
+    });
+    app.MapStudioApi();
     try
     {
       await app.StartAsync(cancel).ConfigureAwait(false);

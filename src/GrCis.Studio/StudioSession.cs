@@ -1,5 +1,7 @@
 using System;
 using System.Collections.Generic;
+using System.Threading;
+using System.Threading.Tasks;
 using GrCis.Hosting;
 using GrCis.Interactive;
 using Rendering.Imaging;
@@ -9,7 +11,8 @@ namespace GrCis.Studio;
 /// <summary>
 /// The demo's logic (<see cref="DemoController"/>) as the page sees it: the latest image (a preview while
 /// rendering, the final image after), a version number that changes with it, and the state of the render.
-/// The page polls <see cref="Status"/> and fetches the image when its version changes.
+/// Every change is announced (<see cref="NextChange"/>), so the event stream (<see cref="StudioEvents"/>) pushes it to the
+/// page, which fetches the image when its version changes; <see cref="Status"/> is the whole state at once.
 /// </summary>
 public sealed class StudioSession : IDisposable
 {
@@ -27,6 +30,15 @@ public sealed class StudioSession : IDisposable
   // A saved script other than the watched one being compiled (Check); its number, so a stopped or replaced check says nothing.
   bool checking;
   long checkId;
+  // What the event stream tells apart (StudioEvents): a change of the error or diagnostics (set or cleared), and a
+  // render's completion (how many so far, the last one's number, whether it was stopped).
+  long errorSequence;
+  long completions;
+  long completedId;
+  bool cancelled;
+  // Completed at the next change and replaced: whoever waits on it learns of the change (NextChange).
+  TaskCompletionSource changed = new(TaskCreationOptions.RunContinuationsAsynchronously);
+  int streams;
 
   public StudioSession(DemoController controller)
   {
@@ -37,6 +49,8 @@ public sealed class StudioSession : IDisposable
     Controller.WatchDebounce = TimeSpan.FromMilliseconds(100);
     Controller.WatchScript = true;
     Controller.ScriptChanged += (_, _) => Started();
+    Controller.RenderStarted += (_, _) => Changed();
+    Controller.SceneEvaluated += (_, _) => Changed();
     Controller.PreviewReady += (_, e) =>
     {
       if (e.Samples != null)
@@ -54,6 +68,7 @@ public sealed class StudioSession : IDisposable
         fraction = e.Fraction;
         elapsed = e.Elapsed;
       }
+      Changed();
     };
     Controller.RenderCompleted += (_, e) =>
     {
@@ -62,6 +77,10 @@ public sealed class StudioSession : IDisposable
         statistics = e.Result.Statistics.ToString();
         samples = e.Result.Cancelled ? samples : e.Result.Statistics.SamplesPerPixel;
         noise = e.Result.Cancelled ? noise : e.Result.Statistics.Noise;
+        // The controller raises only the completion of the render asked for last: this one.
+        completions++;
+        completedId = Controller.RenderId;
+        cancelled = e.Result.Cancelled;
       }
       Show(e.Result.Image, e.Result.Gamma, 1.0);
     };
@@ -71,7 +90,9 @@ public sealed class StudioSession : IDisposable
       {
         error = message;
         diagnostics = ScriptErrors.Parse(message);
+        errorSequence++;
       }
+      Changed();
     };
   }
 
@@ -81,7 +102,8 @@ public sealed class StudioSession : IDisposable
   /// <param name="algorithm">The image function replacing the script's (<see cref="DemoController.Algorithm"/>); null = the scene's choice.</param>
   /// <param name="progressive">Passes of samples or tiles (<see cref="DemoController.Progressive"/>); null = by the algorithm.</param>
   /// <param name="given">The settings the user changed, which win over the script's own values (<see cref="DemoController.Given"/>).</param>
-  public void Render(SceneEntry entry, string param, RenderSettings settings, RenderAlgorithm? algorithm = null, bool? progressive = null,
+  /// <returns>The render's number (<see cref="DemoController.RenderId"/>): the events of this render carry it.</returns>
+  public long Render(SceneEntry entry, string param, RenderSettings settings, RenderAlgorithm? algorithm = null, bool? progressive = null,
                      GivenSettings given = GivenSettings.None)
   {
     Started();
@@ -92,14 +114,20 @@ public sealed class StudioSession : IDisposable
     Controller.Algorithm = algorithm;
     Controller.Progressive = progressive;
     // RenderAsync numbers the render before it returns: the continuation knows which one it belongs to.
-    System.Threading.Tasks.Task<RenderResult?> rendering = Controller.RenderAsync();
+    Task<RenderResult?> rendering = Controller.RenderAsync();
     long id = Controller.RenderId;
     _ = rendering.ContinueWith(t =>
     {
       lock (sync)
         if (t.Exception != null && id == Controller.RenderId)   // not when a newer render replaced this one
+        {
           error = t.Exception.GetBaseException().Message;
-    }, System.Threading.Tasks.TaskScheduler.Default);
+          errorSequence++;
+        }
+      // Whatever ended it (done, failed, stopped, replaced), the phase may have changed.
+      Changed();
+    }, TaskScheduler.Default);
+    return id;
   }
 
   /// <summary>
@@ -116,11 +144,13 @@ public sealed class StudioSession : IDisposable
       checking = true;
       error = null;
       diagnostics = Array.Empty<ScriptError>();
+      errorSequence++;
     }
+    Changed();
     _ = CheckAsync(entry, id);
   }
 
-  async System.Threading.Tasks.Task CheckAsync(SceneEntry entry, long id)
+  async Task CheckAsync(SceneEntry entry, long id)
   {
     string? message = null;
     try
@@ -144,8 +174,10 @@ public sealed class StudioSession : IDisposable
       {
         error = message;
         diagnostics = ScriptErrors.Parse(message);
+        errorSequence++;
       }
     }
+    Changed();
   }
 
   /// <summary>Stops whatever runs: the script being built, the render, a saved script being compiled. Idle at once.</summary>
@@ -157,6 +189,7 @@ public sealed class StudioSession : IDisposable
       checkId++;
       checking = false;
     }
+    Changed();
   }
 
   /// <summary>What the studio does now: <c>compiling</c> (a script being built: compiled and run), <c>rendering</c> or <c>idle</c>.</summary>
@@ -176,7 +209,9 @@ public sealed class StudioSession : IDisposable
       elapsed = TimeSpan.Zero;
       samples = null;
       noise = null;
+      errorSequence++;
     }
+    Changed();
   }
 
   void Show(FloatImage shown, double g, double done)
@@ -188,6 +223,7 @@ public sealed class StudioSession : IDisposable
       fraction = done;
       version++;
     }
+    Changed();
   }
 
   /// <summary>What the page shows about the render now.</summary>
@@ -207,8 +243,41 @@ public sealed class StudioSession : IDisposable
         Width = Controller.LastJob?.Width,
         Height = Controller.LastJob?.Height,
         SamplesPerPixel = Controller.LastJob?.Settings.SamplesPerPixel,
+        ErrorSequence = errorSequence,
+        Completions = completions,
+        CompletedRenderId = completedId,
+        Cancelled = cancelled,
       };
   }
+
+  /// <summary>
+  /// A task that completes at the next change of the state (<see cref="Status"/>, the animation): ask for it before reading
+  /// the state, so no change between the two is missed.
+  /// </summary>
+  public Task NextChange()
+  {
+    lock (sync)
+      return changed.Task;
+  }
+
+  /// <summary>Tells whoever waits (<see cref="NextChange"/>) that the state changed.</summary>
+  internal void Changed()
+  {
+    TaskCompletionSource done;
+    lock (sync)
+    {
+      done = changed;
+      changed = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+    }
+    done.TrySetResult();
+  }
+
+  /// <summary>The event streams open now (<see cref="StudioEvents"/>): each ends when its page goes or the studio stops.</summary>
+  public int EventStreams => Volatile.Read(ref streams);
+
+  internal void StreamOpened() => Interlocked.Increment(ref streams);
+
+  internal void StreamClosed() => Interlocked.Decrement(ref streams);
 
   /// <summary>The image now on show as the 8-bit display image (gamma applied, quantised as <c>grcis render</c> saves it).</summary>
   public (Rgb8Image Image, int Version)? DisplayImage()
@@ -239,10 +308,21 @@ public sealed class StudioSession : IDisposable
   {
     string? tab = request.Headers[TabHeader];
     Tab = string.IsNullOrEmpty(tab) || tab.Length > 64 ? null : tab;
+    Changed();
   }
 
-  /// <summary>The last animation run, if any.</summary>
-  public StudioAnimation? Animation { get; set; }
+  /// <summary>The last animation run, if any; it announces its frames and its end as changes of the session.</summary>
+  public StudioAnimation? Animation
+  {
+    get => animation;
+    set
+    {
+      animation = value;
+      Changed();
+    }
+  }
+
+  StudioAnimation? animation;
 
   /// <summary>Shows a render of the history (back/forward).</summary>
   public void ShowRecord(RenderRecord record) => Show(record.Image, record.Gamma, 1.0);

@@ -36,4 +36,17 @@ public sealed record StudioStatus(bool Rendering, int Version, double Fraction, 
 
   /// <summary>The estimated RMSE of the image on show (<see cref="Rendering.Execution.NoiseImage"/>); null = no estimate.</summary>
   public double? Noise { get; init; }
+
+  // For the event stream (StudioEvents), not the page: what tells one change from another where values alone may not.
+
+  /// <summary>Counts the changes of <see cref="Error"/> and <see cref="Diagnostics"/> (set or cleared), so the same error twice is news.</summary>
+  internal long ErrorSequence { get; init; }
+
+  /// <summary>Counts the completed renders, of which the last was <see cref="CompletedRenderId"/>.</summary>
+  internal long Completions { get; init; }
+
+  internal long CompletedRenderId { get; init; }
+
+  /// <summary>The last completed render was stopped before its last pixel.</summary>
+  internal bool Cancelled { get; init; }
 }

@@ -59,7 +59,7 @@ public sealed class AlgorithmTests(StudioFixture studio) : IClassFixture<StudioF
   {
     using HttpResponseMessage render = await studio.Client.PostAsJsonAsync("/api/render", new { scene = "Five balls", settings = Settings, algorithm = "bogus" });
     Assert.Equal(HttpStatusCode.BadRequest, render.StatusCode);
-    string message = (await render.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("error").GetString()!;
+    string message = (await render.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("detail").GetString()!;
     Assert.Contains("algorithm 'bogus'", message);
     Assert.Contains("raytracing, distributed, path", message);
 

@@ -64,7 +64,7 @@ public sealed class ScriptValuesTests(StudioFixture studio) : IClassFixture<Stud
     using HttpResponseMessage r = await studio.Client.PostAsJsonAsync("/api/scene/values", new { scene = name });
     Assert.Equal(HttpStatusCode.BadRequest, r.StatusCode);
     JsonElement body = await r.Content.ReadFromJsonAsync<JsonElement>();
-    Assert.Contains("Broken.cs", body.GetProperty("error").GetString());
+    Assert.Contains("Broken.cs", body.GetProperty("detail").GetString());
     Assert.Equal(1, body.GetProperty("diagnostics")[0].GetProperty("line").GetInt32());
   }
 

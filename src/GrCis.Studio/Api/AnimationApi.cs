@@ -4,6 +4,8 @@ using GrCis.Hosting;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
 using Microsoft.AspNetCore.Http;
+using Microsoft.AspNetCore.Http.HttpResults;
+using Microsoft.AspNetCore.Routing;
 using Rendering;
 
 namespace GrCis.Studio;
@@ -16,40 +18,40 @@ internal static class AnimationApi
   internal sealed record AnimationBody(string Scene, string? Param, RenderSettings? Settings, double? Start, double? End, double? Fps, string? Folder,
                                        string? Algorithm = null, string[]? Given = null);
 
-  public static void Map(WebApplication app)
+  public static void MapAnimationApi(this IEndpointRouteBuilder api)
   {
-    app.MapPost("/api/animation", (AnimationBody body, StudioSession s, AllowedFiles files, Microsoft.AspNetCore.Http.HttpRequest request) =>
-      Start(body, s, files, request));
-    app.MapGet("/api/animation", (StudioSession s) => s.Animation is { } a ? Results.Ok(a.Status()) : Results.NotFound());
-    app.MapPost("/api/animation/stop", (StudioSession s) =>
+    api.MapPost("/animation", Start);
+    api.MapGet("/animation", Results<Ok<AnimationStatus>, NotFound> (StudioSession s) =>
+      s.Animation is { } a ? TypedResults.Ok(a.Status()) : TypedResults.NotFound());
+    api.MapPost("/animation/stop", (StudioSession s) =>
     {
       s.Animation?.Stop();
-      return Results.NoContent();
+      return TypedResults.NoContent();
     });
-    app.MapGet("/api/animation/frame/{k:int}.png", (int k, StudioSession s) =>
-      s.Animation?.Frame(k) is byte[] png ? Results.Bytes(png, "image/png") : Results.NotFound());
+    api.MapGet("/animation/frame/{k:int}.png", Results<FileContentHttpResult, NotFound> (int k, StudioSession s) =>
+      s.Animation?.Frame(k) is byte[] png ? TypedResults.File(png, "image/png") : TypedResults.NotFound());
   }
 
-  static IResult Start(AnimationBody body, StudioSession s, AllowedFiles files, Microsoft.AspNetCore.Http.HttpRequest request)
+  static Results<Accepted, ProblemHttpResult> Start(AnimationBody body, StudioSession s, AllowedFiles files, HttpRequest request)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
-      return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
+      return Problems.NotFound($"no scene '{body.Scene}'");
     if (body.Start > body.End || body.Fps <= 0.0)
-      return Results.BadRequest(new { error = "the range needs start ≤ end and fps > 0" });
-    if (!StudioApi.TryAlgorithm(body.Algorithm, out RenderAlgorithm? algorithm, out IResult? bad))
+      return Problems.BadRequest("the range needs start ≤ end and fps > 0");
+    if (!StudioApi.TryAlgorithm(body.Algorithm, out RenderAlgorithm? algorithm, out ProblemHttpResult? bad))
       return bad;
     if (!StudioApi.TryGiven(body.Given, out GivenSettings given, out bad))
       return bad;
     if (entry.Path != null && !files.Allows(entry.Path))
-      return Results.StatusCode(StatusCodes.Status403Forbidden);
+      return Problems.Outside(Path.GetFileName(entry.Path));
     string? folder = null;
     if (!string.IsNullOrWhiteSpace(body.Folder))
     {
       // A folder for frames must lie inside a folder given on the command line, really (links followed); the frames
       // are written into that real folder.
       if (files.Resolve(Path.Combine(Path.GetFullPath(body.Folder), "out0000.png")) is not string first)
-        return Results.StatusCode(StatusCodes.Status403Forbidden);
+        return Problems.Outside($"folder '{body.Folder}'");
       folder = Path.GetDirectoryName(first);
     }
     RenderSettings settings;
@@ -59,10 +61,10 @@ internal static class AnimationApi
     }
     catch (InvalidSettingException e)
     {
-      return Results.BadRequest(new { error = e.Message });
+      return Problems.BadRequest(e.Message);
     }
     if (s.Controller.IsRendering || s.Animation is { Running: true })
-      return Results.Conflict(new { error = "a render or an animation is running; stop it first" });
+      return Problems.Conflict("a render or an animation is running; stop it first");
     entry.ParameterText = body.Param ?? entry.ParameterText;
     s.Controller.Selected = entry;
     s.Controller.Settings = settings;
@@ -77,13 +79,13 @@ internal static class AnimationApi
     {
       // A range from the script or the user that cannot be: its first sentence, without the parameter's name.
       string message = e is ArgumentException a && a.ParamName != null ? e.Message.Split(" (Parameter")[0] : e.Message;
-      return Results.BadRequest(new { error = message });
+      return Problems.BadRequest(message);
     }
     AnimationTimeline t = run.Timeline;
     if (t.FrameCount > 100_000)
-      return Results.BadRequest(new { error = $"the range {t.Start}–{t.End} s at {t.Fps} fps has {t.FrameCount} frames; at most 100000" });
+      return Problems.BadRequest($"the range {t.Start}–{t.End} s at {t.Fps} fps has {t.FrameCount} frames; at most 100000");
     s.ActedFor(request);
-    s.Animation = StudioAnimation.Start(run, folder);
-    return Results.Accepted();
+    s.Animation = StudioAnimation.Start(run, folder, s.Changed);
+    return TypedResults.Accepted((string?)null);
   }
 }

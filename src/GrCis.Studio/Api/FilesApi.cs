@@ -1,8 +1,9 @@
 using System;
-using System.Linq;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
 using Microsoft.AspNetCore.Http;
+using Microsoft.AspNetCore.Http.HttpResults;
+using Microsoft.AspNetCore.Routing;
 
 namespace GrCis.Studio;
 
@@ -11,19 +12,21 @@ internal static class FilesApi
 {
   internal sealed record AddBody(string Path);
 
-  public static void Map(WebApplication app)
+  internal sealed record Added(string Name);
+
+  public static void MapFilesApi(this IEndpointRouteBuilder api)
   {
-    app.MapGet("/api/files", (AllowedFiles files) => files.Scripts());
-    app.MapPost("/api/scenes/add", (AddBody body, StudioSession s, AllowedFiles files) =>
+    api.MapGet("/files", (AllowedFiles files) => TypedResults.Ok(files.Scripts()));
+    api.MapPost("/scenes/add", Results<Ok<Added>, ProblemHttpResult> (AddBody body, StudioSession s, AllowedFiles files) =>
     {
       if (string.IsNullOrWhiteSpace(body.Path) || !files.Allows(body.Path))
-        return Results.StatusCode(StatusCodes.Status403Forbidden);
+        return Problems.Outside($"'{body.Path}'");
       if (!body.Path.EndsWith(".cs", StringComparison.OrdinalIgnoreCase) || !System.IO.File.Exists(files.Resolve(body.Path)))
-        return Results.NotFound(new { error = $"{body.Path}: no such scene script" });
+        return Problems.NotFound($"{body.Path}: no such scene script");
       SceneEntry entry;
       lock (s.Controller.Catalog)
         entry = s.Controller.Catalog.AddScriptFile(body.Path);
-      return Results.Ok(new { name = entry.Name });
+      return TypedResults.Ok(new Added(entry.Name));
     });
   }
 }

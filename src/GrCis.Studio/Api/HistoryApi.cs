@@ -1,42 +1,45 @@
+using System.Collections.Generic;
 using System.Linq;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
 using Microsoft.AspNetCore.Http;
+using Microsoft.AspNetCore.Http.HttpResults;
+using Microsoft.AspNetCore.Routing;
 
 namespace GrCis.Studio;
 
 /// <summary>The last renders (GrCis kept five): list them, go back and forward; the image on show follows.</summary>
 internal static class HistoryApi
 {
-  public static void Map(WebApplication app)
+  /// <summary>The kept renders (oldest first) and which is on show.</summary>
+  internal sealed record HistoryJson(int Position, bool CanGoBack, bool CanGoForward, IReadOnlyList<HistoryItem> Items);
+
+  internal sealed record HistoryItem(string Label, bool Complete);
+
+  public static void MapHistoryApi(this IEndpointRouteBuilder api)
   {
-    app.MapGet("/api/history", (StudioSession s) => List(s.Controller.History));
-    app.MapPost("/api/history/back", (StudioSession s) => Move(s, back: true));
-    app.MapPost("/api/history/forward", (StudioSession s) => Move(s, back: false));
+    api.MapGet("/history", (StudioSession s) => TypedResults.Ok(List(s.Controller.History)));
+    api.MapPost("/history/back", (StudioSession s) => Move(s, back: true));
+    api.MapPost("/history/forward", (StudioSession s) => Move(s, back: false));
     // Any kept render's image (0 = the oldest), for the page's A/B comparison with the image on show.
-    app.MapGet("/api/history/{i:int}.png", (int i, StudioSession s) =>
+    api.MapGet("/history/{i:int}.png", Results<FileContentHttpResult, NotFound> (int i, StudioSession s) =>
       s.Controller.History.Items.ElementAtOrDefault(i) is RenderRecord r
-        ? Results.Bytes(Rendering.Imaging.PngEncoder.Default.Encode(r.ToRgb8()), "image/png")
-        : Results.NotFound());
+        ? TypedResults.File(Rendering.Imaging.PngEncoder.Default.Encode(r.ToRgb8()), "image/png")
+        : TypedResults.NotFound());
   }
 
-  static object List(RenderHistory h) => new
-  {
-    position = h.Position,
-    canGoBack = h.CanGoBack,
-    canGoForward = h.CanGoForward,
-    items = h.Items.Select(r => new { label = r.ToString(), complete = r.Complete }),
-  };
+  static HistoryJson List(RenderHistory h) =>
+    new(h.Position, h.CanGoBack, h.CanGoForward, h.Items.Select(r => new HistoryItem(r.ToString(), r.Complete)).ToArray());
 
-  static IResult Move(StudioSession s, bool back)
+  static Results<Ok<HistoryJson>, ProblemHttpResult> Move(StudioSession s, bool back)
   {
     if (s.Controller.IsRendering)
-      return Results.Conflict(new { error = "wait for the render to finish (or stop it)" });
+      return Problems.Conflict("wait for the render to finish (or stop it)");
     RenderHistory h = s.Controller.History;
     RenderRecord? record = back ? h.Back() : h.Forward();
     if (record == null)
-      return Results.Conflict(new { error = back ? "no older render" : "no newer render" });
+      return Problems.Conflict(back ? "no older render" : "no newer render");
     s.ShowRecord(record);
-    return Results.Ok(List(h));
+    return TypedResults.Ok(List(h));
   }
 }

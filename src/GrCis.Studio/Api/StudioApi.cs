@@ -1,124 +1,142 @@
 using System;
+using System.Collections.Generic;
 using System.Diagnostics.CodeAnalysis;
 using System.IO;
 using System.Linq;
-using System.Reflection;
+using System.Threading;
 using System.Threading.Tasks;
 using GrCis.Hosting;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
+using Microsoft.AspNetCore.Hosting;
 using Microsoft.AspNetCore.Http;
+using Microsoft.AspNetCore.Http.HttpResults;
+using Microsoft.AspNetCore.Routing;
+using Microsoft.Extensions.Hosting;
 using Rendering.Imaging;
 
 namespace GrCis.Studio;
 
 /// <summary>
-/// The studio's endpoints: the page (from the assembly), the scene list, render/stop/status, the image
-/// (PNG as <c>grcis render</c> writes it, PFM linear), the pixel probe and the scripts' text.
+/// The studio's endpoints under <c>/api</c>: the scene list, render/stop/status and the event stream, the image (PNG as
+/// <c>grcis render</c> writes it, PFM linear), the pixel probe and the scripts' text; the other groups of endpoints
+/// (views, history, animation, files) map themselves into the same group. Errors are problem details (<see cref="Problems"/>).
 /// </summary>
 internal static class StudioApi
 {
-  public static void Map(WebApplication app)
-  {
-    app.MapGet("/", () => Page("index.html", "text/html; charset=utf-8"));
-    app.MapGet("/{file}", (string file) => Page(file, ContentType(file)));
-    app.MapGet("/vendor/{file}", (string file) => Page("vendor/" + file, ContentType(file)));
-    app.MapGet("/api/scene/boxes", (StudioSession s) =>
-      s.Controller.LastJob is { } job
-        ? Results.Ok(Rendering.Accel.PreparedScene.Prepare(job.Scene.Intersectable).WorldBoxes()
-            .Select(b => new { min = new[] { b.Min.X, b.Min.Y, b.Min.Z }, max = new[] { b.Max.X, b.Max.Y, b.Max.Z } }))
-        : Results.NotFound(new { error = "render something first" }));
+  /// <summary>What <c>POST /api/render</c> answers: the number of the render started, which its events carry.</summary>
+  internal sealed record RenderStarted(long RenderId);
 
-    app.MapGet("/api/scenes", (StudioSession s) =>
-    {
-      // The file picker may add an entry meanwhile (FilesApi): list a copy.
-      SceneEntry[] entries;
-      lock (s.Controller.Catalog)
-        entries = s.Controller.Catalog.Entries.ToArray();
-      return new
-      {
-        selected = s.Controller.Selected?.Name,
-        scenes = entries.Select(e => new
-        {
-          name = e.Name,
-          kind = e.Kind.ToString(),
-          tooltip = e.Tooltip,
-          param = e.ParameterText,
-          file = e.Path == null ? null : Path.GetFileName(e.Path),
-        }),
-      };
-    });
-    app.MapGet("/api/settings", (StudioSession s) => s.Controller.Settings);
-    app.MapPost("/api/render", (RenderBody body, StudioSession s, AllowedFiles files, HttpRequest request) => Render(body, s, files, request));
-    app.MapPost("/api/scene/values", (SceneBody body, StudioSession s, AllowedFiles files) => ScriptValues(body, s, files));
-    app.MapPost("/api/stop", (StudioSession s) =>
+  public static RouteGroupBuilder MapStudioApi(this IEndpointRouteBuilder app)
+  {
+    RouteGroupBuilder api = app.MapGroup("/api");
+    api.MapGet("/scenes", Scenes);
+    api.MapGet("/scene/boxes", Boxes);
+    api.MapGet("/settings", (StudioSession s) => TypedResults.Ok(s.Controller.Settings));
+    api.MapPost("/render", Render);
+    api.MapPost("/scene/values", ScriptValues);
+    api.MapPost("/stop", (StudioSession s) =>
     {
       // Whatever runs: the script being built, the render, a saved script being compiled, and an animation.
       s.Stop();
       s.Animation?.Stop();
-      return Results.NoContent();
+      return TypedResults.NoContent();
     });
-    app.MapGet("/api/status", (StudioSession s) => s.Status());
-    app.MapGet("/api/image.png", (StudioSession s, HttpResponse response) =>
-    {
-      if (s.DisplayImage() is not var (image, version))
-        return Results.NotFound();
-      response.Headers["X-Image-Version"] = version.ToString(System.Globalization.CultureInfo.InvariantCulture);
-      response.Headers.CacheControl = "no-store";
-      return Results.Bytes(PngEncoder.Default.Encode(image), "image/png");
-    });
-    app.MapGet("/api/image.pfm", (StudioSession s) =>
-      s.FinalImage() is FloatImage f ? Results.Bytes(PfmWriter.Encode(f), "application/octet-stream", "render.pfm") : Results.NotFound());
-    app.MapGet("/api/probe", (int x, int y, StudioSession s) => Probe(s, x, y));
-    app.MapGet("/api/source", (string scene, StudioSession s, AllowedFiles files, HttpRequest request, HttpResponse response) =>
-    {
-      SceneEntry? entry = s.Controller.Catalog.Find(scene);
-      if (entry?.Path == null)
-        return Results.NotFound();
-      if (files.Resolve(entry.Path) is not string real)
-        return Results.StatusCode(StatusCodes.Status403Forbidden);
-      // The editor asks with the tag of the text it holds: 304 while the file is unchanged, else the new text.
-      byte[] bytes = File.ReadAllBytes(real);
-      string tag = SourceTag(bytes);
-      response.Headers.ETag = tag;
-      response.Headers.CacheControl = "no-store";
-      if (request.Headers.IfNoneMatch == tag)
-        return Results.StatusCode(StatusCodes.Status304NotModified);
-      return Results.Bytes(bytes, "text/plain; charset=utf-8");
-    });
-    ViewsApi.Map(app);
-    HistoryApi.Map(app);
-    AnimationApi.Map(app);
-    FilesApi.Map(app);
-    app.MapPut("/api/source", async (string scene, HttpRequest request, HttpResponse response, StudioSession s, AllowedFiles files) =>
-    {
-      SceneEntry? entry = s.Controller.Catalog.Find(scene);
-      if (entry?.Path == null)
-        return Results.NotFound();
-      // The real file is written (a link inside the folders keeps pointing at it); a link leading out is refused.
-      if (files.Resolve(entry.Path) is not string real)
-        return Results.StatusCode(StatusCodes.Status403Forbidden);
-      // The editor says which text it started from (If-Match: its tag): a file changed on disk since is not overwritten.
-      string? expected = request.Headers.IfMatch;
-      if (!string.IsNullOrEmpty(expected) && File.Exists(real) && expected != SourceTag(File.ReadAllBytes(real)))
-        return Results.Json(new { error = $"{Path.GetFileName(entry.Path)} changed on disk since the editor loaded it: reload it, or save again to replace it" },
-                            statusCode: StatusCodes.Status412PreconditionFailed);
-      using var reader = new StreamReader(request.Body, System.Text.Encoding.UTF8);
-      string text = await reader.ReadToEndAsync();
-      SaveAtomically(real, text);
-      s.ActedFor(request);
-      response.Headers.ETag = SourceTag(File.ReadAllBytes(real));
-      // The selected script's watcher re-renders it (as for a save from any other editor): 204. Any other script is
-      // compiled here, so its diagnostics show too: 202, and /api/status says compiling until they are known.
-      if (IsWatched(s.Controller, entry))
-        return Results.NoContent();
-      s.Check(entry);
-      return Results.Accepted();
-    });
-    app.MapGet("/api/file", (string path, AllowedFiles files) =>
-      files.Resolve(path) is not string real ? Results.StatusCode(StatusCodes.Status403Forbidden)
-      : File.Exists(real) ? Results.Text(File.ReadAllText(real), "text/plain; charset=utf-8")
-      : Results.NotFound());
+    api.MapGet("/status", (StudioSession s) => TypedResults.Ok(s.Status()));
+    // The state pushed as it changes (StudioEvents); the stream ends when the page goes or the studio stops.
+    api.MapGet("/events", (StudioSession s, IHostApplicationLifetime life, CancellationToken aborted) =>
+      TypedResults.ServerSentEvents(StudioEvents.Stream(s, life.ApplicationStopping, aborted)));
+    api.MapGet("/image.png", Image);
+    api.MapGet("/image.pfm", Results<FileContentHttpResult, NotFound> (StudioSession s) =>
+      s.FinalImage() is FloatImage f ? TypedResults.File(PfmWriter.Encode(f), "application/octet-stream", "render.pfm") : TypedResults.NotFound());
+    api.MapGet("/probe", Probe);
+    api.MapGet("/source", Source);
+    api.MapPut("/source", SaveSource);
+    api.MapGet("/file", Results<ContentHttpResult, NotFound, ProblemHttpResult> (string path, AllowedFiles files) =>
+      files.Resolve(path) is not string real ? Problems.Outside(path)
+      : File.Exists(real) ? TypedResults.Text(File.ReadAllText(real), "text/plain; charset=utf-8")
+      : TypedResults.NotFound());
+    api.MapViewsApi();
+    api.MapHistoryApi();
+    api.MapAnimationApi();
+    api.MapFilesApi();
+    return api;
+  }
+
+  static Ok<SceneList> Scenes(StudioSession s)
+  {
+    // The file picker may add an entry meanwhile (FilesApi): list a copy.
+    SceneEntry[] entries;
+    lock (s.Controller.Catalog)
+      entries = s.Controller.Catalog.Entries.ToArray();
+    return TypedResults.Ok(new SceneList(s.Controller.Selected?.Name,
+      entries.Select(e => new SceneItem(e.Name, e.Kind.ToString(), e.Tooltip, e.ParameterText, e.Path == null ? null : Path.GetFileName(e.Path))).ToArray()));
+  }
+
+  internal sealed record SceneList(string? Selected, IReadOnlyList<SceneItem> Scenes);
+
+  /// <summary>A scene of the list: its kind (built-in, script), its parameter text and tooltip, its script file's name (null for a built-in).</summary>
+  internal sealed record SceneItem(string Name, string Kind, string? Tooltip, string? Param, string? File);
+
+  internal sealed record BoxJson(double[] Min, double[] Max);
+
+  static Results<Ok<BoxJson[]>, ProblemHttpResult> Boxes(StudioSession s) =>
+    s.Controller.LastJob is { } job
+      ? TypedResults.Ok(Rendering.Accel.PreparedScene.Prepare(job.Scene.Intersectable).WorldBoxes()
+          .Select(b => new BoxJson([b.Min.X, b.Min.Y, b.Min.Z], [b.Max.X, b.Max.Y, b.Max.Z])).ToArray())
+      : Problems.NotFound("render something first");
+
+  static Results<FileContentHttpResult, NotFound> Image(StudioSession s, HttpResponse response)
+  {
+    if (s.DisplayImage() is not var (image, version))
+      return TypedResults.NotFound();
+    response.Headers["X-Image-Version"] = version.ToString(System.Globalization.CultureInfo.InvariantCulture);
+    response.Headers.CacheControl = "no-store";
+    return TypedResults.File(PngEncoder.Default.Encode(image), "image/png");
+  }
+
+  static Results<FileContentHttpResult, StatusCodeHttpResult, ProblemHttpResult> Source(string scene, StudioSession s, AllowedFiles files,
+                                                                                        HttpRequest request, HttpResponse response)
+  {
+    SceneEntry? entry = s.Controller.Catalog.Find(scene);
+    if (entry?.Path == null)
+      return Problems.NotFound($"'{scene}' is not a script file");
+    if (files.Resolve(entry.Path) is not string real)
+      return Problems.Outside(Path.GetFileName(entry.Path));
+    // The editor asks with the tag of the text it holds: 304 while the file is unchanged, else the new text.
+    byte[] bytes = File.ReadAllBytes(real);
+    string tag = SourceTag(bytes);
+    response.Headers.ETag = tag;
+    response.Headers.CacheControl = "no-store";
+    if (request.Headers.IfNoneMatch == tag)
+      return TypedResults.StatusCode(StatusCodes.Status304NotModified);
+    return TypedResults.File(bytes, "text/plain; charset=utf-8");
+  }
+
+  static async Task<Results<NoContent, Accepted, ProblemHttpResult>> SaveSource(string scene, HttpRequest request, HttpResponse response,
+                                                                                StudioSession s, AllowedFiles files)
+  {
+    SceneEntry? entry = s.Controller.Catalog.Find(scene);
+    if (entry?.Path == null)
+      return Problems.NotFound($"'{scene}' is not a script file");
+    // The real file is written (a link inside the folders keeps pointing at it); a link leading out is refused.
+    if (files.Resolve(entry.Path) is not string real)
+      return Problems.Outside(Path.GetFileName(entry.Path));
+    // The editor says which text it started from (If-Match: its tag): a file changed on disk since is not overwritten.
+    string? expected = request.Headers.IfMatch;
+    if (!string.IsNullOrEmpty(expected) && File.Exists(real) && expected != SourceTag(File.ReadAllBytes(real)))
+      return Problems.PreconditionFailed($"{Path.GetFileName(entry.Path)} changed on disk since the editor loaded it: reload it, or save again to replace it");
+    using var reader = new StreamReader(request.Body, System.Text.Encoding.UTF8);
+    string text = await reader.ReadToEndAsync();
+    SaveAtomically(real, text);
+    s.ActedFor(request);
+    response.Headers.ETag = SourceTag(File.ReadAllBytes(real));
+    // The selected script's watcher re-renders it (as for a save from any other editor): 204. Any other script is
+    // compiled here, so its diagnostics show too: 202, and the phase is compiling until they are known.
+    if (IsWatched(s.Controller, entry))
+      return TypedResults.NoContent();
+    s.Check(entry);
+    return TypedResults.Accepted((string?)null);
   }
 
   /// <summary>
@@ -138,7 +156,7 @@ internal static class StudioApi
   internal sealed record SceneBody(string Scene, string? Param);
 
   /// <summary>The request's <c>given</c> names as flags, or a 400 naming the one that is not known.</summary>
-  internal static bool TryGiven(string[]? names, out GivenSettings given, [NotNullWhen(false)] out IResult? bad)
+  internal static bool TryGiven(string[]? names, out GivenSettings given, [NotNullWhen(false)] out ProblemHttpResult? bad)
   {
     given = GivenSettings.None;
     bad = null;
@@ -146,7 +164,7 @@ internal static class StudioApi
     {
       if (!Enum.TryParse(name, ignoreCase: true, out GivenSettings flag) || !Enum.IsDefined(flag) || flag == GivenSettings.Algorithm)
       {
-        bad = Results.BadRequest(new { error = $"given setting '{name}' is not known; use Size, SamplesPerPixel, Jitter, Shadows, Reflections, Refractions or Gamma" });
+        bad = Problems.BadRequest($"given setting '{name}' is not known; use Size, SamplesPerPixel, Jitter, Shadows, Reflections, Refractions or Gamma");
         return false;
       }
       given |= flag;
@@ -154,17 +172,22 @@ internal static class StudioApi
     return true;
   }
 
+  /// <summary>The script's own values for the fields; null where it sets none.</summary>
+  internal sealed record ScriptValuesJson(int? Width, int? Height, int? SamplesPerPixel, string? Algorithm, double? Start, double? End, double? Fps,
+                                          string? Tooltip);
+
   /// <summary>
   /// The script's own values for the fields (size, samples per pixel, algorithm, animation range; null where it sets
-  /// none) and its tooltip: the scene is built, not rendered.
+  /// none) and its tooltip: the scene is built, not rendered. A script that does not build is a 400 whose problem details
+  /// carry its compiler diagnostics (<c>diagnostics</c>, as in the status).
   /// </summary>
-  static async Task<IResult> ScriptValues(SceneBody body, StudioSession s, AllowedFiles files)
+  static async Task<Results<Ok<ScriptValuesJson>, ProblemHttpResult>> ScriptValues(SceneBody body, StudioSession s, AllowedFiles files)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
-      return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
+      return Problems.NotFound($"no scene '{body.Scene}'");
     if (entry.Path != null && !files.Allows(entry.Path))
-      return Results.StatusCode(StatusCodes.Status403Forbidden);
+      return Problems.Outside(Path.GetFileName(entry.Path));
     if (body.Param != null)
       entry.ParameterText = body.Param;
     SceneOverrides values;
@@ -174,33 +197,24 @@ internal static class StudioApi
     }
     catch (SceneEvaluationException e)
     {
-      return Results.BadRequest(new { error = e.Message, diagnostics = ScriptErrors.Parse(e.Message) });
+      return Problems.BadRequest(e.Message, new Dictionary<string, object?> { ["diagnostics"] = ScriptErrors.Parse(e.Message) });
     }
     catch (OperationCanceledException)
     {
-      return Results.Conflict(new { error = "stopped" });
+      return Problems.Conflict("stopped");
     }
-    return Results.Ok(new
-    {
-      width = values.Width,
-      height = values.Height,
-      samplesPerPixel = values.Supersampling,
-      algorithm = values.Algorithm,
-      start = values.Start,
-      end = values.End,
-      fps = values.Fps,
-      tooltip = entry.Tooltip,
-    });
+    return TypedResults.Ok(new ScriptValuesJson(values.Width, values.Height, values.Supersampling, values.Algorithm, values.Start, values.End,
+                                                values.Fps, entry.Tooltip));
   }
 
-  static IResult Render(RenderBody body, StudioSession s, AllowedFiles files, HttpRequest request)
+  static Results<Accepted<RenderStarted>, ProblemHttpResult> Render(RenderBody body, StudioSession s, AllowedFiles files, HttpRequest request)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
-      return Results.NotFound(new { error = $"no scene '{body.Scene}'" });
+      return Problems.NotFound($"no scene '{body.Scene}'");
     if (entry.Path != null && !files.Allows(entry.Path))
-      return Results.StatusCode(StatusCodes.Status403Forbidden);
-    if (!TryAlgorithm(body.Algorithm, out RenderAlgorithm? algorithm, out IResult? bad))
+      return Problems.Outside(Path.GetFileName(entry.Path));
+    if (!TryAlgorithm(body.Algorithm, out RenderAlgorithm? algorithm, out ProblemHttpResult? bad))
       return bad;
     if (!TryGiven(body.Given, out GivenSettings given, out bad))
       return bad;
@@ -211,15 +225,15 @@ internal static class StudioApi
     }
     catch (InvalidSettingException e)
     {
-      return Results.BadRequest(new { error = e.Message });
+      return Problems.BadRequest(e.Message);
     }
     s.ActedFor(request);
-    s.Render(entry, body.Param ?? entry.ParameterText, settings, algorithm, body.Progressive, given);
-    return Results.Accepted();
+    long id = s.Render(entry, body.Param ?? entry.ParameterText, settings, algorithm, body.Progressive, given);
+    return TypedResults.Accepted((string?)null, new RenderStarted(id));
   }
 
   /// <summary>The request's <c>algorithm</c> field: null or empty = the scene's choice, else one of the CLI's names, else a 400.</summary>
-  internal static bool TryAlgorithm(string? name, out RenderAlgorithm? algorithm, [NotNullWhen(false)] out IResult? bad)
+  internal static bool TryAlgorithm(string? name, out RenderAlgorithm? algorithm, [NotNullWhen(false)] out ProblemHttpResult? bad)
   {
     algorithm = null;
     bad = null;
@@ -230,14 +244,18 @@ internal static class StudioApi
       algorithm = a;
       return true;
     }
-    bad = Results.BadRequest(new
-    {
-      error = $"algorithm '{name}' is not known; use {string.Join(", ", RenderAlgorithmNames.All)}, or leave it out for the scene's choice",
-    });
+    bad = Problems.BadRequest($"algorithm '{name}' is not known; use {string.Join(", ", RenderAlgorithmNames.All)}, or leave it out for the scene's choice");
     return false;
   }
 
-  static IResult Probe(StudioSession s, int x, int y)
+  /// <summary>One pixel's read-out: its colour, the first sample's, the pixel's hash and its ray tree.</summary>
+  internal sealed record ProbeJson(int X, int Y, double[] Pixel, double[] Sample, long Hash, RayJson? Rays);
+
+  /// <summary>One ray of the tree: where it starts and goes, what it hit (and the normal there), and the rays it spawned.</summary>
+  internal sealed record RayJson(string Kind, int Depth, double[] Origin, double[] Direction, double[]? Hit, double[]? Normal, string? Solid, bool Blocked,
+                                 RayJson[] Children);
+
+  static Results<Ok<ProbeJson>, ProblemHttpResult> Probe(StudioSession s, int x, int y)
   {
     ProbeResult probe;
     try
@@ -246,31 +264,15 @@ internal static class StudioApi
     }
     catch (Exception e) when (e is InvalidOperationException or ArgumentOutOfRangeException)
     {
-      return Results.BadRequest(new { error = e.Message });
+      return Problems.BadRequest(e.Message);
     }
-    return Results.Ok(new
-    {
-      x = probe.X,
-      y = probe.Y,
-      pixel = probe.PixelColor,
-      sample = probe.SampleColor,
-      hash = probe.Hash,
-      rays = probe.Rays == null ? null : RayJson(probe.Rays),
-    });
+    return TypedResults.Ok(new ProbeJson(probe.X, probe.Y, probe.PixelColor, probe.SampleColor, probe.Hash, probe.Rays == null ? null : Ray(probe.Rays)));
   }
 
-  static object RayJson(RayNode n) => new
-  {
-    kind = n.Kind.ToString(),
-    depth = n.Depth,
-    origin = new[] { n.Origin.X, n.Origin.Y, n.Origin.Z },
-    direction = new[] { n.Direction.X, n.Direction.Y, n.Direction.Z },
-    hit = n.Hit is { } h ? new[] { h.X, h.Y, h.Z } : null,
-    normal = n.Normal is { } m ? new[] { m.X, m.Y, m.Z } : null,
-    solid = n.Solid?.GetType().Name,
-    blocked = n.Blocked,
-    children = n.Children.Select(RayJson).ToArray(),
-  };
+  static RayJson Ray(RayNode n) => new(
+    n.Kind.ToString(), n.Depth, [n.Origin.X, n.Origin.Y, n.Origin.Z], [n.Direction.X, n.Direction.Y, n.Direction.Z],
+    n.Hit is { } h ? [h.X, h.Y, h.Z] : null, n.Normal is { } m ? [m.X, m.Y, m.Z] : null, n.Solid?.GetType().Name, n.Blocked,
+    n.Children.Select(Ray).ToArray());
 
   /// <summary>Whether the controller's watcher follows <paramref name="entry"/>'s file (the selected script's).</summary>
   static bool IsWatched(DemoController controller, SceneEntry entry) =>
@@ -286,21 +288,5 @@ internal static class StudioApi
     string temp = path + ".grcis-save";
     File.WriteAllText(temp, text);
     File.Move(temp, path, overwrite: true);
-  }
-
-  static string ContentType(string file) =>
-    file.EndsWith(".css", StringComparison.Ordinal) ? "text/css; charset=utf-8"
-    : file.EndsWith(".html", StringComparison.Ordinal) ? "text/html; charset=utf-8"
-    : file.EndsWith(".txt", StringComparison.Ordinal) ? "text/plain; charset=utf-8"
-    : "text/javascript; charset=utf-8";
-
-  static IResult Page(string name, string type)
-  {
-    using Stream? stream = Assembly.GetExecutingAssembly().GetManifestResourceStream("page/" + name);
-    if (stream == null)
-      return Results.NotFound();
-    using var copy = new MemoryStream();
-    stream.CopyTo(copy);
-    return Results.Bytes(copy.ToArray(), type);
   }
 }

@@ -1,9 +1,13 @@
 using System;
+using System.Collections.Generic;
+using System.Diagnostics.CodeAnalysis;
 using System.IO;
 using System.Threading;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
 using Microsoft.AspNetCore.Http;
+using Microsoft.AspNetCore.Http.HttpResults;
+using Microsoft.AspNetCore.Routing;
 using Rendering.Imaging;
 
 namespace GrCis.Studio;
@@ -14,41 +18,55 @@ namespace GrCis.Studio;
 /// </summary>
 internal static class ViewsApi
 {
-  public static void Map(WebApplication app)
+  internal sealed record ViewsJson(int Width, int Height, bool AllRaysKnown, IReadOnlyList<string> Kinds);
+
+  internal sealed record ValueJson(string Text);
+
+  public static void MapViewsApi(this IEndpointRouteBuilder api)
   {
-    app.MapPost("/api/views", (StudioSession s, CancellationToken cancel) =>
+    api.MapPost("/views", Results<Ok<ViewsJson>, ProblemHttpResult> (StudioSession s, CancellationToken cancel) =>
     {
       try
       {
         ExtraViews views = s.ComputeViews(cancel);
-        return Results.Ok(new { width = views.Width, height = views.Height, allRaysKnown = views.AllRaysKnown, kinds = Enum.GetNames<MapKind>() });
+        return TypedResults.Ok(new ViewsJson(views.Width, views.Height, views.AllRaysKnown, Enum.GetNames<MapKind>()));
       }
       catch (InvalidOperationException e)
       {
-        return Results.Conflict(new { error = e.Message });
+        return Problems.Conflict(e.Message);
       }
     });
-    app.MapGet("/api/views/{kind}.png", (string kind, StudioSession s) =>
-      With(s, kind, (v, k) => Results.Bytes(PngEncoder.Default.Encode(Rgb8Image.FromFloatImage(v.ToImage(k), 1.0)), "image/png")));
-    app.MapGet("/api/views/{kind}.csv", (string kind, StudioSession s) =>
-      With(s, kind, (v, k) => Results.Bytes(Text(w => v.WriteCsv(k, w)), "text/csv", $"{kind.ToLowerInvariant()}.csv")));
-    app.MapGet("/api/views/points.ply", (StudioSession s) =>
+    api.MapGet("/views/{kind}.png", Results<FileContentHttpResult, ProblemHttpResult> (string kind, StudioSession s) =>
+      TryView(s, kind, out ExtraViews? v, out MapKind k, out ProblemHttpResult? problem)
+        ? TypedResults.File(PngEncoder.Default.Encode(Rgb8Image.FromFloatImage(v.ToImage(k), 1.0)), "image/png")
+        : problem);
+    api.MapGet("/views/{kind}.csv", Results<FileContentHttpResult, ProblemHttpResult> (string kind, StudioSession s) =>
+      TryView(s, kind, out ExtraViews? v, out MapKind k, out ProblemHttpResult? problem)
+        ? TypedResults.File(Text(w => v.WriteCsv(k, w)), "text/csv", $"{kind.ToLowerInvariant()}.csv")
+        : problem);
+    api.MapGet("/views/points.ply", Results<FileContentHttpResult, ProblemHttpResult> (StudioSession s) =>
       s.Views is ExtraViews v
-        ? Results.Bytes(Text(w => v.WritePointCloud(w, s.FinalImage(), s.Controller.LastResult?.Gamma ?? 1.0)), "application/octet-stream", "points.ply")
-        : Results.NotFound());
-    app.MapGet("/api/views/value", (string kind, int x, int y, StudioSession s) =>
-      With(s, kind, (v, k) => x < 0 || y < 0 || x >= v.Width || y >= v.Height
-        ? Results.BadRequest(new { error = $"pixel [{x}, {y}] lies outside the {v.Width}x{v.Height} image" })
-        : Results.Ok(new { text = v.Describe(k, x, y) })));
+        ? TypedResults.File(Text(w => v.WritePointCloud(w, s.FinalImage(), s.Controller.LastResult?.Gamma ?? 1.0)), "application/octet-stream", "points.ply")
+        : Problems.NotFound("compute the extra views first"));
+    api.MapGet("/views/value", Results<Ok<ValueJson>, ProblemHttpResult> (string kind, int x, int y, StudioSession s) =>
+      !TryView(s, kind, out ExtraViews? v, out MapKind k, out ProblemHttpResult? problem) ? problem
+      : x < 0 || y < 0 || x >= v.Width || y >= v.Height ? Problems.BadRequest($"pixel [{x}, {y}] lies outside the {v.Width}x{v.Height} image")
+      : TypedResults.Ok(new ValueJson(v.Describe(k, x, y))));
   }
 
-  static IResult With(StudioSession s, string kind, Func<ExtraViews, MapKind, IResult> answer)
+  /// <summary>The computed views and the view named <paramref name="kind"/>, or a 404 saying what is missing.</summary>
+  static bool TryView(StudioSession s, string kind, [NotNullWhen(true)] out ExtraViews? views, out MapKind k, [NotNullWhen(false)] out ProblemHttpResult? problem)
   {
-    if (s.Views is not ExtraViews views)
-      return Results.NotFound(new { error = "compute the extra views first" });
-    return Enum.TryParse(kind, ignoreCase: true, out MapKind k) && Enum.IsDefined(k)
-      ? answer(views, k)
-      : Results.NotFound(new { error = $"no view '{kind}'; the views are {string.Join(", ", Enum.GetNames<MapKind>())}" });
+    views = s.Views;
+    k = default;
+    problem = null;
+    if (views == null)
+      problem = Problems.NotFound("compute the extra views first");
+    else if (!Enum.TryParse(kind, ignoreCase: true, out k) || !Enum.IsDefined(k))
+      problem = Problems.NotFound($"no view '{kind}'; the views are {string.Join(", ", Enum.GetNames<MapKind>())}");
+    else
+      return true;
+    return false;
   }
 
   // The bytes the window's export writes to a file: UTF-8 without a byte-order mark, "\n" line ends.

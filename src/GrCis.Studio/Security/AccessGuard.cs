@@ -4,6 +4,8 @@ using System.Security.Cryptography;
 using System.Text;
 using System.Threading.Tasks;
 using Microsoft.AspNetCore.Http;
+using Microsoft.AspNetCore.Mvc;
+using Microsoft.Extensions.DependencyInjection;
 
 namespace GrCis.Studio;
 
@@ -102,11 +104,16 @@ public sealed class AccessGuard
   bool Matches(string? given) =>
     given != null && CryptographicOperations.FixedTimeEquals(Encoding.UTF8.GetBytes(given), token);
 
-  static Task Refuse(HttpContext context, int status, string message)
+  /// <summary>Answers with problem details (RFC 7807), as every error of the studio; the detail is the sentence for the user.</summary>
+  static async Task Refuse(HttpContext context, int status, string message)
   {
     context.Response.StatusCode = status;
-    context.Response.ContentType = "text/plain; charset=utf-8";
-    return context.Response.WriteAsync("grcis studio: " + message + "\n");
+    var problem = new ProblemDetails { Status = status, Detail = "grcis studio: " + message };
+    // The host's writer fills in the title and type as for the endpoints' problems; without one (a bare context), plain JSON.
+    if (context.RequestServices?.GetService<IProblemDetailsService>() is { } writer &&
+        await writer.TryWriteAsync(new ProblemDetailsContext { HttpContext = context, ProblemDetails = problem }))
+      return;
+    await context.Response.WriteAsJsonAsync(problem, (System.Text.Json.JsonSerializerOptions?)null, "application/problem+json");
   }
 
   /// <summary>A new random token (32 hex digits: 128 bits).</summary>
