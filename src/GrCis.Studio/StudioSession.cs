@@ -30,6 +30,8 @@ public sealed class StudioSession : IDisposable
   // A saved script other than the watched one being compiled (Check); its number, so a stopped or replaced check says nothing.
   bool checking;
   long checkId;
+  // The last check that ran to its end (not stopped, not replaced): the page learns from it that its save compiled.
+  long checkedId;
   // What the event stream tells apart (StudioEvents): a change of the error or diagnostics (set or cleared), and a
   // render's completion (how many so far, the last one's number, whether it was stopped).
   long errorSequence;
@@ -135,7 +137,8 @@ public sealed class StudioSession : IDisposable
   /// diagnostics, or the error of running it, show in <see cref="Status"/> as a watched script's do. The phase is
   /// <c>compiling</c> meanwhile; <see cref="Stop"/> ends it.
   /// </summary>
-  public void Check(SceneEntry entry)
+  /// <returns>The check's number: <see cref="StudioStatus.CheckedId"/> becomes it when the check has ended.</returns>
+  public long Check(SceneEntry entry)
   {
     long id;
     lock (sync)
@@ -148,6 +151,7 @@ public sealed class StudioSession : IDisposable
     }
     Changed();
     _ = CheckAsync(entry, id);
+    return id;
   }
 
   async Task CheckAsync(SceneEntry entry, long id)
@@ -170,6 +174,7 @@ public sealed class StudioSession : IDisposable
       if (id != checkId)
         return;
       checking = false;
+      checkedId = id;
       if (message != null)
       {
         error = message;
@@ -247,6 +252,7 @@ public sealed class StudioSession : IDisposable
         Completions = completions,
         CompletedRenderId = completedId,
         Cancelled = cancelled,
+        CheckedId = checkedId,
       };
   }
 

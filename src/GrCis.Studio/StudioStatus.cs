@@ -49,4 +49,7 @@ public sealed record StudioStatus(bool Rendering, int Version, double Fraction, 
 
   /// <summary>The last completed render was stopped before its last pixel.</summary>
   internal bool Cancelled { get; init; }
+
+  /// <summary>The number of the last saved script's check that ran to its end (<see cref="StudioSession.Check"/>); 0 = none.</summary>
+  internal long CheckedId { get; init; }
 }

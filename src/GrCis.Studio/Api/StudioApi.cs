@@ -113,7 +113,10 @@ internal static class StudioApi
     return TypedResults.File(bytes, "text/plain; charset=utf-8");
   }
 
-  static async Task<Results<NoContent, Accepted, ProblemHttpResult>> SaveSource(string scene, HttpRequest request, HttpResponse response,
+  /// <summary>What <c>PUT /api/source</c> answers for a script that is compiled, not rendered: the check's number, which its <c>checked</c> event carries.</summary>
+  internal sealed record CheckStarted(long Check);
+
+  static async Task<Results<NoContent, Accepted<CheckStarted>, ProblemHttpResult>> SaveSource(string scene, HttpRequest request, HttpResponse response,
                                                                                 StudioSession s, AllowedFiles files)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(scene);
@@ -135,8 +138,7 @@ internal static class StudioApi
     // compiled here, so its diagnostics show too: 202, and the phase is compiling until they are known.
     if (IsWatched(s.Controller, entry))
       return TypedResults.NoContent();
-    s.Check(entry);
-    return TypedResults.Accepted((string?)null);
+    return TypedResults.Accepted((string?)null, new CheckStarted(s.Check(entry)));
   }
 
   /// <summary>

@@ -39,6 +39,9 @@ internal static class StudioEvents
   /// <summary>The error and the compiler diagnostics, set or cleared (null and none: the script compiled).</summary>
   internal sealed record ErrorsEvent(long RenderId, string? Error, IReadOnlyList<ScriptError> Diagnostics);
 
+  /// <summary>A saved script's check (<c>PUT /api/source</c>'s <c>check</c>) ended; its errors, if any, came before.</summary>
+  internal sealed record CheckedEvent(long RenderId, long Check, bool Compiles);
+
   /// <summary>The render finished (or was stopped: <c>cancelled</c>); its statistics and what it used.</summary>
   internal sealed record DoneEvent(long RenderId, bool Cancelled, string Statistics, int? Samples, double? Noise, int? Width, int? Height,
                                    int? SamplesPerPixel, int Version);
@@ -111,6 +114,8 @@ internal static class StudioEvents
     // A completion raised for a render since replaced is not this render's.
     if (now.Completions != before.Completions && now.CompletedRenderId == id)
       yield return ("done", new DoneEvent(id, now.Cancelled, now.Statistics, now.Samples, now.Noise, now.Width, now.Height, now.SamplesPerPixel, now.Version));
+    if (now.CheckedId != before.CheckedId)
+      yield return ("checked", new CheckedEvent(id, now.CheckedId, now.Error == null && now.Diagnostics.Count == 0));
     if (fresh || now.Phase != before.Phase || now.Rendering != before.Rendering || !ReferenceEquals(now.Notes, before.Notes))
       yield return ("phase", new PhaseEvent(id, now.Phase, now.Rendering, now.Notes));
   }
