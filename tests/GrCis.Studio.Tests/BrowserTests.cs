@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
+using System.Text.Json;
 using GrCis.Cli;
 using GrCis.TestSupport;
 using OpenQA.Selenium;
@@ -429,6 +430,68 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     long scroll = (long)Js(browser, "return document.getElementById('rays').scrollWidth;")!;
     long client = (long)Js(browser, "return document.getElementById('rays').clientWidth;")!;
     Assert.True(scroll <= client, $"the ray tree is {scroll} px wide in {client} px");
+  }
+
+  [SkippableFact]
+  public void The_page_follows_a_render_to_its_completion_by_pushed_events_without_asking_for_the_status()
+  {
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    // Every request the page makes is listed by the browser (resource timing); room for all of them.
+    Js(browser, "performance.setResourceTimingBufferSize(100000);");
+    long Requests(string path) => (long)Js(browser,
+      "return performance.getEntriesByType('resource').filter(e => new URL(e.name).pathname === arguments[0]).length;", path)!;
+    long atLoad = Requests("/api/status");
+    Assert.True(atLoad <= 1, $"{atLoad} status requests at load");
+
+    // Path tracing in passes: previews and progress for a while, then the completion.
+    Js(browser, "document.getElementById('algorithm').value = 'path'; document.getElementById('spp').value = 16;");
+    RenderIn(browser, "Five balls", 240, 180);
+    Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 240, "the image");
+    Assert.Contains("noise", browser.FindElement(By.Id("stats")).Text);
+    Assert.True(Requests("/api/image.png") >= 1);
+    Until(browser, () => browser.FindElement(By.Id("historyLabel")).Text.Contains("Five balls", StringComparison.Ordinal), "the render in the history");
+    Assert.Equal(atLoad, Requests("/api/status"));
+    // One stream, this page's (an earlier test's closed browser's ends when the studio notices it gone).
+    Until(browser, () => studio.Server.Session.EventStreams == 1, "one event stream");
+    Js(browser, "document.getElementById('algorithm').value = ''; document.getElementById('spp').value = 1;");
+  }
+
+  [SkippableFact]
+  public void Probing_again_and_again_in_3d_holds_the_geometries_of_one_view()
+  {
+    using ChromeDriver browser = Browser();
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    RenderIn(browser, "Five balls", 160, 120);
+    Js(browser, "window.dispatchEvent(new KeyboardEvent('keydown', { key: 'r' }));");
+    IWebElement canvas = browser.FindElement(By.Id("canvas"));
+    void ProbeAt(int x, int y)
+    {
+      Js(browser, "document.getElementById('rays').textContent = '';");
+      new Actions(browser).MoveToElement(canvas, x - canvas.Size.Width / 2, y - canvas.Size.Height / 2).Click().Perform();
+      Until(browser, () => browser.FindElement(By.Id("rays")).Text.StartsWith($"pixel [{x}, {y}]", StringComparison.Ordinal), "the ray tree");
+    }
+    string Memory() => (string)((IJavaScriptExecutor)browser).ExecuteAsyncScript("""
+      const done = arguments[arguments.length - 1];
+      import('./rays3d.js').then(m => done(JSON.stringify(m.memory())));
+      """)!;
+    ProbeAt(80, 60);
+    browser.FindElement(By.Id("show3d")).Click();
+    Until(browser, () => browser.FindElement(By.Id("rays3dPane")).Displayed, "the 3D view");
+    Skip.If(Memory() == "null", "no WebGL in this browser");
+    string first = Memory();
+    foreach ((int x, int y) in new[] { (70, 50), (90, 64), (80, 60), (60, 70) })
+      ProbeAt(x, y);
+    System.Threading.Thread.Sleep(300);
+    using JsonDocument a = JsonDocument.Parse(first), b = JsonDocument.Parse(Memory());
+    // Per view: one geometry per kind of line drawn (boxes, primary, shadow, normals, …), whatever came before.
+    Assert.InRange(b.RootElement.GetProperty("geometries").GetInt32(), 1, 8);
+    Assert.Equal(a.RootElement.GetProperty("programs").GetInt32(), b.RootElement.GetProperty("programs").GetInt32());
+    browser.FindElement(By.Id("show3d")).Click();
+    using JsonDocument closed = JsonDocument.Parse(Memory());
+    Assert.Equal(0, closed.RootElement.GetProperty("geometries").GetInt32());
   }
 
   static byte[] CanvasPixels(IWebDriver browser, string id) => ((IReadOnlyCollection<object>)Js(browser,
