@@ -121,11 +121,13 @@ public sealed class StudioSession : IDisposable
     _ = rendering.ContinueWith(t =>
     {
       lock (sync)
+      {
         if (t.Exception != null && id == Controller.RenderId)   // not when a newer render replaced this one
         {
           error = t.Exception.GetBaseException().Message;
           errorSequence++;
         }
+      }
       // Whatever ended it (done, failed, stopped, replaced), the phase may have changed.
       Changed();
     }, TaskScheduler.Default);

@@ -75,7 +75,7 @@ public sealed class AlgorithmTests(StudioFixture studio) : IClassFixture<StudioF
     string page = await studio.Client.GetStringAsync("/");
     foreach (string option in new[] { "value=\"\">scene's choice", "value=\"raytracing\"", "value=\"distributed\"", "value=\"path\"" })
       Assert.Contains(option, page);
-    Assert.Contains("algorithm: $(\"algorithm\").value", await studio.Client.GetStringAsync("/app.js"));
+    Assert.Contains("algorithm: $(\"algorithm\").value", await studio.Client.GetStringAsync("/settings.js"));
   }
 
   [Fact]

@@ -52,7 +52,7 @@ public sealed class RenderTests(StudioFixture studio) : IClassFixture<StudioFixt
     foreach (JsonElement b in boxes.EnumerateArray())
       for (int i = 0; i < 3; i++)
         Assert.True(b.GetProperty("min")[i].GetDouble() <= b.GetProperty("max")[i].GetDouble());
-    Assert.Contains("RayView", await studio.Client.GetStringAsync("/rays3d.js"));
+    Assert.Contains("export function show(", await studio.Client.GetStringAsync("/rays3d.js"));
     Assert.Contains("WebGLRenderer", await studio.Client.GetStringAsync("/vendor/three.min.js"));
   }
 
