@@ -17,6 +17,22 @@ namespace GrCis.Interactive.Tests;
 public class RenderStateTests
 {
   [Fact]
+  public async Task Each_render_asked_for_is_announced_with_its_number_while_busy_building()
+  {
+    var catalog = SceneCatalog.WithBuiltInScenes();
+    using var demo = new DemoController(catalog)
+    {
+      Settings = new RenderSettings { Width = 16, Height = 12, Threads = 2 },
+      Selected = catalog.Find("Five balls"),
+    };
+    var started = new List<(long Id, bool Building)>();
+    demo.RenderStarted += (_, id) => started.Add((id, demo.IsBuilding));
+    await demo.RenderAsync();
+    await demo.RenderAsync();
+    Assert.Equal([(1L, true), (2L, true)], started);
+  }
+
+  [Fact]
   public async Task A_second_render_replaces_the_first_and_only_its_events_arrive()
   {
     var catalog = SceneCatalog.WithBuiltInScenes();
