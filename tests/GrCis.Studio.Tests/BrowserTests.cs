@@ -124,7 +124,7 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     IWebElement error = browser.FindElement(By.CssSelector("#diagnostics li"));
     Assert.Equal("2", error.GetAttribute("data-line"));
     Assert.Contains("CS0117", error.Text);
-    Assert.Equal(1, browser.FindElements(By.CssSelector("#editor .line-error")).Count);
+    Assert.Single(browser.FindElements(By.CssSelector("#editor .line-error")));
     Shot(browser, "studio-editor-error.png");
 
     Js(browser, "document.querySelector('#editor .CodeMirror').CodeMirror.setValue(arguments[0]);", "Rendering.Scenes.Flags(scene);\n");
