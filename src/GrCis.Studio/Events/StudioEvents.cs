@@ -10,9 +10,9 @@ namespace GrCis.Studio;
 /// <summary>
 /// The studio's state pushed to a page as Server-Sent Events (<c>GET /api/events</c>): a <c>status</c> snapshot first (the
 /// whole of <c>/api/status</c>, so a page that connects or reconnects is never stale), then one event per change, each
-/// carrying the number of the render it belongs to, so a page ignores those of a render it has seen replaced. A burst of
-/// changes (tiles, previews) within <see cref="Coalesce"/> goes out as one batch; what the batch says is read from the
-/// state then, so nothing is lost and a late event never contradicts an earlier state.
+/// carrying the number of the render it belongs to, so a page ignores those of a render it has seen replaced. A change
+/// goes out at once; what changes within <see cref="Coalesce"/> after it (tiles, previews) goes out together in the next
+/// batch. What a batch says is read from the state then, so nothing is lost and a late event never contradicts an earlier state.
 /// </summary>
 internal static class StudioEvents
 {
@@ -74,9 +74,6 @@ internal static class StudioEvents
           yield return new SseItem<object>(last.RenderId, "ping");
           continue;
         }
-        await Wait(Task.Delay(Coalesce, ended.Token), Timeout.InfiniteTimeSpan, ended.Token).ConfigureAwait(false);
-        if (ended.IsCancellationRequested)
-          yield break;
         next = session.NextChange();
         StudioStatus now = session.Status();
         foreach ((string name, object data) in Changes(last, now))
@@ -86,6 +83,10 @@ internal static class StudioEvents
         if (animation != null && animation != lastAnimation)
           yield return new SseItem<object>(animation, "animation");
         lastAnimation = animation;
+        // The pace: what changes meanwhile goes out together in the next batch.
+        await Wait(Task.Delay(Coalesce, ended.Token), Timeout.InfiniteTimeSpan, ended.Token).ConfigureAwait(false);
+        if (ended.IsCancellationRequested)
+          yield break;
       }
     }
     finally
