@@ -108,6 +108,23 @@ public sealed class EventStreamTests(StudioFixture studio) : IClassFixture<Studi
   }
 
   [Fact]
+  public async Task A_reconnected_stream_starts_with_the_whole_state_of_what_happened_meanwhile()
+  {
+    await using (Events gone = await Events.Open(studio.Client))
+      Assert.Equal("status", (await gone.Next())!.Value.Name);
+    long id = await StartRender(new { scene = "Five balls", settings = new { width = 24, height = 18, threads = 2 } });
+    await studio.PollUntil("/api/status", s => s.GetProperty("renderId").GetInt64() == id && s.GetProperty("phase").GetString() == "idle" &&
+                                                s.GetProperty("statistics").GetString() is { Length: > 0 }, "the end of the render");
+
+    await using Events again = await Events.Open(studio.Client);
+    (string name, JsonElement status) = (await again.Next())!.Value;
+    Assert.Equal("status", name);
+    Assert.Equal(id, Id(status));
+    Assert.Equal("idle", status.GetProperty("phase").GetString());
+    Assert.StartsWith("24x18", status.GetProperty("statistics").GetString());
+  }
+
+  [Fact]
   public async Task Stop_of_a_building_script_shows_up_as_the_idle_phase()
   {
     string marker = Path.Combine(studio.Folder, "events-stuck").Replace("\\", "/", StringComparison.Ordinal);

@@ -8,7 +8,6 @@ using System.Threading.Tasks;
 using GrCis.Hosting;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
-using Microsoft.AspNetCore.Hosting;
 using Microsoft.AspNetCore.Http;
 using Microsoft.AspNetCore.Http.HttpResults;
 using Microsoft.AspNetCore.Routing;
