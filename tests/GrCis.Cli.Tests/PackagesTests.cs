@@ -3,6 +3,7 @@ using System.Collections;
 using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
+using System.IO.Compression;
 using System.Linq;
 using System.Text;
 using GrCis.Cli.Scaffolding;
@@ -39,6 +40,10 @@ public class PackagesTests
     Run(RepoPaths.Root, null, "pack", "templates/GrCis.Templates.csproj", "-c", Configuration, "-o", feed, "--disable-build-servers");
     foreach (string id in new[] { "GrCis.Rendering", "GrCis.Compatibility", "GrCis.Cli", "GrCis.Templates" })
       Assert.True(File.Exists(Path.Combine(feed, $"{id}.{version}.nupkg")), $"{id}.{version}.nupkg not packed");
+    // The library brings its doc comments (IDE hover) and its PDB (stepping in, source link).
+    using (ZipArchive library = ZipFile.OpenRead(Path.Combine(feed, $"GrCis.Rendering.{version}.nupkg")))
+      foreach (string part in new[] { ".dll", ".xml", ".pdb" })
+        Assert.Contains(library.Entries, e => e.FullName == "lib/net10.0/GrCis.Rendering" + part);
 
     // The local feed first, then the sources this machine restores from (for StbImageSharp): the fresh home has none.
     WriteNuGetConfig(work, feed);

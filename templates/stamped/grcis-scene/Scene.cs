@@ -2,7 +2,7 @@
 // A GrCis scene script. Render it with
 //   grcis render Scene.cs -o scene.png [--param "radius=1.2"] [--size 800x600 --spp 16]
 // or open this folder in the studio: grcis studio .
-// `dotnet build` here checks it as you edit, and your IDE completes the GrCis API.
+// Your IDE completes the GrCis API and marks errors as you type; `dotnet build` here checks the script.
 //
 // Globals: scene (the scene to fill), param (the --param text), context (values shared with grcis,
 // keys PropertyName.CTX_*). Statements first; methods may go anywhere, classes of your own at the end.
