@@ -26,8 +26,8 @@ public sealed class ScriptAssistant : IDisposable
   /// <summary>Longest completion list returned (the best matches of the typed word first).</summary>
   public const int MaxCompletions = 200;
 
-  /// <summary>How many of a list's first entries carry their signature and documentation.</summary>
-  public const int DescribedCompletions = 40;
+  /// <summary>How many of a list's first entries carry their signature and documentation by default (the rest on <see cref="DescribeAsync"/>).</summary>
+  public const int DescribedCompletions = 1;
 
   readonly AdhocWorkspace workspace;
   readonly DocumentId documentId;
@@ -59,7 +59,8 @@ public sealed class ScriptAssistant : IDisposable
   }
 
   /// <summary>What may be typed at <paramref name="position"/>: members after a dot, names and keywords elsewhere, filtered by the word typed so far.</summary>
-  public async Task<CompletionResult> CompleteAsync(string source, int position, CancellationToken cancel = default)
+  /// <param name="described">How many of the first entries carry their signature and documentation.</param>
+  public async Task<CompletionResult> CompleteAsync(string source, int position, int described = DescribedCompletions, CancellationToken cancel = default)
   {
     CheckPosition(source, position);
     Document document = At(source);
@@ -80,11 +81,28 @@ public sealed class ScriptAssistant : IDisposable
                .ThenBy(r => r.Item.DisplayText, StringComparer.Ordinal).Take(MaxCompletions))
     {
       string? detail = null, documentation = null;
-      if (entries.Count < DescribedCompletions)
+      if (entries.Count < described)
         (detail, documentation) = Split(await service.GetDescriptionAsync(document, item, cancel).ConfigureAwait(false));
       entries.Add(new CompletionEntry(item.DisplayTextPrefix + item.DisplayText + item.DisplayTextSuffix, Kind(item.Tags), detail, documentation));
     }
     return new CompletionResult(span.Start, span.End, entries);
+  }
+
+  /// <summary>The signature and documentation of the completion entry <paramref name="label"/> offered at <paramref name="position"/> (for an entry listed undescribed).</summary>
+  public async Task<CompletionEntry?> DescribeAsync(string source, int position, string label, CancellationToken cancel = default)
+  {
+    CheckPosition(source, position);
+    ArgumentNullException.ThrowIfNull(label);
+    Document document = At(source);
+    CompletionService? service = CompletionService.GetService(document);
+    if (service is null)
+      return null;
+    CompletionList list = await service.GetCompletionsAsync(document, position, cancellationToken: cancel).ConfigureAwait(false);
+    CompletionItem? item = list.ItemsList.FirstOrDefault(i => i.DisplayTextPrefix + i.DisplayText + i.DisplayTextSuffix == label);
+    if (item is null)
+      return null;
+    (string? detail, string? documentation) = Split(await service.GetDescriptionAsync(document, item, cancel).ConfigureAwait(false));
+    return new CompletionEntry(label, Kind(item.Tags), detail, documentation);
   }
 
   /// <summary>The overloads of the call or object creation around <paramref name="position"/>, or null outside one.</summary>
@@ -111,6 +129,13 @@ public sealed class ScriptAssistant : IDisposable
     string text = info.Sections.FirstOrDefault(s => s.Kind == QuickInfoSectionKinds.Description)?.Text ?? info.Sections[0].Text;
     string? docs = info.Sections.FirstOrDefault(s => s.Kind == QuickInfoSectionKinds.DocumentationComments)?.Text;
     return new HoverInfo(info.Span.Start, info.Span.End, text, string.IsNullOrWhiteSpace(docs) ? null : docs);
+  }
+
+  /// <summary>A bare Roslyn lookup of the names visible at a position, on a fresh snapshot (a benchmark's floor).</summary>
+  internal async Task<int> LookupFloorAsync(string source, int position, CancellationToken cancel = default)
+  {
+    SemanticModel? model = await At(source).GetSemanticModelAsync(cancel).ConfigureAwait(false);
+    return model?.LookupSymbols(position).Length ?? 0;
   }
 
   // Roslyn's description is the signature on the first line, then the documentation.

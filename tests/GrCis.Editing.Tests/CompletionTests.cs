@@ -19,9 +19,21 @@ public sealed class CompletionTests(AssistantFixture fixture) : IClassFixture<As
     Assert.Contains("BackgroundColor", labels);
     Assert.DoesNotContain("Sphere", labels); // members only, not the types in scope
     Assert.Equal(source.Length, result.From);
-    CompletionEntry camera = result.Items.Single(i => i.Label == "Camera");
+    CompletionEntry? camera = await assistant.DescribeAsync(source, source.Length, "Camera");
+    Assert.NotNull(camera);
     Assert.Equal("property", camera.Kind);
     Assert.Contains("ICamera", camera.Detail);
+  }
+
+  [Fact]
+  public async Task The_first_entry_comes_described_and_the_rest_on_request()
+  {
+    const string source = "scene.Intersectable = new PhongMat";
+    CompletionResult result = await assistant.CompleteAsync(source, source.Length);
+    Assert.Equal("PhongMaterial", result.Items[0].Label);
+    Assert.Contains("Phong material", result.Items[0].Documentation);
+    Assert.All(result.Items.Skip(ScriptAssistant.DescribedCompletions), i => Assert.Null(i.Detail));
+    Assert.Null(await assistant.DescribeAsync(source, source.Length, "NoSuchEntry"));
   }
 
   [Theory]
