@@ -94,6 +94,7 @@ public static class Program
       new InfoCommand().Build(env),
       BenchCommand.Build(env),
       new StudioCommand().Build(env),
+      InitCommand.Build(env),
     };
     return root;
   }

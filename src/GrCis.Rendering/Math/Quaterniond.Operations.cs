@@ -34,7 +34,7 @@ public partial struct Quaterniond
     result.Z = cy * sp * cr - sy * cp * sr;
   }
 
-  /// <summary>The rotation of an orthonormal matrix (row vectors, as <see cref="Matrix3d.CreateFromQuaternion"/> builds).</summary>
+  /// <summary>The rotation of an orthonormal matrix (row vectors, as <see cref="Matrix3d.CreateFromQuaternion(Quaterniond)"/> builds).</summary>
   public static Quaterniond FromMatrix(Matrix3d m)
   {
     // Shepperd's method: start from the largest of w, x, y, z so the square root is well away from zero.

@@ -215,7 +215,7 @@ internal static class ScriptCompiler
   }
 
   /// <summary><see cref="DefaultImports"/>, and <see cref="YieldingImport"/> unless a module declares a type it holds.</summary>
-  static ImmutableArray<string> ScriptImports(IReadOnlyList<ScriptModule> modules)
+  internal static ImmutableArray<string> ScriptImports(IReadOnlyList<ScriptModule> modules)
   {
     foreach (ScriptModule m in modules)
       foreach (Type t in m.Assembly.GetExportedTypes())
@@ -230,7 +230,7 @@ internal static class ScriptCompiler
   static readonly HashSet<string> YieldingNames = new(typeof(Rendering.RayTracing).Assembly.GetExportedTypes()
     .Where(t => t.Namespace == YieldingImport).Select(t => t.Name), StringComparer.Ordinal);
 
-  static IEnumerable<MetadataReference> References(IReadOnlyList<ScriptModule> modules) =>
+  internal static IEnumerable<MetadataReference> References(IReadOnlyList<ScriptModule> modules) =>
     modules.Count == 0 ? FrameworkReferences.All : FrameworkReferences.All.Concat(modules.Select(m => m.Reference));
 
   static Dictionary<string, Assembly> ModuleMap(IReadOnlyList<ScriptModule> modules) =>

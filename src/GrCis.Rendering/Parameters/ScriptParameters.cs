@@ -9,7 +9,8 @@ namespace GrCis.Scripting;
 /// quietly keeps the default when a value does not parse; these getters instead throw a
 /// <see cref="ScriptParameterException"/> that says which parameter, which value and what was expected.
 /// A missing key gives the default. Usable from scripts (<c>new GrCis.Scripting.ScriptParameters(param)</c>)
-/// and from hosts that want to check a parameter string up front.
+/// and from hosts that want to check a parameter string up front. It lives in the library, in the namespace
+/// scripts name it by, so a scene script's IDE project (which references the library only) knows it too.
 /// </summary>
 public sealed class ScriptParameters
 {
@@ -67,22 +68,4 @@ public sealed class ScriptParameters
   }
 
   ScriptParameterException Bad(string key, string expected) => new(key, Values[key], expected);
-}
-
-/// <summary>A parameter value in the script's <c>param</c> string has the wrong form.</summary>
-public sealed class ScriptParameterException : Exception
-{
-  public ScriptParameterException(string key, string value, string expected)
-    : base($"parameter '{key}' has the value '{value}', expected {expected}")
-  {
-    Key = key;
-    Value = value;
-    Expected = expected;
-  }
-
-  public string Key { get; }
-
-  public string Value { get; }
-
-  public string Expected { get; }
 }

@@ -1,0 +1,89 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Threading;
+using Microsoft.CodeAnalysis;
+
+namespace GrCis.Editing;
+
+/// <summary>
+/// The references scripts compile against, each with its XML documentation where the machine has it: the
+/// GrCis assemblies' own files (built beside them) and the framework's from the SDK's reference pack. The
+/// runtime's implementation assembly (System.Private.CoreLib) has no file of its own; its public types are
+/// documented in the reference pack under their contract assemblies, so it reads those.
+/// </summary>
+internal static class DocumentedReferences
+{
+  // The contract assemblies whose types System.Private.CoreLib implements and scripts use most.
+  static readonly string[] CoreLibContracts = { "System.Runtime", "System.Collections", "System.Console", "System.Runtime.Intrinsics" };
+
+  public static IReadOnlyList<MetadataReference> With(IEnumerable<MetadataReference> references)
+  {
+    string? packDir = ReferencePackDirectory();
+    var result = new List<MetadataReference>();
+    foreach (MetadataReference r in references)
+    {
+      if (r is not PortableExecutableReference { FilePath: { } path } pe)
+      {
+        result.Add(r);
+        continue;
+      }
+      string name = Path.GetFileNameWithoutExtension(path);
+      DocumentationProvider? docs = null;
+      string beside = Path.ChangeExtension(path, ".xml");
+      if (File.Exists(beside))
+        docs = XmlDocumentationProvider.CreateFromFile(beside);
+      else if (packDir is not null && name == "System.Private.CoreLib")
+        docs = new FirstOf(CoreLibContracts.Select(c => Path.Combine(packDir, c + ".xml")).Where(File.Exists).ToArray());
+      else if (packDir is not null && File.Exists(Path.Combine(packDir, name + ".xml")))
+        docs = XmlDocumentationProvider.CreateFromFile(Path.Combine(packDir, name + ".xml"));
+      result.Add(docs is null ? pe : MetadataReference.CreateFromFile(path, pe.Properties, docs));
+    }
+    return result;
+  }
+
+  /// <summary><c>packs/Microsoft.NETCore.App.Ref/&lt;version&gt;/ref/net&lt;major&gt;.0</c> of the running runtime's SDK, if installed.</summary>
+  static string? ReferencePackDirectory()
+  {
+    // <root>/shared/Microsoft.NETCore.App/<version>/System.Private.CoreLib.dll
+    string runtimeDir = Path.GetDirectoryName(typeof(object).Assembly.Location)!;
+    string? root = Path.GetDirectoryName(Path.GetDirectoryName(Path.GetDirectoryName(runtimeDir)));
+    if (root is null)
+      return null;
+    string packs = Path.Combine(root, "packs", "Microsoft.NETCore.App.Ref");
+    if (!Directory.Exists(packs))
+      return null;
+    int major = Environment.Version.Major;
+    string tfm = $"net{major}.0";
+    return Directory.EnumerateDirectories(packs)
+      .Where(d => Version.TryParse(Path.GetFileName(d).Split('-')[0], out Version? v) && v.Major == major)
+      .OrderByDescending(d => Version.Parse(Path.GetFileName(d).Split('-')[0]))
+      .Select(d => Path.Combine(d, "ref", tfm))
+      .FirstOrDefault(Directory.Exists);
+  }
+
+  /// <summary>The members of several documentation files, read when first asked for.</summary>
+  sealed class FirstOf(string[] files) : DocumentationProvider
+  {
+    readonly Lazy<Dictionary<string, string>> members = new(() => Read(files));
+
+    protected override string? GetDocumentationForSymbol(string documentationMemberID, CultureInfo preferredCulture, CancellationToken cancellationToken = default) =>
+      members.Value.TryGetValue(documentationMemberID, out string? xml) ? xml : null;
+
+    static Dictionary<string, string> Read(string[] files)
+    {
+      var all = new Dictionary<string, string>(StringComparer.Ordinal);
+      foreach (string file in files)
+        foreach (System.Xml.Linq.XElement member in System.Xml.Linq.XDocument.Load(file).Descendants("member"))
+          if ((string?)member.Attribute("name") is { } id)
+            all.TryAdd(id, member.ToString());
+      return all;
+    }
+
+    public override bool Equals(object? obj) => ReferenceEquals(this, obj);
+
+    public override int GetHashCode() => System.Runtime.CompilerServices.RuntimeHelpers.GetHashCode(this);
+  }
+}
