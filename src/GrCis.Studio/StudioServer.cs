@@ -77,6 +77,7 @@ public sealed class StudioServer : IAsyncDisposable
     builder.Services.AddProblemDetails();
     builder.Services.AddSingleton(session);
     builder.Services.AddSingleton(files);
+    builder.Services.AddSingleton<EditorAssistance>();
     WebApplication app = builder.Build();
 
     // A failure inside an endpoint, and an answer with a status and no body (a 404 of an image not rendered yet), are
