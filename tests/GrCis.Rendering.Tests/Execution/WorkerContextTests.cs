@@ -129,8 +129,8 @@ public class WorkerContextTests
         synth.PixelLinear(x, y, probed);
 
       // Progressive passes: samples [0,1), [1,4), [4,16) in separate calls, each from its own worker.
-      Span<double> sum = stackalloc double[3];
-      Span<double> odd = stackalloc double[3];
+      var sum = new double[3];
+      var odd = new double[3];
       var scratch = new double[3];
       foreach ((int first, int end) in new[] { (0, 1), (1, 4), (4, 16) })
         using (WorkerContext.Begin(new RenderContext(), scene, f, synth, options))
