@@ -10,7 +10,8 @@ namespace Rendering;
 /// lens or light points instead of 16 independent random ones. The points are correlated multi-jittered
 /// (Kensler 2013): stratified in 2D and in each coordinate alone. They are a pure function of the seed,
 /// frame, pixel, dimension and rank, and consume nothing of <see cref="MT.rnd"/>: the image does not depend
-/// on threads or on the order the samples are taken.
+/// on threads or on the order the samples are taken. <see cref="CorrelatedMultiJitterSampler"/> is this pattern as
+/// a <see cref="Sampler"/>; the members that take a numbered dimension read the current worker's pixel and sample.
 /// </summary>
 public static class Strata
 {
