@@ -225,9 +225,10 @@ public sealed class RenderSession : IDisposable
     var done = new bool[rows * columns];
     ImageSynthesizer renderer = job.Renderer;
     var po = new ParallelOptions { MaxDegreeOfParallelism = Math.Max(1, options.EffectiveThreads) };
+    WorkerContext caller = WorkerContext.Current;
     Parallel.For(0, rows, po,
       // Each task is a worker of the render (a script's code stuck in a loop stops with the session, see Interruption).
-      () => (Color: new double[target.Bands], Scope: WorkerContext.Begin(context, job.Scene, job.ImageFunction, renderer, options, token)),
+      () => (Color: new double[target.Bands], Scope: WorkerContext.Begin(context, job.Scene, job.ImageFunction, renderer, options, token, parent: caller)),
       (row, _, state) =>
       {
         double[] color = state.Color;

@@ -76,6 +76,7 @@ public static class TileRenderer
 
     int nextWorker = -1;
     MT.threads = threads;
+    WorkerContext caller = WorkerContext.Current;
 
     void Work()
     {
@@ -85,7 +86,7 @@ public static class TileRenderer
         // The worker's context: its scene, sampler, scratch and counts; a script's texture or shader stuck in a loop
         // stops with the render (cancel).
         using WorkerContext.Scope worker = WorkerContext.Begin(context, scene, imageFunction, renderer, options, cancel,
-                                                               Interlocked.Increment(ref nextWorker));
+                                                               Interlocked.Increment(ref nextWorker), caller);
         while (!cancel.IsCancellationRequested && failure.Exception == null &&
                (k = Interlocked.Increment(ref next)) < tiles.Count)
         {

@@ -112,25 +112,27 @@ public sealed class WorkerContext
   /// Makes the calling thread a worker of <paramref name="render"/> until the scope ends: a new context with its own
   /// clone of the time-dependent parts of <paramref name="scene"/> (<see cref="SceneCloner.ForFrameWorker"/>), a sampler
   /// of <paramref name="options"/>' kind, seed and frame, and <paramref name="cancel"/> for user code. The scene time and
-  /// script folder of the calling thread carry over. On disposal the worker's rays and hits are added to the render's
-  /// counts and the thread's previous context is back.
+  /// script folder of <paramref name="parent"/> carry over. On disposal the worker's rays and hits are added to the
+  /// render's counts and the thread's previous context is back.
   /// </summary>
   /// <param name="render">The render the worker counts for and whose observer, noise and prepared scenes it uses; null = the thread's own prepared scenes, nothing observed or published.</param>
+  /// <param name="parent">The context of the thread that started the render (taken there, before the workers start), so every worker sees its scene time and script folder whatever thread it runs on; null = the calling thread's.</param>
   public static Scope Begin(RenderContext? render, IRayScene scene, IImageFunction imageFunction, IRenderer? renderer, RenderOptions options,
-                            CancellationToken cancel = default, int threadID = 0)
+                            CancellationToken cancel = default, int threadID = 0, WorkerContext? parent = null)
   {
     ArgumentNullException.ThrowIfNull(scene);
     ArgumentNullException.ThrowIfNull(imageFunction);
     ArgumentNullException.ThrowIfNull(options);
     WorkerContext previous = Current;
+    parent ??= previous;
     var c = new WorkerContext(Sampler.Create(options.Sampler, options.Seed, options.Frame), render)
     {
       ImageFunction = imageFunction,
       Renderer = renderer,
       ThreadID = threadID,
       Cancel = cancel,
-      ScriptDirectory = previous.ScriptDirectory,
-      Time = previous.Time,
+      ScriptDirectory = parent.ScriptDirectory,
+      Time = parent.Time,
       Rnd = new RandomJames(),
     };
     if (render == null)

@@ -75,6 +75,44 @@ public class WorkerContextTests
     Assert.True(context.Rays > 0, "the worker's rays count for its render");
   }
 
+  /// <summary>Records the scene time its workers see.</summary>
+  sealed class TimeRecorder : IImageFunction
+  {
+    public readonly System.Collections.Concurrent.ConcurrentBag<double> Times = new();
+
+    public double Width { get; set; }
+
+    public double Height { get; set; }
+
+    public long GetSample(double x, double y, double[] color)
+    {
+      Times.Add(MT.time);
+      return 0L;
+    }
+  }
+
+  [Theory]
+  [InlineData(1)]
+  [InlineData(3)]
+  public void Every_worker_sees_the_scene_time_of_the_thread_that_started_the_render(int threads)
+  {
+    IRayScene scene = TestScenes.BallOnGround(areaLight: false);
+    var recorder = new TimeRecorder();
+    double before = MT.time;
+    MT.time = 1.75;
+    try
+    {
+      TileRenderer.Render(scene, recorder, new SimpleImageSynthesizer { Width = 16, Height = 16 },
+        new RenderOptions { Threads = threads, TileSize = 4 });
+    }
+    finally
+    {
+      MT.time = before;
+    }
+    Assert.Equal(256, recorder.Times.Count);
+    Assert.All(recorder.Times, t => Assert.Equal(1.75, t));
+  }
+
   static bool BitIdentical(FloatImage a, FloatImage b) =>
     MemoryMarshal.AsBytes(a.Data.AsSpan()).SequenceEqual(MemoryMarshal.AsBytes(b.Data.AsSpan()));
 
