@@ -7,8 +7,8 @@ namespace Rendering.Execution;
 
 /// <summary>
 /// Renders an image in tiles on worker threads, each in a <see cref="WorkerContext"/> of its own. Every pixel's
-/// randomness is derived from (seed, frame, pixel) in <see cref="MT.StartPixel"/> and the worker's <see cref="Sampler"/>, so the image is bit-identical for any
-/// number of threads and any tile order. Cancellation keeps every tile finished so far.
+/// randomness is derived from (seed, frame, pixel) in <see cref="MT.StartPixel"/> and the worker's <see cref="Sampler"/>,
+/// so the image is bit-identical for any number of threads and any tile order. Cancellation keeps every tile finished so far.
 /// </summary>
 public static class TileRenderer
 {

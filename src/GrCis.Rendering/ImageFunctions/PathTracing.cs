@@ -14,9 +14,9 @@ namespace Rendering;
 /// Phong parameters), emissive surfaces (<see cref="PhongMaterial.Emission"/>), GrCis's light sources and the
 /// background as an environment light. Every diffuse or glossy vertex samples the lights (next-event
 /// estimation) and combines that with the scattered ray by multiple importance sampling (power heuristic);
-/// paths end by Russian roulette from the second bounce on. Every random decision of a vertex (lobe, direction, roulette,
-/// emitter, point on it) comes from the worker's <see cref="Sampler"/>, each in a <see cref="SampleDimension"/> of its own. Output is linear radiance: render to PFM
-/// for comparisons, use n×n supersampling for the noise to fall.
+/// paths end by Russian roulette from the second bounce on. Every random decision of a vertex (lobe, direction,
+/// roulette, emitter, point on it) comes from the worker's <see cref="Sampler"/>, each in a <see cref="SampleDimension"/>
+/// of its own. Output is linear radiance: render to PFM for comparisons, use n×n supersampling for the noise to fall.
 /// </summary>
 /// <remarks>
 /// GrCis's light sources are points (or area lights sampled as points): a light of intensity I lights a
