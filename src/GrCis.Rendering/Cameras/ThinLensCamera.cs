@@ -20,7 +20,7 @@ namespace Rendering;
 [Serializable]
 public class ThinLensCamera : StaticCamera
 {
-  /// <summary>The stratification dimension of the lens (<see cref="Strata.Dimension"/>).</summary>
+  /// <summary>The stratification dimension of the lens (<see cref="Strata.Dimension(SampleDimension, int)"/>).</summary>
   public static readonly uint LensDimension = Strata.Dimension(SampleDimension.Lens, 0);
 
   double lensRadius;
