@@ -19,7 +19,7 @@ namespace GrCis.Studio.Tests;
 /// and look at its noise. Screenshots of
 /// each step are written beside the test assembly (<c>screenshots/</c>).
 /// </summary>
-public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFixture>
+public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<StudioFixture>
 {
   static readonly string Shots = Path.Combine(AppContext.BaseDirectory, "screenshots");
 
