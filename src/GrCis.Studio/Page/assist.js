@@ -154,8 +154,9 @@ function annotations(text, update, _options, cm) {
     if (ask !== checkAsk || !result || cm.getValue() !== text) return;
     update(result.diagnostics.map(d => {
       const from = CodeMirror.Pos(d.line - 1, Math.max(0, d.column - 1));
-      const word = cm.findWordAt(from);
-      const to = word.head.line === from.line && word.head.ch > from.ch ? word.head : CodeMirror.Pos(from.line, from.ch + 1);
+      // The token that starts there (a name, a string, a number), else one character.
+      const token = cm.getTokenAt(CodeMirror.Pos(from.line, from.ch + 1), true);
+      const to = CodeMirror.Pos(from.line, token.start === from.ch && token.end > from.ch ? token.end : from.ch + 1);
       return { from, to, message: `${d.id}: ${d.message}`, severity: d.severity === "error" ? "error" : "warning" };
     }));
   }, () => { });
