@@ -67,10 +67,10 @@ public sealed class WorkerContext
   /// <summary>The shading scratch of the render this worker shades for (swapped by <see cref="RenderContext.Enter"/>).</summary>
   internal ShadingScratch Scratch;
 
-  // PathTracing's emitters of the scene this worker renders, rebuilt when the scene, its snapshot or the frame changes.
-  internal EmitterSet? Emitters;
-  internal object? EmittersRoot, EmittersSnapshot;
-  internal int EmittersFrame;
+  // PathTracing's lights of the scene this worker renders, rebuilt when the scene, its lights, its snapshot or the frame changes.
+  internal SceneLights? Lights;
+  internal object? LightsScene, LightsSources, LightsRoot, LightsSnapshot;
+  internal int LightsFrame;
 
   /// <summary>The rays of the path being observed, ended in reverse order when the path is done (<see cref="PathTracing"/>).</summary>
   internal (Observation.RayKind Kind, int Depth, OpenTK.Mathematics.Vector3d Origin, OpenTK.Mathematics.Vector3d Direction, Intersection? Hit)[]? ObservedRays;

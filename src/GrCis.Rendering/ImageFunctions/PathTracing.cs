@@ -52,21 +52,24 @@ public class PathTracing : RayTracing
     MirrorExponent = p.MirrorExponent;
   }
 
-  /// <summary>The emitters of the scene the worker renders, kept in its context and rebuilt when the scene, its snapshot or the frame changes.</summary>
-  EmitterSet EmittersOf(WorkerContext context, IRayScene sc)
+  /// <summary>The lights of the scene the worker renders, kept in its context and rebuilt when the scene, its lights, its snapshot or the frame changes.</summary>
+  SceneLights LightsOf(WorkerContext context, IRayScene sc, int bands)
   {
     IIntersectable? root = sc.Intersectable;
     PreparedScene? snapshot = PreparedFor(context.Scratch);
     int frame = context.Sampler.Frame;
-    if (context.Emitters is not EmitterSet emitters || !ReferenceEquals(context.EmittersRoot, root) ||
-        !ReferenceEquals(context.EmittersSnapshot, snapshot) || context.EmittersFrame != frame)
+    object? sources = sc.Sources;
+    if (context.Lights is not SceneLights lights || !ReferenceEquals(context.LightsScene, sc) || !ReferenceEquals(context.LightsSources, sources) ||
+        !ReferenceEquals(context.LightsRoot, root) || !ReferenceEquals(context.LightsSnapshot, snapshot) || context.LightsFrame != frame)
     {
-      context.Emitters = emitters = EmitterSet.Of(root);
-      context.EmittersRoot = root;
-      context.EmittersSnapshot = snapshot;
-      context.EmittersFrame = frame;
+      context.Lights = lights = SceneLights.Of(sc, root, bands);
+      context.LightsScene = sc;
+      context.LightsSources = sources;
+      context.LightsRoot = root;
+      context.LightsSnapshot = snapshot;
+      context.LightsFrame = frame;
     }
-    return emitters;
+    return lights;
   }
 
   /// <summary>Radiance arriving along the ray <c>p0 + t p1</c> by path tracing, into <paramref name="color"/>; returns the first hit's hash.</summary>
@@ -76,12 +79,13 @@ public class PathTracing : RayTracing
     ShadingScratch scratch = context.Scratch;
     Sampler sampler = context.Sampler;
     IRayScene sc = Scene;
-    EmitterSet lights = NextEventEstimation ? EmittersOf(context, sc) : EmitterSet.Empty;
+    SceneLights lights = NextEventEstimation ? LightsOf(context, sc, color.Length) : SceneLights.Empty;
 
     Rgb radiance = Rgb.Zero, throughput = Rgb.One;
     Vector3d origin = p0, direction = p1.Normalized();
     bool afterDelta = true;   // the camera ray, like a mirror bounce, cannot be found by light sampling
     double lastPdf = 0.0;
+    Vector3d lastNormal = default;   // the facing normal of the vertex the ray left (the environment's density reads it)
     long hash = 1L;
 
     // An observer (the demo's probe and extra views) sees the path as a chain: each bounce nests in the one before.
@@ -108,7 +112,15 @@ public class PathTracing : RayTracing
       }
       if (i == null)
       {
-        radiance += throughput * Environment(sc, direction, scratch.Buffer(depth + 1, color.Length));
+        Rgb env = Environment(sc, direction, scratch.Buffer(depth + 1, color.Length));
+        double w = 1.0;
+        if (!afterDelta && !env.IsBlack)
+        {
+          double lightPdf = lights.EnvironmentPdf(new LightContext(origin, lastNormal, null), direction);
+          if (lightPdf > 0.0)
+            w = MultipleImportanceSampling ? PowerHeuristic(lastPdf, lightPdf) : 0.0;
+        }
+        radiance += throughput * env * w;
         break;
       }
       scratch.Hits++;
@@ -122,9 +134,13 @@ public class PathTracing : RayTracing
       if (i.Material is PhongMaterial { Emission: double[] emission } && Vector3d.Dot(normal, direction) < 0.0)
       {
         double w = 1.0;
-        // A light sample could not have found it when its density is 0 (a sphere seen from inside or on it).
-        if (!afterDelta && lights.Pdf(i.Solid, origin, x, normal, direction, out double lightPdf) && lightPdf > 0.0)
-          w = MultipleImportanceSampling ? PowerHeuristic(lastPdf, lightPdf) : 0.0;
+        // A light sample could not have found it when its density is 0 (not a sampled light, a sphere seen from inside or on it).
+        if (!afterDelta)
+        {
+          double lightPdf = lights.SurfacePdf(i.Solid, new LightContext(origin, lastNormal, null), direction, x, normal);
+          if (lightPdf > 0.0)
+            w = MultipleImportanceSampling ? PowerHeuristic(lastPdf, lightPdf) : 0.0;
+        }
         radiance += throughput * Rgb.From(emission) * w;
       }
       if (bounce >= MaxLevel)
@@ -134,7 +150,7 @@ public class PathTracing : RayTracing
       if (!bsdf.Scatters)
         break;
       if (NextEventEstimation && bsdf.HasSmooth)
-        radiance += throughput * SampleLights(scratch, sampler, sc, lights, i, bsdf, bounce);
+        radiance += throughput * SampleLight(scratch, sampler, lights, i, bsdf, bounce, depth + (observer != null ? bounce : 0) + 1);
 
       // Continue the path in a direction sampled from the surface's lobes.
       sampler.Get2D(SampleDimension.PathDirection, bounce, out double u, out double v);
@@ -154,6 +170,7 @@ public class PathTracing : RayTracing
       direction = wi;
       afterDelta = delta;
       lastPdf = pdf;
+      lastNormal = bsdf.FacingNormal;
       kind = Vector3d.Dot(wi, bsdf.FacingNormal) < 0.0 ? RayKind.Refracted : RayKind.Reflected;
     }
     while (observed > 0)
@@ -173,64 +190,45 @@ public class PathTracing : RayTracing
     return ref context.ObservedRays![index];
   }
 
-  /// <summary>Direct light at hit <paramref name="i"/>: every light source once, and one sample of one emitter.</summary>
-  Rgb SampleLights(ShadingScratch scratch, Sampler sampler, IRayScene sc, EmitterSet lights, Intersection i, in PathBsdf bsdf, int bounce)
+  /// <summary>
+  /// Direct light at hit <paramref name="i"/> (next-event estimation): one light chosen by power, one sample of it,
+  /// weighed by MIS against the scattered ray when that ray could reach the light too. <paramref name="slot"/> is the
+  /// pooled hit a ray towards the background may fill.
+  /// </summary>
+  Rgb SampleLight(ShadingScratch scratch, Sampler sampler, SceneLights lights, Intersection i, in PathBsdf bsdf, int bounce, int slot)
   {
-    Rgb sum = Rgb.Zero;
+    ILight? light = lights.Sampler.Sample(sampler.Get1D(SampleDimension.PathLightPick, bounce), out double pick);
+    if (light == null)
+      return Rgb.Zero;
+    sampler.Get2D(SampleDimension.PathLightPoint, bounce, out double u, out double v);
     Vector3d x = i.CoordWorld;
     Vector3d nf = bsdf.FacingNormal;
-
-    if (sc.Sources is { Count: > 0 } sources)
-    {
-      // Lights read the hit's normal to tell the lit side: give them the side this vertex scatters on.
-      Vector3d outward = i.Normal;
-      i.Normal = nf;
-      if (sources is LinkedList<ILightSource> linked)
-      {
-        for (LinkedListNode<ILightSource>? n = linked.First; n != null; n = n.Next)
-          sum += PointLight(scratch, n.Value, i, bsdf);
-      }
-      else
-        foreach (ILightSource source in sources)
-          sum += PointLight(scratch, source, i, bsdf);
-      i.Normal = outward;
-    }
-
-    if (lights.Count > 0)
-    {
-      sampler.Get2D(SampleDimension.PathLightPoint, bounce, out double u, out double v);
-      if (lights.Sample(x, sampler.Get1D(SampleDimension.PathLightPick, bounce), u, v, out Vector3d toLight, out double dist, out Vector3d wi, out Rgb le, out double lightPdf))
-      {
-        double cos = Vector3d.Dot(wi, nf);
-        if (cos > 0.0)
-        {
-          Rgb f = bsdf.Eval(wi);
-          if (!f.IsBlack && Visible(scratch, x, toLight, dist))
-          {
-            double w = MultipleImportanceSampling ? PowerHeuristic(lightPdf, bsdf.Pdf(wi)) : 1.0;
-            sum += f * le * (cos * w / lightPdf);
-          }
-        }
-      }
-    }
-    return sum;
-  }
-
-  /// <summary>One GrCis light source's contribution: irradiance π·I (see the class remarks), shadowed.</summary>
-  Rgb PointLight(ShadingScratch scratch, ILightSource source, Intersection i, in PathBsdf bsdf)
-  {
-    double[]? intensity = source.GetIntensity(i, out Vector3d dir);
-    if (intensity == null || (dir.X == 0.0 && dir.Y == 0.0 && dir.Z == 0.0))
-      return Rgb.Zero;   // unlit, or ambient light
-    double dist = dir.Length;
-    Vector3d wi = dir / dist;
-    double cos = Vector3d.Dot(wi, bsdf.FacingNormal);
+    if (!light.SampleLi(new LightContext(x, nf, i), u, v, out LightSample s) || s.L.IsBlack)
+      return Rgb.Zero;
+    double cos = Vector3d.Dot(s.Wi, nf);
     if (cos <= 0.0)
       return Rgb.Zero;
-    Rgb f = bsdf.Eval(wi);
-    if (f.IsBlack || !Visible(scratch, i.CoordWorld, dir, dist))
+    Rgb f = bsdf.Eval(s.Wi);
+    if (f.IsBlack)
       return Rgb.Zero;
-    return f * Rgb.From(intensity) * (Math.PI * cos);
+    if (light.Kind == LightKind.DeltaPosition)
+      return Visible(scratch, x, s.ToLight, s.Distance) ? f * s.L * (cos / pick) : Rgb.Zero;
+    bool visible = light.Kind == LightKind.Infinite ? Escapes(scratch, slot, x, s.Wi) : Visible(scratch, x, s.ToLight, s.Distance);
+    if (!visible)
+      return Rgb.Zero;
+    double lightPdf = pick * s.Pdf;
+    double w = MultipleImportanceSampling ? PowerHeuristic(lightPdf, bsdf.Pdf(s.Wi)) : 1.0;
+    return f * s.L * (cos * w / lightPdf);
+  }
+
+  /// <summary>True when the ray from <paramref name="x"/> along <paramref name="wi"/> leaves the scene (reaches the background).</summary>
+  bool Escapes(ShadingScratch scratch, int slot, Vector3d x, Vector3d wi)
+  {
+    if (!DoShadows)
+      return true;
+    bool escapes = FirstHitAt(scratch, slot, x, wi) == null;
+    scratch.Observer?.ShadowRay(x, wi, !escapes);
+    return escapes;
   }
 
   /// <summary>True when nothing blocks the segment from <paramref name="x"/> to <c>x + toLight</c> (the light's own surface excluded).</summary>

@@ -1,0 +1,68 @@
+using System;
+using System.Collections.Generic;
+using OpenTK.Mathematics;
+
+namespace Rendering;
+
+/// <summary>
+/// Every light of a scene in the one light model, with the <see cref="LightSampler"/> that chooses among them by power:
+/// GrCis's light sources (<see cref="GrCisLight"/> for its own types, <see cref="CustomLight"/> for any other;
+/// <see cref="AmbientLightSource"/> is left out, as the indirect light it stood for is computed), the emissive
+/// rectangles and spheres (<see cref="EmitterSet"/>) and the background (<see cref="EnvironmentLight"/>).
+/// Made per worker: the adapters keep buffers.
+/// </summary>
+internal sealed class SceneLights
+{
+  readonly Dictionary<ISolid, ILight> surfaces = new(ReferenceEqualityComparer.Instance);
+
+  public static readonly SceneLights Empty = new();
+
+  /// <summary>Chooses the light a vertex samples.</summary>
+  public LightSampler Sampler { get; }
+
+  /// <summary>The background as a light (null when there is none to sample).</summary>
+  public EnvironmentLight? Environment { get; }
+
+  SceneLights() => Sampler = new LightSampler(Array.Empty<ILight>());
+
+  SceneLights(IRayScene scene, IIntersectable? root, int bands)
+  {
+    var all = new List<ILight>();
+    if (scene.Sources is IEnumerable<ILightSource> sources)
+      foreach (ILightSource source in sources)
+      {
+        if (source == null || source.GetType() == typeof(AmbientLightSource))
+          continue;
+        all.Add((ILight?)GrCisLight.For(source) ?? new CustomLight(source));
+      }
+    foreach (var (solid, light) in EmitterSet.Of(root).Lights)
+    {
+      surfaces[solid] = light;
+      all.Add(light);
+    }
+    var environment = new EnvironmentLight(scene, bands);
+    if (environment.Power > 0.0)
+    {
+      Environment = environment;
+      all.Add(environment);
+    }
+    Sampler = new LightSampler(all);
+  }
+
+  /// <summary>The lights of <paramref name="scene"/> whose solids lie under <paramref name="root"/>, in their current placement.</summary>
+  public static SceneLights Of(IRayScene scene, IIntersectable? root, int bands) => new(scene, root, bands);
+
+  /// <summary>
+  /// The density per solid angle with which light sampling from <paramref name="from"/> (choice included) gives the
+  /// ray of unit <paramref name="direction"/> that hit <paramref name="solid"/> at <paramref name="point"/>; 0 when
+  /// that solid is not a sampled light.
+  /// </summary>
+  public double SurfacePdf(ISolid? solid, in LightContext from, in Vector3d direction, in Vector3d point, in Vector3d normal) =>
+    solid != null && surfaces.TryGetValue(solid, out ILight? light)
+      ? Sampler.Probability(light) * light.PdfLi(from, direction, point, normal)
+      : 0.0;
+
+  /// <summary>The same for a ray that left the scene (the background).</summary>
+  public double EnvironmentPdf(in LightContext from, in Vector3d direction) =>
+    Environment == null ? 0.0 : Sampler.Probability(Environment) * Environment.PdfLi(from, direction, default, default);
+}
