@@ -146,7 +146,8 @@ public class PathTracing : RayTracing
       if (bounce >= MaxLevel)
         break;
 
-      PathBsdf bsdf = PathBsdf.For(i.Material, i.SurfaceColor, normal, direction, MirrorExponent);
+      // A material may supply its own scattering (IScatteringMaterial); else its Phong parameters decide.
+      PathBsdf bsdf = PathBsdf.For(i.Material, i, i.Material is IScatteringMaterial ? scratch.Buffer(depth + 2, color.Length) : null, i.SurfaceColor, normal, direction, MirrorExponent);
       if (!bsdf.Scatters)
         break;
       if (NextEventEstimation && bsdf.HasSmooth)

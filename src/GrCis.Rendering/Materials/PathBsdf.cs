@@ -20,24 +20,42 @@ internal struct PathBsdf
   double exponent;
   bool glossyIsMirror, entering;
   double pD, pS, pT;  // lobe selection probabilities (sum 1)
+  IScatteringMaterial? own;   // a material's own scattering, when it supplies one
+  Intersection? hit;
+  double[]? buffer;
 
   /// <summary>False when the surface scatters nothing (black): the path ends.</summary>
   public bool Scatters { get; private set; }
 
   /// <summary>True when some lobe is not a delta (so light sampling can reach it).</summary>
-  public readonly bool HasSmooth => pD > 0.0 || (pS > 0.0 && !glossyIsMirror);
+  public readonly bool HasSmooth => own != null || pD > 0.0 || (pS > 0.0 && !glossyIsMirror);
 
   /// <summary>The facing normal (on the side of the outgoing direction).</summary>
   public readonly Vector3d FacingNormal => nf;
 
   /// <summary>Scattering at a point of outward normal <paramref name="normal"/> hit by a ray of unit direction <paramref name="direction"/>.</summary>
-  public static PathBsdf For(IMaterial? material, ReadOnlySpan<double> surface, Vector3d normal, Vector3d direction, int mirrorExponent)
+  public static PathBsdf For(IMaterial? material, ReadOnlySpan<double> surface, Vector3d normal, Vector3d direction, int mirrorExponent) =>
+    For(material, null, null, surface, normal, direction, mirrorExponent);
+
+  /// <summary>
+  /// Scattering at <paramref name="hit"/>: the material's own (<see cref="IScatteringMaterial"/>, given <paramref name="hit"/>
+  /// and a per-worker <paramref name="buffer"/> of the bands) when it supplies one, else read from its Phong parameters.
+  /// </summary>
+  public static PathBsdf For(IMaterial? material, Intersection? hit, double[]? buffer, ReadOnlySpan<double> surface, Vector3d normal, Vector3d direction, int mirrorExponent)
   {
     var s = new PathBsdf { wo = -direction };
     double cosO = Vector3d.Dot(normal, s.wo);
     s.entering = cosO > 0.0;
     s.nf = s.entering ? normal : -normal;
     s.mirror = 2.0 * Math.Abs(cosO) * s.nf - s.wo;
+    if (material is IScatteringMaterial own && hit != null && buffer != null)
+    {
+      s.own = own;
+      s.hit = hit;
+      s.buffer = buffer;
+      s.Scatters = true;
+      return s;
+    }
 
     Rgb colour = Rgb.From(surface);
     double kd, ks, kt;
@@ -90,6 +108,11 @@ internal struct PathBsdf
   /// <summary>The smooth (non-delta) part of the BSDF for light arriving from <paramref name="wi"/>, without the cosine.</summary>
   public readonly Rgb Eval(Vector3d wi)
   {
+    if (own != null)
+    {
+      own.Eval(hit!, wo, wi, buffer!);
+      return Rgb.From(buffer);
+    }
     if (Vector3d.Dot(wi, nf) <= 0.0)
       return Rgb.Zero;
     Rgb f = diffuse * (1.0 / Math.PI);
@@ -105,6 +128,8 @@ internal struct PathBsdf
   /// <summary>Density (per steradian) with which <see cref="Sample"/> picks <paramref name="wi"/> through a smooth lobe.</summary>
   public readonly double Pdf(Vector3d wi)
   {
+    if (own != null)
+      return own.Pdf(hit!, wo, wi);
     double cos = Vector3d.Dot(wi, nf);
     if (cos <= 0.0)
       return 0.0;
@@ -125,6 +150,13 @@ internal struct PathBsdf
     pdf = 0.0;
     delta = false;
     wi = mirror;
+    if (own != null)
+    {
+      if (!own.Sample(hit!, wo, choice, u, v, out wi, buffer!, out pdf, out delta))
+        return false;
+      weight = Rgb.From(buffer);
+      return true;
+    }
     if (choice < pD || (choice < pD + pS && !glossyIsMirror))
     {
       wi = choice < pD ? SampleWarp.CosineHemisphere(u, v, nf) : SampleWarp.PowerCosine(u, v, mirror, exponent);

@@ -112,6 +112,100 @@ public class PathTracingTests
     Assert.True(Mean(whitted) > 0.05);
   }
 
+  /// <summary>A student's own light (GrCis's interface, none of its classes): a point light lighting only points below a height.</summary>
+  sealed class StudentLight : ILightSource
+  {
+    public double[]? GetIntensity(Intersection intersection, out Vector3d dir)
+    {
+      dir = new Vector3d(-1, 3, 1) - intersection.CoordWorld;
+      if (Vector3d.Dot(dir, intersection.Normal) <= 0.0 || intersection.CoordWorld.X > 0.5)
+        return null;
+      return new[] { 0.7, 1.1, 0.4 };
+    }
+  }
+
+  [Fact]
+  public void A_students_own_light_source_lights_a_path_traced_scene_as_it_lights_Whitted()
+  {
+    IRayScene Scene()
+    {
+      var root = new CSGInnerNode(SetOperation.Union);
+      root.SetAttribute(PropertyName.REFLECTANCE_MODEL, new PhongModel());
+      root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { 0.9, 0.5, 0.2 }, 0.0, 0.8, 0.0, 1, 0.0));
+      root.InsertChild(new Plane(), Matrix4d.RotateX(-MathHelper.PiOver2));
+      return new DefaultRayScene
+      {
+        Intersectable = root,
+        BackgroundColor = new[] { 0.0, 0.0, 0.0 },
+        Camera = new StaticCamera(new Vector3d(0, 2, -3), new Vector3d(0, -0.6, 1), 60.0),
+        Sources = new LinkedList<ILightSource>(new ILightSource[] { new StudentLight() }),
+      };
+    }
+    FloatImage whitted = Render(Scene(), new RayTracing(), 16, 1);
+    FloatImage path = Render(Scene(), new PathTracing(), 16, 1);
+    for (int i = 0; i < whitted.Data.Length; i++)
+      Assert.Equal(whitted.Data[i], path.Data[i], 5);
+    Assert.True(Mean(whitted) > 0.02);
+    Assert.Contains(whitted.Data, v => v == 0.0f);   // the part the light leaves dark
+  }
+
+  /// <summary>A material with its own scattering: Lambertian of albedo <see cref="Albedo"/> in band 1 only, cosine-sampled.</summary>
+  sealed class GreenLambert : IMaterial, IScatteringMaterial
+  {
+    public double Albedo;
+    public double[] Color { get; set; } = { 1.0, 1.0, 1.0 };
+    public double Kt { get; set; }
+    public double n { get; set; } = 1.0;
+    public object Clone() => MemberwiseClone();
+
+    public void Eval(Intersection hit, Vector3d wo, Vector3d wi, double[] f)
+    {
+      Array.Clear(f);
+      if (Vector3d.Dot(wi, hit.Normal) * Vector3d.Dot(wo, hit.Normal) > 0.0)
+        f[1] = Albedo / Math.PI;
+    }
+
+    public double Pdf(Intersection hit, Vector3d wo, Vector3d wi)
+    {
+      Vector3d nf = Vector3d.Dot(wo, hit.Normal) > 0.0 ? hit.Normal : -hit.Normal;
+      return Math.Max(0.0, Vector3d.Dot(wi, nf)) / Math.PI;
+    }
+
+    public bool Sample(Intersection hit, Vector3d wo, double choice, double u, double v, out Vector3d wi, double[] weight, out double pdf, out bool delta)
+    {
+      Vector3d nf = Vector3d.Dot(wo, hit.Normal) > 0.0 ? hit.Normal : -hit.Normal;
+      wi = SampleWarp.CosineHemisphere(u, v, nf);
+      pdf = Pdf(hit, wo, wi);
+      delta = false;
+      Array.Clear(weight);
+      weight[1] = Albedo;
+      return pdf > 0.0;
+    }
+  }
+
+  [Fact]
+  public void A_material_with_its_own_scattering_is_used_instead_of_its_Phong_parameters()
+  {
+    const double a = 0.3, env = 2.0;
+    var material = new GreenLambert { Albedo = a };
+    var root = new CSGInnerNode(SetOperation.Union);
+    root.SetAttribute(PropertyName.MATERIAL, material);
+    root.InsertChild(new Sphere(), Matrix4d.Identity);
+    var sc = new DefaultRayScene
+    {
+      Intersectable = root,
+      BackgroundColor = new[] { env, env, env },
+      Camera = new StaticCamera(new Vector3d(0, 0, -4), Vector3d.UnitZ, 40.0),
+      Sources = new LinkedList<ILightSource>(),
+    };
+    FloatImage image = Render(sc, new PathTracing(), 16, 4, threads: 1);
+    // A convex sphere sees only the environment: a·env in the band it reflects, nothing in the others (Phong's default would give (1 − Kt)·env in all).
+    int centre = (8 * 16 + 8) * 3;
+    Assert.Equal(a * env, image.Data[centre + 1], 5);
+    Assert.Equal(0.0, image.Data[centre], 12);
+    Assert.Equal(0.0, image.Data[centre + 2], 12);
+  }
+
   [Fact]
   public void Noise_falls_as_one_over_the_square_root_of_the_samples()
   {
