@@ -32,6 +32,12 @@ public class PathTracing : RayTracing
   /// <summary>Weigh light samples and scattered rays that reach an emitter by the power heuristic (else light samples alone count).</summary>
   public bool MultipleImportanceSampling = true;
 
+  /// <summary>
+  /// Sample the background as a light too (cosine-weighted, MIS against the scattered rays). Off by default: on the
+  /// built-in scenes it measured 1–5 % more error per sample than finding the background by scattered rays alone.
+  /// </summary>
+  public bool EnvironmentSampling = false;
+
   /// <summary>Bounces before Russian roulette may end a path (Cycles: the first bounce is never ended).</summary>
   public int RussianRouletteStart = 1;
 
@@ -49,6 +55,7 @@ public class PathTracing : RayTracing
     NextEventEstimation = p.NextEventEstimation;
     MultipleImportanceSampling = p.MultipleImportanceSampling;
     RussianRouletteStart = p.RussianRouletteStart;
+    EnvironmentSampling = p.EnvironmentSampling;
     MirrorExponent = p.MirrorExponent;
   }
 
@@ -59,10 +66,10 @@ public class PathTracing : RayTracing
     PreparedScene? snapshot = PreparedFor(context.Scratch);
     int frame = context.Sampler.Frame;
     object? sources = sc.Sources;
-    if (context.Lights is not SceneLights lights || !ReferenceEquals(context.LightsScene, sc) || !ReferenceEquals(context.LightsSources, sources) ||
+    if (context.Lights is not SceneLights lights || lights.SamplesEnvironment != EnvironmentSampling || !ReferenceEquals(context.LightsScene, sc) || !ReferenceEquals(context.LightsSources, sources) ||
         !ReferenceEquals(context.LightsRoot, root) || !ReferenceEquals(context.LightsSnapshot, snapshot) || context.LightsFrame != frame)
     {
-      context.Lights = lights = SceneLights.Of(sc, root, bands);
+      context.Lights = lights = SceneLights.Of(sc, root, bands, EnvironmentSampling);
       context.LightsScene = sc;
       context.LightsSources = sources;
       context.LightsRoot = root;
@@ -192,29 +199,42 @@ public class PathTracing : RayTracing
   }
 
   /// <summary>
-  /// Direct light at hit <paramref name="i"/> (next-event estimation): one light chosen by power, one sample of it,
-  /// weighed by MIS against the scattered ray when that ray could reach the light too. <paramref name="slot"/> is the
-  /// pooled hit a ray towards the background may fill.
+  /// Direct light at hit <paramref name="i"/> (next-event estimation): every delta light once (GrCis's light sources,
+  /// which no ray can hit), then one of the lights a ray may also hit (emissive surfaces, the background), chosen by
+  /// power and weighed by MIS against the scattered ray. <paramref name="slot"/> is the pooled hit a ray towards the
+  /// background may fill.
   /// </summary>
   Rgb SampleLight(ShadingScratch scratch, Sampler sampler, SceneLights lights, Intersection i, in PathBsdf bsdf, int bounce, int slot)
   {
+    Rgb sum = Rgb.Zero;
+    var ctx = new LightContext(i.CoordWorld, bsdf.FacingNormal, i);
+    ILight[] deltas = lights.DeltaLights;
+    for (int k = 0; k < deltas.Length; k++)
+    {
+      sampler.Get2D(SampleDimension.PathDeltaLight, bounce * deltas.Length + k, out double du, out double dv);
+      sum += Direct(scratch, deltas[k], ctx, bsdf, du, dv, 1.0, slot);
+    }
     ILight? light = lights.Sampler.Sample(sampler.Get1D(SampleDimension.PathLightPick, bounce), out double pick);
     if (light == null)
-      return Rgb.Zero;
+      return sum;
     sampler.Get2D(SampleDimension.PathLightPoint, bounce, out double u, out double v);
-    Vector3d x = i.CoordWorld;
-    Vector3d nf = bsdf.FacingNormal;
-    if (!light.SampleLi(new LightContext(x, nf, i), u, v, out LightSample s) || s.L.IsBlack)
+    return sum + Direct(scratch, light, ctx, bsdf, u, v, pick, slot);
+  }
+
+  /// <summary>One sample (u, v) of <paramref name="light"/>, chosen with probability <paramref name="pick"/>, seen from <paramref name="ctx"/>.</summary>
+  Rgb Direct(ShadingScratch scratch, ILight light, in LightContext ctx, in PathBsdf bsdf, double u, double v, double pick, int slot)
+  {
+    if (!light.SampleLi(ctx, u, v, out LightSample s) || s.L.IsBlack)
       return Rgb.Zero;
-    double cos = Vector3d.Dot(s.Wi, nf);
+    double cos = Vector3d.Dot(s.Wi, ctx.N);
     if (cos <= 0.0)
       return Rgb.Zero;
     Rgb f = bsdf.Eval(s.Wi);
     if (f.IsBlack)
       return Rgb.Zero;
     if (light.Kind == LightKind.DeltaPosition)
-      return Visible(scratch, x, s.ToLight, s.Distance) ? f * s.L * (cos / pick) : Rgb.Zero;
-    bool visible = light.Kind == LightKind.Infinite ? Escapes(scratch, slot, x, s.Wi) : Visible(scratch, x, s.ToLight, s.Distance);
+      return Visible(scratch, ctx.P, s.ToLight, s.Distance) ? f * s.L * (cos / pick) : Rgb.Zero;
+    bool visible = light.Kind == LightKind.Infinite ? Escapes(scratch, slot, ctx.P, s.Wi) : Visible(scratch, ctx.P, s.ToLight, s.Distance);
     if (!visible)
       return Rgb.Zero;
     double lightPdf = pick * s.Pdf;

@@ -40,4 +40,7 @@ public enum SampleDimension
 
   /// <summary>Which emitter a path vertex samples (instance: the bounce).</summary>
   PathLightPick = 10,
+
+  /// <summary>The point on one of GrCis's area lights sampled at a path vertex (instance: the bounce and the light's place among the delta lights).</summary>
+  PathDeltaLight = 11,
 }

@@ -5,7 +5,9 @@ using OpenTK.Mathematics;
 namespace Rendering;
 
 /// <summary>
-/// Every light of a scene in the one light model, with the <see cref="LightSampler"/> that chooses among them by power:
+/// Every light of a scene in the one light model: the delta lights, which a vertex samples all (as Whitted ray tracing
+/// does; no ray can hit them, so they need no MIS), and the lights a ray may also hit, among which the
+/// <see cref="LightSampler"/> chooses one by power. The lights are
 /// GrCis's light sources (<see cref="GrCisLight"/> for its own types, <see cref="CustomLight"/> for any other;
 /// <see cref="AmbientLightSource"/> is left out, as the indirect light it stood for is computed), the emissive
 /// rectangles and spheres (<see cref="EmitterSet"/>) and the background (<see cref="EnvironmentLight"/>).
@@ -17,23 +19,34 @@ internal sealed class SceneLights
 
   public static readonly SceneLights Empty = new();
 
-  /// <summary>Chooses the light a vertex samples.</summary>
+  /// <summary>True when the background is among the lights sampled.</summary>
+  public bool SamplesEnvironment { get; }
+
+  /// <summary>The delta lights, each sampled at every vertex.</summary>
+  public ILight[] DeltaLights { get; }
+
+  /// <summary>Chooses the one area or infinite light a vertex samples.</summary>
   public LightSampler Sampler { get; }
 
   /// <summary>The background as a light (null when there is none to sample).</summary>
   public EnvironmentLight? Environment { get; }
 
-  SceneLights() => Sampler = new LightSampler(Array.Empty<ILight>());
+  SceneLights()
+  {
+    DeltaLights = Array.Empty<ILight>();
+    Sampler = new LightSampler(Array.Empty<ILight>());
+  }
 
-  SceneLights(IRayScene scene, IIntersectable? root, int bands)
+  SceneLights(IRayScene scene, IIntersectable? root, int bands, bool sampleEnvironment)
   {
     var all = new List<ILight>();
+    var deltas = new List<ILight>();
     if (scene.Sources is IEnumerable<ILightSource> sources)
       foreach (ILightSource source in sources)
       {
         if (source == null || source.GetType() == typeof(AmbientLightSource))
           continue;
-        all.Add((ILight?)GrCisLight.For(source) ?? new CustomLight(source));
+        deltas.Add((ILight?)GrCisLight.For(source) ?? new CustomLight(source));
       }
     foreach (var (solid, light) in EmitterSet.Of(root).Lights)
     {
@@ -41,16 +54,19 @@ internal sealed class SceneLights
       all.Add(light);
     }
     var environment = new EnvironmentLight(scene, bands);
-    if (environment.Power > 0.0)
+    if (sampleEnvironment && environment.Power > 0.0)
     {
       Environment = environment;
       all.Add(environment);
     }
+    SamplesEnvironment = sampleEnvironment;
+    DeltaLights = deltas.ToArray();
     Sampler = new LightSampler(all);
   }
 
   /// <summary>The lights of <paramref name="scene"/> whose solids lie under <paramref name="root"/>, in their current placement.</summary>
-  public static SceneLights Of(IRayScene scene, IIntersectable? root, int bands) => new(scene, root, bands);
+  /// <remarks>The background is a light to sample only when <paramref name="sampleEnvironment"/>; else rays that leave the scene alone find it.</remarks>
+  public static SceneLights Of(IRayScene scene, IIntersectable? root, int bands, bool sampleEnvironment) => new(scene, root, bands, sampleEnvironment);
 
   /// <summary>
   /// The density per solid angle with which light sampling from <paramref name="from"/> (choice included) gives the
