@@ -81,10 +81,14 @@ public class PathTracingTests
       Camera = new StaticCamera(new Vector3d(0, 0, -4), Vector3d.UnitZ, 40.0),
       Sources = new LinkedList<ILightSource>(),
     };
-    FloatImage image = Render(sc, new PathTracing(), 16, 4);
-    // A convex surface sees only the environment: each sample is exactly a·env; the corners see env itself.
-    Assert.Equal(a * env, image.Data[(8 * 16 + 8) * 3 + 1], 5);
-    Assert.Equal(env, image.Data[1], 12);
+    foreach (bool sampled in new[] { false, true })
+    {
+      FloatImage image = Render(sc, new PathTracing { EnvironmentSampling = sampled }, 16, 4);
+      // A convex surface sees only the environment: each sample is exactly a·env (with the background sampled too,
+      // its cosine-weighted sample and the scattered ray share it by MIS); the corners see env itself.
+      Assert.Equal(a * env, image.Data[(8 * 16 + 8) * 3 + 1], 5);
+      Assert.Equal(env, image.Data[1], 12);
+    }
   }
 
   [Fact]
