@@ -97,8 +97,9 @@ public static class Precedence
   /// </summary>
   static void AddIgnoredSwitches(List<string> notes, RenderSettings s, GivenSettings given, IImageFunction? function, Func<Setting, string> name)
   {
-    bool pathTraced = function != null ? function is PathTracing : s.Algorithm == RenderAlgorithm.Path;
-    if (!pathTraced)
+    // The image function says whether it follows the switches (MonteCarloRayTracing); path tracing does not.
+    bool followsSwitches = function != null ? function is not MonteCarloRayTracing { FollowsRayTypeSwitches: false } : s.Algorithm != RenderAlgorithm.Path;
+    if (followsSwitches)
       return;
     var ignored = new List<string>();
     if (given.HasFlag(GivenSettings.Reflections) && !s.Reflections)

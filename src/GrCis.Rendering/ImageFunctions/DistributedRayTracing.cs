@@ -20,7 +20,7 @@ namespace Rendering.Distributed;
 /// lobe that falls below the surface (no ray is traced there).
 /// </remarks>
 [Serializable]
-public class DistributedRayTracing : RayTracing
+public class DistributedRayTracing : MonteCarloRayTracing
 {
   /// <summary>Sample reflected rays from the Phong lobe (false: ideal mirror, as Whitted).</summary>
   public bool GlossyReflections = true;
@@ -58,7 +58,7 @@ public class DistributedRayTracing : RayTracing
     direction = ideal;
     if (!glossy || i.Material is not PhongMaterial m || m.H >= IdealExponent)
       return true;
-    Rendering.Execution.WorkerContext.Current.Sampler.Get2D(dimension, depth, out double u, out double v);
+    VertexSampler.Get2D(dimension, depth, out double u, out double v);
     direction = SampleWarp.PowerCosine(u, v, ideal.Normalized(), Math.Max(m.H, 0));
     // A direction that leaves on the other side of the surface than the ideal one carries no light here.
     return Vector3d.Dot(direction, i.Normal) * Vector3d.Dot(ideal, i.Normal) > 0.0;

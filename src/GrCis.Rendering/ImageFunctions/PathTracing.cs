@@ -24,7 +24,7 @@ namespace Rendering;
 /// per unit of cos θ. Ambient lights are ignored: the indirect light they stood for is computed.
 /// </remarks>
 [Serializable]
-public class PathTracing : RayTracing
+public class PathTracing : MonteCarloRayTracing
 {
   /// <summary>Sample light sources and emissive rectangles and spheres at every diffuse or glossy vertex.</summary>
   public bool NextEventEstimation = true;
@@ -45,6 +45,9 @@ public class PathTracing : RayTracing
   public int MirrorExponent = 100000;
 
   public PathTracing(IRayScene? sc = null) : base(sc) => MaxLevel = 64;
+
+  /// <summary>False: a path scatters by the materials at every bounce, whatever --no-reflections and --no-refractions say.</summary>
+  public override bool FollowsRayTypeSwitches => false;
 
   /// <inheritdoc/>
   public override void CopySettingsFrom(RayCasting source)
@@ -167,13 +170,8 @@ public class PathTracing : RayTracing
       throughput *= weight;
       if (throughput.IsBlack)
         break;
-      if (bounce >= RussianRouletteStart)
-      {
-        double survive = Math.Min(1.0, Math.Sqrt(throughput.Max));
-        if (sampler.Get1D(SampleDimension.PathRoulette, bounce) >= survive)
-          break;
-        throughput *= 1.0 / survive;
-      }
+      if (bounce >= RussianRouletteStart && !Roulette(sampler, bounce, ref throughput))
+        break;
       origin = x;
       direction = wi;
       afterDelta = delta;
