@@ -12,8 +12,9 @@ namespace Rendering;
 /// Monte Carlo path tracing on GrCis's scene graph: global illumination with the scattering of
 /// <see cref="PathBsdf"/> (Lambertian, normalised Phong, ideal mirror, smooth dielectric, read from the
 /// Phong parameters), emissive surfaces (<see cref="PhongMaterial.Emission"/>), GrCis's light sources and the
-/// background as an environment light. Every diffuse or glossy vertex samples the lights (next-event
-/// estimation) and combines that with the scattered ray by multiple importance sampling (power heuristic);
+/// background as an environment light, all through one light model (<see cref="ILight"/>, <see cref="SceneLights"/>).
+/// Every diffuse or glossy vertex samples each delta light and one light a ray can also hit, chosen by power (next-event
+/// estimation), and combines the latter with the scattered ray by multiple importance sampling (power heuristic);
 /// paths end by Russian roulette from the second bounce on. Every random decision of a vertex (lobe, direction,
 /// roulette, emitter, point on it) comes from the worker's <see cref="Sampler"/>, each in a <see cref="SampleDimension"/>
 /// of its own. Output is linear radiance: render to PFM for comparisons, use n×n supersampling for the noise to fall.
