@@ -53,8 +53,7 @@ internal sealed class SceneLights
       surfaces[solid] = light;
       all.Add(light);
     }
-    var environment = new EnvironmentLight(scene, bands);
-    if (sampleEnvironment && environment.Power > 0.0)
+    if (sampleEnvironment && new EnvironmentLight(scene, bands) is { Power: > 0.0 } environment)
     {
       Environment = environment;
       all.Add(environment);
