@@ -19,24 +19,36 @@ namespace GrCis.Studio.Tests;
 /// and look at its noise. Screenshots of
 /// each step are written beside the test assembly (<c>screenshots/</c>).
 /// </summary>
+[Collection(BrowserCollection.Name)]
 public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFixture>
 {
   static readonly string Shots = Path.Combine(AppContext.BaseDirectory, "screenshots");
 
-  static ChromeDriver Browser()
+  /// <summary>Headless chromium whose page (the viewport, what a screenshot shows) is <paramref name="width"/> by
+  /// <paramref name="height"/> CSS pixels; the default is a laptop's 1280x720.</summary>
+  internal static ChromeDriver Browser(int width = 1280, int height = 720)
   {
     string chromium = RequiredTool.Find("chromium", "chromium");
     string driver = RequiredTool.Find("chromedriver", "chromium-driver");
     var options = new ChromeOptions { BinaryLocation = chromium };
-    options.AddArguments("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1500,820",
-                         "--force-color-profile=srgb");
+    options.AddArguments("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", $"--window-size={width},{height}",
+                         "--force-color-profile=srgb", "--force-device-scale-factor=1", "--hide-scrollbars");
     ChromeDriverService service = ChromeDriverService.CreateDefaultService(Path.GetDirectoryName(driver)!, Path.GetFileName(driver));
     service.SuppressInitialDiagnosticInformation = true;
     service.HideCommandPromptWindow = true;
-    return new ChromeDriver(service, options, TimeSpan.FromSeconds(60));
+    var browser = new ChromeDriver(service, options, TimeSpan.FromSeconds(60));
+    // The window's size includes what the browser itself draws around the page: the page is made the size asked for.
+    var inner = (IReadOnlyCollection<object>)Js(browser, "return [window.innerWidth, window.innerHeight];")!;
+    long[] page = inner.Select(Convert.ToInt64).ToArray();
+    if (page[0] != width || page[1] != height)
+    {
+      System.Drawing.Size outer = browser.Manage().Window.Size;
+      browser.Manage().Window.Size = new System.Drawing.Size(outer.Width + width - (int)page[0], outer.Height + height - (int)page[1]);
+    }
+    return browser;
   }
 
-  static void Until(IWebDriver browser, Func<bool> condition, string what)
+  internal static void Until(IWebDriver browser, Func<bool> condition, string what)
   {
     var deadline = DateTime.UtcNow + TimeSpan.FromSeconds(60);
     while (!condition())
@@ -47,13 +59,38 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     }
   }
 
-  static void Shot(ChromeDriver browser, string name)
+  /// <summary>A screenshot beside the test assembly (<c>screenshots/</c>); one the docs show is also written to
+  /// <c>docs/images/</c> when <c>GRCIS_WRITE_SCREENSHOTS=1</c>, so the docs show the page as it ships.</summary>
+  internal static void Shot(ChromeDriver browser, string name, bool docs = false)
   {
     Directory.CreateDirectory(Shots);
-    browser.GetScreenshot().SaveAsFile(Path.Combine(Shots, name));
+    Screenshot shot = browser.GetScreenshot();
+    shot.SaveAsFile(Path.Combine(Shots, name));
+    if (docs && Environment.GetEnvironmentVariable("GRCIS_WRITE_SCREENSHOTS") == "1")
+      shot.SaveAsFile(Path.Combine(DocsImages(), name));
   }
 
-  static object? Js(IWebDriver browser, string script, params object[] args) => ((IJavaScriptExecutor)browser).ExecuteScript(script, args);
+  /// <summary>The repository's <c>docs/images</c>, found above the test assembly.</summary>
+  static string DocsImages()
+  {
+    for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir != null; dir = dir.Parent)
+      if (File.Exists(Path.Combine(dir.FullName, "GrCis.sln")))
+        return Path.Combine(dir.FullName, "docs", "images");
+    throw new InvalidOperationException("GRCIS_WRITE_SCREENSHOTS=1, but no GrCis.sln above " + AppContext.BaseDirectory);
+  }
+
+  /// <summary>Clicks the image's pixel (<paramref name="x"/>, <paramref name="y"/>) where it is on screen, at whatever zoom.</summary>
+  internal static void ClickPixel(ChromeDriver browser, int x, int y)
+  {
+    IWebElement canvas = browser.FindElement(By.Id("canvas"));
+    double[] box = ((IReadOnlyCollection<object>)Js(browser,
+      "const c = document.getElementById('canvas'), r = c.getBoundingClientRect(); return [r.width, r.height, r.width / c.width];")!)
+      .Select(Convert.ToDouble).ToArray();
+    new Actions(browser).MoveToElement(canvas, (int)Math.Floor((x + 0.5) * box[2] - box[0] / 2), (int)Math.Floor((y + 0.5) * box[2] - box[1] / 2))
+      .Click().Perform();
+  }
+
+  internal static object? Js(IWebDriver browser, string script, params object[] args) => ((IJavaScriptExecutor)browser).ExecuteScript(script, args);
 
   /// <summary>Opens the studio's page and adds the script file <paramref name="path"/> to its scene list through the file picker.</summary>
   void OpenAndAdd(ChromeDriver browser, string path)
@@ -66,7 +103,7 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     browser.FindElement(By.Id("add")).Click();
   }
 
-  static void RenderIn(ChromeDriver browser, string scene, int width, int height)
+  internal static void RenderIn(ChromeDriver browser, string scene, int width, int height)
   {
     Js(browser, "const s = document.getElementById('scene'); s.value = arguments[0]; s.dispatchEvent(new Event('change'));", scene);
     Js(browser, "document.getElementById('width').value = arguments[0]; document.getElementById('height').value = arguments[1];", width, height);
@@ -105,8 +142,7 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     Shot(browser, "studio-render.png");
 
     // 2. Click a pixel on a ball: its ray tree, then the 3D view.
-    IWebElement canvas = browser.FindElement(By.Id("canvas"));
-    new Actions(browser).MoveToElement(canvas, 80 - canvas.Size.Width / 2, 60 - canvas.Size.Height / 2).Click().Perform();
+    ClickPixel(browser, 80, 60);
     Until(browser, () => browser.FindElement(By.Id("rays")).Text.Contains("Primary", StringComparison.Ordinal), "the ray tree");
     Assert.StartsWith("pixel [80, 60]", browser.FindElement(By.Id("rays")).Text);
     browser.FindElement(By.Id("show3d")).Click();
@@ -196,7 +232,7 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     Until(browser, () => !Script("width"), "Five balls's fields");
     Js(browser, "const s = document.getElementById('scene'); s.value = 'OwnValues'; s.dispatchEvent(new Event('change'));");
     ScriptValuesShown();
-    Shot(browser, "studio-script-values.png");
+    Shot(browser, "studio-script-values.png", docs: true);
   }
 
   [SkippableFact]
@@ -323,8 +359,8 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
                 $"image [{string.Join(", ", image)}] outside the view [{string.Join(", ", view)}]");
     Assert.InRange(image[0] - view[0] - (view[2] - image[2]), -2.0, 2.0);
     Assert.InRange(image[1] - view[1] - (view[3] - image[3]), -2.0, 2.0);
-    // As large as fits: it touches the view's sides or its top and bottom.
-    Assert.True(Math.Min(image[0] - view[0], image[1] - view[1]) <= 1.0, $"image [{string.Join(", ", image)}] smaller than fits [{string.Join(", ", view)}]");
+    // As large as fits: 8 px of margin (view.js) from the view's sides or from its top and bottom.
+    Assert.True(Math.Min(image[0] - view[0], image[1] - view[1]) <= 9.0, $"image [{string.Join(", ", image)}] smaller than fits [{string.Join(", ", view)}]");
   }
 
   [SkippableFact]
@@ -360,6 +396,7 @@ public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFix
     browser.Navigate().GoToUrl(studio.Server.Url);
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
     Js(browser, "const s = document.getElementById('scene'); s.value = 'Balls'; s.dispatchEvent(new Event('change'));");
+    browser.FindElement(By.CssSelector("#animationPanel summary")).Click();   // the panel opens as a user opens it
     Js(browser, """
       const set = (id, v) => { const f = document.getElementById(id); f.value = v; f.dispatchEvent(new Event('change')); };
       set('width', 32); set('height', 24); set('animStart', 0); set('animEnd', 0.5); set('animFps', 10); set('animFolder', '');
