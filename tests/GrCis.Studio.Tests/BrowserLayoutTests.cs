@@ -185,7 +185,8 @@ public sealed class BrowserLayoutTests(StudioFixture studio) : IClassFixture<Stu
       new Actions(browser).SendKeys(Keys.Tab).Perform();
       reached.Add((string)Js(browser, "const e = document.activeElement; return e.id || e.textContent.trim();")!);
     }
-    Assert.Empty(controls.Where(c => !reached.Contains(c)));
+    string[] missed = controls.Where(c => !reached.Contains(c)).ToArray();
+    Assert.True(missed.Length == 0, "not reached with Tab: " + string.Join(", ", missed));
     AssertAccessible(browser, "the page as loaded");
   }
 }

@@ -14,6 +14,7 @@ export function showStatus() {
   $("stats").textContent = s.statistics || (s.samples != null
     ? `${s.samples} spp so far` + (s.noise != null ? `, noise ${s.noise.toPrecision(3)} RMSE` : "")
     : "");
+  $("stats").title = $("stats").textContent;   // in full, where the status bar cuts it
   // The first compile of a script takes seconds: say so, not a still page.
   $("phase").textContent = phaseText[s.phase] ?? s.phase;
   $("phase").dataset.phase = s.phase;
