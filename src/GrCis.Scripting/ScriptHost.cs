@@ -15,7 +15,8 @@ namespace GrCis.Scripting;
 /// <summary>
 /// Compiles and runs GrCis scene scripts. A script is compiled once per (path, content, modules) and
 /// cached (least recently used entries are evicted and their code unloaded); every further run, on any
-/// thread, executes the compiled code. Thread-safe.
+/// thread, executes the compiled code. With a <see cref="ScriptCache"/> the compiled code is also kept on
+/// disk, and a later process loads it instead of compiling. Thread-safe.
 /// </summary>
 public sealed class ScriptHost : IDisposable
 {

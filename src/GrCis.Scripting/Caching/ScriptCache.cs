@@ -128,9 +128,11 @@ public sealed class ScriptCache
 
   internal void Write(string key, ModuleImage image) => Write(key, CacheEntries.Write(key, image));
 
-  /// <summary>An entry was read but its code could not be loaded: it is removed (and counted as rejected).</summary>
+  /// <summary>An entry was read but its code could not be loaded: it is removed, and counted as rejected and missed, not hit.</summary>
   internal void Reject(string key)
   {
+    Interlocked.Decrement(ref hits);
+    Interlocked.Increment(ref misses);
     Interlocked.Increment(ref rejected);
     TryDelete(EntryPath(key));
   }
