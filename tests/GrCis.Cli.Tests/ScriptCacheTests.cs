@@ -147,6 +147,39 @@ public class ScriptCacheTests
   }
 
   [Fact]
+  public void A_cached_run_loads_no_compiler_assembly()
+  {
+    using var dir = new TempDirectory();
+    File.WriteAllText(dir.File("ball.cs"), Script);
+    Directory.CreateDirectory(dir.File("mod"));
+    File.WriteAllText(dir.File("mod/Sizes.cs"), "namespace Mod { public static class Sizes { public static int Width => 24; } }\n");
+    File.AppendAllText(dir.File("ball.cs"), "context[\"w\"] = Mod.Sizes.Width;\n");
+
+    string[] Loaded(params string[] extra)
+    {
+      string list = dir.File("loaded.txt");
+      File.Delete(list);
+      var env = new Dictionary<string, string>
+      {
+        [ScriptCache.DirectoryVariable] = dir.File("cache"),
+        ["DOTNET_STARTUP_HOOKS"] = typeof(StartupHook).Assembly.Location,
+        [StartupHook.FileVariable] = list,
+      };
+      var r = GrcisProcess.Run(dir.Path, env, ["render", "ball.cs", "-m", "mod", "--size", "24x18", "-q", "-o", "out.png", .. extra]);
+      Assert.True(r.Code == 0, r.Error);
+      return File.ReadAllLines(list);
+    }
+
+    string[] first = Loaded();
+    Assert.Contains("Microsoft.CodeAnalysis.CSharp", first);
+    string[] cached = Loaded();
+    Assert.Contains("GrCis.Scripting", cached);
+    Assert.Contains(cached, a => a.StartsWith("GrCisModule_", System.StringComparison.Ordinal));
+    Assert.DoesNotContain(cached, a => a.StartsWith("Microsoft.CodeAnalysis", System.StringComparison.Ordinal));
+    Assert.Contains("Microsoft.CodeAnalysis", Loaded("--no-cache"));
+  }
+
+  [Fact]
   public void The_environment_chooses_the_folder_or_turns_the_cache_off()
   {
     using var dir = new TempDirectory();
