@@ -177,7 +177,7 @@ public sealed class ScriptCache
     string temporary = Path.Combine(Directory, $"{key}.{Environment.ProcessId}.{Guid.NewGuid():N}{TemporaryExtension}");
     try
     {
-      System.IO.Directory.CreateDirectory(Directory);
+      CreateFolder();
       using (var stream = new FileStream(temporary, FileMode.CreateNew, FileAccess.Write, FileShare.None))
         stream.Write(entry);
       // Atomic on one file system: another process reads the old entry, the new one, or none, never a part.
@@ -190,6 +190,15 @@ public sealed class ScriptCache
       // A cache that cannot be written (read-only home, full disk, an entry open elsewhere on Windows) only costs time.
       TryDelete(temporary);
     }
+  }
+
+  /// <summary>The folder, private to the user on Unix: what it holds is code this program runs.</summary>
+  void CreateFolder()
+  {
+    if (OperatingSystem.IsWindows())
+      System.IO.Directory.CreateDirectory(Directory);
+    else
+      System.IO.Directory.CreateDirectory(Directory, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute);
   }
 
   /// <summary>Deletes the least recently used entries beyond the bounds, and temporary files of writers that died.</summary>
