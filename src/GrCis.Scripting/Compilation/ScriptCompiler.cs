@@ -45,8 +45,6 @@ internal static class ScriptCompiler
   public static readonly CSharpParseOptions ModuleParseOptions =
     new CSharpParseOptions(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Regular).WithPreprocessorSymbols("DEBUG", "TRACE");
 
-  static readonly CSharpParseOptions moduleParseOptions = ModuleParseOptions;
-
   // Roslyn keys its metadata cache by reference object: one reference per module, made when a script first needs it.
   static readonly ConditionalWeakTable<ScriptModule, MetadataReference> moduleReferences = new();
 
@@ -154,7 +152,7 @@ internal static class ScriptCompiler
     var instrumented = new Dictionary<SyntaxTree, InstrumentedSource>();
     for (int i = 0; i < files.Count; i++)
     {
-      (SyntaxTree tree, InstrumentedSource source) = Instrument(parsed[i], moduleParseOptions);
+      (SyntaxTree tree, InstrumentedSource source) = Instrument(parsed[i], ModuleParseOptions);
       trees.Add(tree);
       instrumented[tree] = source;
     }
@@ -173,7 +171,7 @@ internal static class ScriptCompiler
     // as scripts import it; a file's own types still win over imported ones.
     // Types an earlier module compiled under a suffixed name (see ShadowedLibraryTypes) keep their plain name here too.
     string imports = ModuleImports + string.Concat(earlier.SelectMany(m => m.Renamed).Select(r => "global " + r.Alias + "\n"));
-    trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(imports, Encoding.UTF8), moduleParseOptions, "GrCisModuleImports.g.cs"));
+    trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(imports, Encoding.UTF8), ModuleParseOptions, "GrCisModuleImports.g.cs"));
 
     string dirName = new string(Path.GetFileName(directory.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar))
       .Select(c => char.IsLetterOrDigit(c) ? c : '_').ToArray());
@@ -181,13 +179,13 @@ internal static class ScriptCompiler
     CSharpCompilation compilation = CSharpCompilation.Create(assemblyName, trees, References(earlier), options);
 
     var removed = new List<MissingNamespaces.Removed>();
-    compilation = DropMissingNamespaces(compilation, instrumented, moduleParseOptions, removed);
+    compilation = DropMissingNamespaces(compilation, instrumented, ModuleParseOptions, removed);
     var overrides = new List<OverrideAccess.Changed>();
-    compilation = OverrideAccess.Normalize(compilation, instrumented, moduleParseOptions, overrides);
-    compilation = DataFileCalls.Rewrite(compilation, instrumented, moduleParseOptions);
+    compilation = OverrideAccess.Normalize(compilation, instrumented, ModuleParseOptions, overrides);
+    compilation = DataFileCalls.Rewrite(compilation, instrumented, ModuleParseOptions);
     var shadowed = new List<ShadowedLibraryTypes.Renamed>();
     var partials = new List<ScriptDiagnostic>();
-    compilation = ShadowedLibraryTypes.Rename(compilation, instrumented, moduleParseOptions, shadowed, partials);
+    compilation = ShadowedLibraryTypes.Rename(compilation, instrumented, ModuleParseOptions, shadowed, partials);
     (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides, partials);
     warnings.AddRange(ShadowedLibraryTypes.Report(shadowed));
     return new ModuleImage(assemblyName, pe.ToArray(), pdb.ToArray(), files, scripts, warnings,
