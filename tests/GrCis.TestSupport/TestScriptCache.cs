@@ -26,7 +26,7 @@ public static class TestScriptCache
     {
       if (folder != null)
         return;
-      folder = Path.Combine(Path.GetTempPath(), $"grcis-test-cache-{Environment.ProcessId}-{Guid.NewGuid():N}"[..48]);
+      folder = Path.Combine(Path.GetTempPath(), $"grcis-test-cache-{Environment.ProcessId}-{Guid.NewGuid().ToString("N")[..12]}");
       Environment.SetEnvironmentVariable(DirectoryVariable, folder);
       string dir = folder;
       AppDomain.CurrentDomain.ProcessExit += (_, _) =>
