@@ -22,7 +22,11 @@ public static class Precedence
     ArgumentNullException.ThrowIfNull(requested);
     name ??= Words;
     if (script == null)
-      return new RenderPlan(requested.Validate(), null, null, Array.Empty<string>());
+    {
+      var plain = new List<string>();
+      AddIgnoredSwitches(plain, requested, given, null, name);
+      return new RenderPlan(requested.Validate(), null, null, plain);
+    }
 
     RenderSettings s = requested;
     var notes = new List<string>();
@@ -83,7 +87,26 @@ public static class Precedence
         function = script.ImageFunction;
     }
 
+    AddIgnoredSwitches(notes, s, given, function, name);
     return new RenderPlan(s.Validate(), function, synthesizer, notes);
+  }
+
+  /// <summary>
+  /// A note for each given switch the image function does not follow, so it is not silently swallowed: path tracing
+  /// follows every bounce whatever --no-reflections and --no-refractions say (shadows it does follow).
+  /// </summary>
+  static void AddIgnoredSwitches(List<string> notes, RenderSettings s, GivenSettings given, IImageFunction? function, Func<Setting, string> name)
+  {
+    bool pathTraced = function != null ? function is PathTracing : s.Algorithm == RenderAlgorithm.Path;
+    if (!pathTraced)
+      return;
+    var ignored = new List<string>();
+    if (given.HasFlag(GivenSettings.Reflections) && !s.Reflections)
+      ignored.Add(name(Setting.Reflections));
+    if (given.HasFlag(GivenSettings.Refractions) && !s.Refractions)
+      ignored.Add(name(Setting.Refractions));
+    if (ignored.Count > 0)
+      notes.Add($"{string.Join("/", ignored)} given: path tracing scatters by the materials at every bounce, so {(ignored.Count == 1 ? "it does" : "they do")} not apply");
   }
 
   static bool TurnsSomethingOff(RenderSettings s, GivenSettings given) =>

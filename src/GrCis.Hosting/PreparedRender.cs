@@ -106,7 +106,7 @@ public sealed class PreparedRender
   {
     ImageSynthesizer renderer = Synthesizer ?? Settings.CreateSynthesizer();
     IImageFunction function = ImageFunction ?? Settings.CreateImageFunction(Scene);
-    var options = new RenderOptions { Threads = Settings.Threads, Seed = Settings.Seed, Tiles = tiles };
+    RenderOptions options = Settings.ToRenderOptions() with { Tiles = tiles };
     return FrameRendering.Render(Scene, function, renderer, options, progress, cancel, context);
   }
 

@@ -47,6 +47,9 @@ public sealed record RenderSettings
   /// <summary>Seed of all sample randomness (same seed ⇒ same image, whatever the threads).</summary>
   public long Seed { get; init; }
 
+  /// <summary>The sample generator of the render's random decisions (lens, area lights, glossy and path vertices).</summary>
+  public SamplerKind Sampler { get; init; } = SamplerKind.CorrelatedMultiJitter;
+
   /// <summary>Tile side in pixels (the image does not depend on it).</summary>
   public int TileSize { get; init; } = 32;
 
@@ -97,6 +100,7 @@ public sealed record RenderSettings
     TileSize = TileSize,
     Seed = Seed,
     Frame = frame,
+    Sampler = Sampler,
   };
 
   /// <summary>The renderer these settings select: one centred sample, or an n×n (jittered) grid.</summary>

@@ -58,7 +58,7 @@ public sealed class StudioServer : IAsyncDisposable
     }
     if (options.NoDefault)
       args.Add("-nodefault");
-    var scripts = new GrCis.Scripting.ScriptHost();
+    var scripts = new GrCis.Scripting.ScriptHost(diskCache: options.ScriptCache);
     var files = new AllowedFiles(options.Paths);
     var controller = DemoController.FromCommandLine(args, scripts, problems, files.Allows);
     var session = new StudioSession(controller) { Scripts = scripts };
@@ -77,6 +77,7 @@ public sealed class StudioServer : IAsyncDisposable
     builder.Services.AddProblemDetails();
     builder.Services.AddSingleton(session);
     builder.Services.AddSingleton(files);
+    builder.Services.AddSingleton<EditorAssistance>();
     WebApplication app = builder.Build();
 
     // A failure inside an endpoint, and an answer with a status and no body (a 404 of an image not rendered yet), are

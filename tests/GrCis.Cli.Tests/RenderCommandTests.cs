@@ -99,6 +99,30 @@ public class RenderCommandTests
     Assert.Equal(File.ReadAllBytes(dir.File("a.png")), File.ReadAllBytes(dir.File("b.png")));
   }
 
+  [Theory]
+  [InlineData("independent")]
+  [InlineData("sobol")]
+  public void Each_sampler_gives_its_own_path_traced_image_the_same_on_1_and_3_threads(string sampler)
+  {
+    using var dir = new TempDirectory();
+    string[] common = { "render", "--algorithm", "path", "--size", "24x16", "--spp", "16", "--seed", "7", "-q" };
+    Assert.Equal(0, CliRun.Of(dir.Path, [.. common, "--sampler", sampler, "-t", "1", "-o", "a.pfm"]).ExitCode);
+    Assert.Equal(0, CliRun.Of(dir.Path, [.. common, "--sampler", sampler, "-t", "3", "-o", "b.pfm"]).ExitCode);
+    Assert.Equal(0, CliRun.Of(dir.Path, [.. common, "-t", "3", "-o", "cmj.pfm"]).ExitCode);
+    Assert.Equal(File.ReadAllBytes(dir.File("a.pfm")), File.ReadAllBytes(dir.File("b.pfm")));
+    Assert.NotEqual(File.ReadAllBytes(dir.File("a.pfm")), File.ReadAllBytes(dir.File("cmj.pfm")));
+  }
+
+  [Fact]
+  public void Unknown_sampler_is_a_usage_error_naming_the_choices()
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "render", "--sampler", "halton", "-o", "a.png");
+    Assert.Equal(2, run.ExitCode);
+    Assert.Contains("sobol", run.Error);
+    Assert.False(File.Exists(dir.File("a.png")));
+  }
+
   [Fact]
   public void Switching_off_shadows_changes_the_image()
   {
@@ -149,7 +173,7 @@ public class RenderCommandTests
     using var dir = new TempDirectory();
     CliRun run = CliRun.Of(dir.Path, "render", "--help");
     Assert.Equal(0, run.ExitCode);
-    foreach (string option in new[] { "--output", "--size", "--spp", "--jitter", "--threads", "--seed", "--gamma", "--no-shadows", "--no-reflections", "--no-refractions" })
+    foreach (string option in new[] { "--output", "--size", "--spp", "--jitter", "--threads", "--seed", "--sampler", "--gamma", "--no-shadows", "--no-reflections", "--no-refractions" })
       Assert.Contains(option, run.Out);
   }
 }

@@ -33,6 +33,24 @@ public class PrecedenceTests
   }
 
   [Fact]
+  public void Reflection_and_refraction_switches_given_to_path_tracing_are_noted_as_not_applying()
+  {
+    // Chosen by --algorithm path (no script) or by a script's own PathTracing: the switches are named, not swallowed.
+    var requested = Defaults with { Algorithm = RenderAlgorithm.Path, Reflections = false, Refractions = false };
+    RenderPlan plain = Precedence.Resolve(requested, GivenSettings.Algorithm | GivenSettings.Reflections | GivenSettings.Refractions, null);
+    string note = Assert.Single(plain.Notes);
+    Assert.Contains("reflections/refractions given: path tracing", note);
+
+    var script = new ScriptChoices { ImageFunction = new PathTracing() };
+    RenderPlan scripted = Precedence.Resolve(Defaults with { Refractions = false }, GivenSettings.Refractions, script);
+    Assert.Contains(scripted.Notes, n => n.StartsWith("refractions given: path tracing", StringComparison.Ordinal));
+
+    // Shadows it follows; Whitted follows all three: no note.
+    Assert.Empty(Precedence.Resolve(requested with { Shadows = false, Reflections = true, Refractions = true }, GivenSettings.Shadows, null).Notes);
+    Assert.Empty(Precedence.Resolve(Defaults with { Reflections = false }, GivenSettings.Reflections, null).Notes);
+  }
+
+  [Fact]
   public void The_scripts_size_and_supersampling_win_over_defaults_but_not_over_given_values()
   {
     var script = new ScriptChoices { Width = 100, Height = 80, SamplesPerPixel = 16 };

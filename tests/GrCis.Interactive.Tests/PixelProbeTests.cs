@@ -121,6 +121,23 @@ public class PixelProbeTests
     return chain;
   }
 
+  [Theory]
+  [InlineData(SamplerKind.CorrelatedMultiJitter)]
+  [InlineData(SamplerKind.Sobol)]
+  public void Path_traced_probe_colour_matches_the_render_with_each_sampler(SamplerKind sampler)
+  {
+    // The probe's worker is built as the render's workers are: same sampler, seed and frame, so the same pixel.
+    RenderJob job = RenderJob.Create(TestScenes.SphereOnPlane(),
+      Odd with { Width = 21, Height = 21, SamplesPerPixel = 4, Algorithm = RenderAlgorithm.Path, Seed = 3, Sampler = sampler });
+    var image = Rendering.Execution.TileRenderer.Render(job.Scene, job.ImageFunction, job.Renderer, job.Options);
+    foreach ((int x, int y) in new[] { (10, 10), (4, 15) })
+    {
+      ProbeResult probe = PixelProbe.Probe(job, x, y);
+      for (int b = 0; b < 3; b++)
+        Assert.Equal(image.GetPixel(x, y)[b], probe.PixelColor[b], 1e-6);
+    }
+  }
+
   [Fact]
   public void Path_tracing_probe_shows_the_path_as_a_chain_of_bounces_with_their_shadow_rays()
   {

@@ -20,7 +20,7 @@ namespace GrCis.Studio.Tests;
 /// each step are written beside the test assembly (<c>screenshots/</c>).
 /// </summary>
 [Collection(BrowserCollection.Name)]
-public sealed class BrowserTests(StudioFixture studio) : IClassFixture<StudioFixture>
+public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<StudioFixture>
 {
   static readonly string Shots = Path.Combine(AppContext.BaseDirectory, "screenshots");
 

@@ -38,6 +38,20 @@ public sealed class RenderOptionSet
     DefaultValueFactory = _ => 0L,
   };
 
+  readonly Option<string> sampler = CreateSamplerOption();
+
+  static Option<string> CreateSamplerOption()
+  {
+    var o = new Option<string>("--sampler")
+    {
+      Description = "Sample generator of the random decisions (lens, area lights, glossy rays, path vertices): cmj = correlated multi-jitter; independent = uniform random; sobol = Owen-scrambled Sobol (best with a power-of-two --spp)",
+      HelpName = "cmj|independent|sobol",
+      DefaultValueFactory = _ => "cmj",
+    };
+    o.AcceptOnlyFromAmong("cmj", "independent", "sobol");
+    return o;
+  }
+
   readonly Option<double> gamma = new("--gamma")
   {
     Description = "Display gamma of the PNG (1 = linear)",
@@ -69,7 +83,7 @@ public sealed class RenderOptionSet
 
   public void AddTo(Command command)
   {
-    foreach (Option o in new Option[] { size, spp, jitter, threads, seed, gamma, noShadows, noReflections, noRefractions, accel, algorithm })
+    foreach (Option o in new Option[] { size, spp, jitter, threads, seed, sampler, gamma, noShadows, noReflections, noRefractions, accel, algorithm })
       command.Options.Add(o);
   }
 
@@ -99,6 +113,7 @@ public sealed class RenderOptionSet
     Jitter = parse.GetValue(jitter),
     Threads = parse.GetValue(threads),
     Seed = parse.GetValue(seed),
+    Sampler = Rendering.Sampler.TryParse(parse.GetValue(sampler), out Rendering.SamplerKind kind) ? kind : Rendering.SamplerKind.CorrelatedMultiJitter,
     Gamma = parse.GetValue(gamma),
     Shadows = !parse.GetValue(noShadows),
     Reflections = !parse.GetValue(noReflections),

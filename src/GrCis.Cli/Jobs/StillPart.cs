@@ -16,7 +16,7 @@ namespace GrCis.Cli.Jobs;
 /// <summary>
 /// <c>render --tiles i/n</c>: the header of the part file, whose settings hash covers everything that
 /// shapes the pixels (scene or script text and its modules' sources, --param, --time, size, sampling,
-/// seed, gamma, switches, the script's renderer) and nothing that does not (threads, --accel).
+/// seed, sampler, gamma, switches, the script's renderer) and nothing that does not (threads, --accel).
 /// </summary>
 public static class StillPart
 {
@@ -44,6 +44,9 @@ public static class StillPart
       renderer {setup.Synthesizer?.GetType().FullName ?? "default"}
       function {setup.ImageFunction?.GetType().FullName ?? "default"}
       """);
+    // Named only when not the default, so parts rendered before samplers could be chosen still match.
+    if (s.Sampler != SamplerKind.CorrelatedMultiJitter)
+      id.Append(CultureInfo.InvariantCulture, $"\nsampler {Sampler.NameOf(s.Sampler)}");
     return new PartHeader
     {
       Width = s.Size.Width,

@@ -61,7 +61,7 @@ public sealed class FrameRenderer
     if (blur)
       function = new MotionBlurImageFunction(function) { FrameTime = time, Shutter = Shutter, Fps = Timeline.Fps };
     ImageSynthesizer synthesizer = parts.CreateSynthesizer();
-    var options = new RenderOptions { Threads = threads, Seed = Settings.Seed, Frame = frame };
+    RenderOptions options = Settings.ToRenderOptions(frame) with { Threads = threads };
     return FrameRendering.Render(workerScene, function, synthesizer, options, progress, cancel).Image;
   }
 }

@@ -225,22 +225,15 @@ public sealed class RenderSession : IDisposable
     var done = new bool[rows * columns];
     ImageSynthesizer renderer = job.Renderer;
     var po = new ParallelOptions { MaxDegreeOfParallelism = Math.Max(1, options.EffectiveThreads) };
+    WorkerContext caller = WorkerContext.Current;
     Parallel.For(0, rows, po,
-      () =>
-      {
-        MT.InitThreadData();
-        MT.SetRendering(SceneCloner.ForFrameWorker(job.Scene, job.ImageFunction), job.ImageFunction, renderer);
-        MT.seed = options.Seed;
-        MT.frame = options.Frame;
-        return (Color: new double[target.Bands], Scope: context.Enter());
-      },
+      // Each task is a worker of the render (a script's code stuck in a loop stops with the session, see Interruption).
+      () => (Color: new double[target.Bands], Scope: WorkerContext.Begin(context, job.Scene, job.ImageFunction, renderer, options, token, parent: caller)),
       (row, _, state) =>
       {
         double[] color = state.Color;
         if (token.IsCancellationRequested)
           return state;
-        // A script's code stuck in a loop stops with the session (see Interruption).
-        using Interruption.Scope interruption = Interruption.Use(token);
         int y0 = row * block, y1 = Math.Min(y0 + block, h);
         try
         {
@@ -259,11 +252,7 @@ public sealed class RenderSession : IDisposable
         }
         return state;
       },
-      state =>
-      {
-        state.Scope.Dispose();
-        MT.SetRendering(null, null, null);
-      });
+      state => state.Scope.Dispose());
     return done;
   }
 

@@ -22,19 +22,11 @@ public static class PixelProbe
       throw new ArgumentOutOfRangeException(nameof(x), $"Pixel [{x},{y}] is outside the {job.Width}x{job.Height} image.");
 
     int bands = rendered?.Bands ?? 3;
-    IRayScene? savedScene = MT.scene;
-    IImageFunction? savedFunction = MT.imageFunction;
-    IRenderer? savedRenderer = MT.renderer;
-    long savedSeed = MT.seed;
-    int savedFrame = MT.frame;
-    try
+    // A worker of its own, as a render's (a clone for time-dependent scenes, so a motion-blur function cannot move the
+    // job's scene); the thread's own prepared scenes, and its context back afterwards.
+    using (WorkerContext.Scope worker = WorkerContext.Begin(null, job.Scene, job.ImageFunction, job.Renderer, job.Options))
     {
-      MT.InitThreadData();
-      // A clone for time-dependent scenes, so a motion-blur function cannot move the job's scene.
-      IRayScene scene = SceneCloner.ForFrameWorker(job.Scene, job.ImageFunction);
-      MT.SetRendering(scene, job.ImageFunction, job.Renderer);
-      MT.seed = job.Options.Seed;
-      MT.frame = job.Options.Frame;
+      IRayScene scene = worker.Context!.Scene!;
 
       double[] pixel;
       if (rendered != null && rendered.Width == job.Width && rendered.Height == job.Height)
@@ -54,12 +46,6 @@ public static class PixelProbe
         hash = job.ImageFunction.GetSample(x + 0.5, y + 0.5, sample);
 
       return new ProbeResult(x, y, pixel, sample, hash, observer.Root);
-    }
-    finally
-    {
-      MT.SetRendering(savedScene, savedFunction, savedRenderer);
-      MT.seed = savedSeed;
-      MT.frame = savedFrame;
     }
   }
 }

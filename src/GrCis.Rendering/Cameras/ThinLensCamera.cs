@@ -20,8 +20,8 @@ namespace Rendering;
 [Serializable]
 public class ThinLensCamera : StaticCamera
 {
-  /// <summary>The stratification dimension of the lens (<see cref="Strata.Dimension"/>).</summary>
-  public static readonly uint LensDimension = Strata.Dimension(1, 0);
+  /// <summary>The stratification dimension of the lens (<see cref="Strata.Dimension(SampleDimension, int)"/>).</summary>
+  public static readonly uint LensDimension = Strata.Dimension(SampleDimension.Lens, 0);
 
   double lensRadius;
   double focusDistance = 1.0;
@@ -94,7 +94,7 @@ public class ThinLensCamera : StaticCamera
     if (along <= 0.0)
       return true;
     Vector3d focus = center + p1 * (focusDistance / along);
-    Strata.Sample2D(LensDimension, out double u, out double v);
+    Execution.WorkerContext.Current.Sampler.Get2D(SampleDimension.Lens, out double u, out double v);
     Vector2d lens = SampleWarp.ConcentricDisk(u, v) * lensRadius;
     p0 = center + lensRight * lens.X + lensUp * lens.Y;
     p1 = (focus - p0).Normalized();

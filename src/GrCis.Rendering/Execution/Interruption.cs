@@ -13,38 +13,45 @@ namespace Rendering.Execution;
 /// </summary>
 public static class Interruption
 {
-  [ThreadStatic]
-  static CancellationToken token;
-
-  /// <summary>The token user code on the calling thread obeys.</summary>
-  public static CancellationToken Current => token;
+  /// <summary>The token user code on the calling thread obeys (its <see cref="WorkerContext"/>'s).</summary>
+  public static CancellationToken Current => WorkerContext.Current.Cancel;
 
   /// <summary>Called by compiled user code at each loop iteration: throws once the thread's token is cancelled.</summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static void Poll()
   {
-    if (token.IsCancellationRequested)
+    if (WorkerContext.Current.Cancel.IsCancellationRequested)
       Stop();
   }
 
   /// <summary>User code run on the calling thread until the scope is disposed obeys <paramref name="cancel"/>.</summary>
   public static Scope Use(CancellationToken cancel)
   {
-    CancellationToken previous = token;
-    token = cancel;
-    return new Scope(previous);
+    WorkerContext c = WorkerContext.Current;
+    CancellationToken previous = c.Cancel;
+    c.Cancel = cancel;
+    return new Scope(c, previous);
   }
 
   [MethodImpl(MethodImplOptions.NoInlining)]
-  static void Stop() => throw new OperationCanceledException("Stopped while running user code.", token);
+  static void Stop() => throw new OperationCanceledException("Stopped while running user code.", WorkerContext.Current.Cancel);
 
   /// <summary>Restores the thread's previous token.</summary>
   public readonly struct Scope : IDisposable
   {
+    readonly WorkerContext? context;
     readonly CancellationToken previous;
 
-    internal Scope(CancellationToken previous) => this.previous = previous;
+    internal Scope(WorkerContext context, CancellationToken previous)
+    {
+      this.context = context;
+      this.previous = previous;
+    }
 
-    public void Dispose() => token = previous;
+    public void Dispose()
+    {
+      if (context != null)
+        context.Cancel = previous;
+    }
   }
 }

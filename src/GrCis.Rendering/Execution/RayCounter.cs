@@ -3,9 +3,9 @@ using System.Runtime.CompilerServices;
 namespace Rendering.Execution;
 
 /// <summary>
-/// Per-thread ray counters: each worker increments its own count (no shared cache line per ray, no lost
-/// updates; the count lives in the thread's shading scratch, which the shading loop fetches anyway);
-/// <see cref="TileRenderer"/> sums the workers' counts at the end of a render and adds them to GrCis's
+/// Per-worker ray counters: each worker increments its own count (no shared cache line per ray, no lost
+/// updates; the count lives in its <see cref="WorkerContext"/>'s shading scratch, which the shading loop fetches
+/// anyway); <see cref="TileRenderer"/> sums the workers' counts at the end of a render and adds them to GrCis's
 /// <see cref="Intersection.countRays"/>, which scripts may read.
 /// </summary>
 public static class RayCounter

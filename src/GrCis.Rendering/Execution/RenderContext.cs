@@ -7,9 +7,9 @@ namespace Rendering.Execution;
 
 /// <summary>
 /// What one render carries besides its options: the observer its rays are reported to, and the rays and
-/// hits its threads counted. A thread shades under a context between <see cref="Enter"/> and the scope's
-/// end (<see cref="TileRenderer"/> enters it on every worker); GrCis's own API has no context parameter,
-/// so the shading code finds it through the thread's shading state.
+/// hits its threads counted. A render's workers shade under it (<see cref="WorkerContext.Begin"/>), and any thread
+/// between <see cref="Enter"/> and the scope's end; GrCis's own API has no context parameter, so the shading code
+/// finds it through the thread's <see cref="WorkerContext"/>.
 /// </summary>
 public sealed class RenderContext
 {
@@ -30,52 +30,44 @@ public sealed class RenderContext
   /// <summary>Of those, rays that hit something (a blocked shadow ray counts as a hit).</summary>
   public long Hits => Interlocked.Read(ref hits);
 
-  /// <summary>Shades the calling thread's rays under this context until the scope is disposed.</summary>
-  public Scope Enter()
+  /// <summary>Adds a worker's counts (at the end of its time under this context).</summary>
+  internal void Add(long workerRays, long workerHits)
   {
-    ShadingScratch s = ShadingScratch.Current;
-    var scope = new Scope(this, s, s.Observer, s.Queries, s.LastPrepared, s.Noise, s.Rays, s.Hits);
-    s.Observer = Observer;
-    s.Noise = Noise;
-    s.Queries = Queries;
-    s.LastPrepared = null;
-    return scope;
+    Interlocked.Add(ref rays, workerRays);
+    Interlocked.Add(ref hits, workerHits);
   }
 
-  /// <summary>A thread's time under a context: on disposal its counts are added and the previous observer restored.</summary>
+  /// <summary>
+  /// Shades the calling thread's rays under this context until the scope is disposed: the thread's
+  /// <see cref="WorkerContext"/> takes a shading scratch of this render (its observer, noise and prepared scenes)
+  /// and gets its previous one back at the end.
+  /// </summary>
+  public Scope Enter() => WorkerContext.Current.EnterRender(this);
+
+  /// <summary>A thread's time under a context: on disposal its counts are added and the previous scratch restored.</summary>
   public readonly struct Scope : IDisposable
   {
     readonly RenderContext? context;
-    readonly ShadingScratch? scratch;
-    readonly RayObserver? previous;
-    readonly SceneQueries? previousQueries;
-    readonly PreparedScene? previousLast;
-    readonly NoiseImage? previousNoise;
-    readonly long rays0, hits0;
+    readonly WorkerContext? worker;
+    readonly ShadingScratch? previous, scratch;
 
-    internal Scope(RenderContext context, ShadingScratch scratch, RayObserver? previous, SceneQueries previousQueries, PreparedScene? previousLast,
-                   NoiseImage? previousNoise, long rays0, long hits0)
+    internal Scope(RenderContext context, WorkerContext worker, ShadingScratch previous, ShadingScratch scratch)
     {
       this.context = context;
-      this.scratch = scratch;
+      this.worker = worker;
       this.previous = previous;
-      this.previousQueries = previousQueries;
-      this.previousLast = previousLast;
-      this.previousNoise = previousNoise;
-      this.rays0 = rays0;
-      this.hits0 = hits0;
+      this.scratch = scratch;
     }
 
     public void Dispose()
     {
-      if (context == null || scratch == null)
+      if (context == null || worker == null || previous == null || scratch == null)
         return;
-      Interlocked.Add(ref context.rays, scratch.Rays - rays0);
-      Interlocked.Add(ref context.hits, scratch.Hits - hits0);
-      scratch.Observer = previous;
-      scratch.Queries = previousQueries!;
-      scratch.LastPrepared = previousLast;
-      scratch.Noise = previousNoise;
+      context.Add(scratch.Rays, scratch.Hits);
+      // The enclosing scope's count includes what was traced inside (same thread, nested).
+      previous.Rays += scratch.Rays;
+      previous.Hits += scratch.Hits;
+      worker.Scratch = previous;
     }
   }
 }

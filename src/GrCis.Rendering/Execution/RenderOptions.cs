@@ -15,6 +15,9 @@ public sealed record RenderOptions
   /// <summary>Frame number, mixed into the per-pixel seeds so frames differ.</summary>
   public int Frame { get; init; }
 
+  /// <summary>The sample generator of every random decision (<see cref="Sampler"/>); the default is correlated multi-jitter.</summary>
+  public SamplerKind Sampler { get; init; }
+
   /// <summary>Only these tiles (a part of a scaled-out still, see <see cref="Parts.PartLayout"/>); null = every tile.</summary>
   public System.Collections.Generic.IReadOnlyList<Tile>? Tiles { get; init; }
 

@@ -6,9 +6,9 @@ using Rendering.Imaging;
 namespace Rendering.Execution;
 
 /// <summary>
-/// Renders an image in tiles on worker threads. Every pixel's randomness is derived from
-/// (seed, frame, pixel) in <see cref="MT.StartPixel"/>, so the image is bit-identical for any
-/// number of threads and any tile order. Cancellation keeps every tile finished so far.
+/// Renders an image in tiles on worker threads, each in a <see cref="WorkerContext"/> of its own. Every pixel's
+/// randomness is derived from (seed, frame, pixel) in <see cref="MT.StartPixel"/> and the worker's <see cref="Sampler"/>,
+/// so the image is bit-identical for any number of threads and any tile order. Cancellation keeps every tile finished so far.
 /// </summary>
 public static class TileRenderer
 {
@@ -76,23 +76,17 @@ public static class TileRenderer
 
     int nextWorker = -1;
     MT.threads = threads;
+    WorkerContext caller = WorkerContext.Current;
 
     void Work()
     {
-      int previousThreadID = MT.threadID;
-      MT.threadID = Interlocked.Increment(ref nextWorker);
       int k = -1;
-      using RenderContext.Scope counting = context.Enter();
-      // A script's texture or shader stuck in a loop stops with the render.
-      using Interruption.Scope interruption = Interruption.Use(cancel);
-      MT.InitThreadData();
-      MT.seed = options.Seed;
-      MT.frame = options.Frame;
       try
       {
-        // Workers share the frame's scene; only a function that moves time per sample (motion blur) gets each
-        // worker its own clone of the time-dependent parts ("clone on write").
-        MT.SetRendering(SceneCloner.ForFrameWorker(scene, imageFunction), imageFunction, renderer);
+        // The worker's context: its scene, sampler, scratch and counts; a script's texture or shader stuck in a loop
+        // stops with the render (cancel).
+        using WorkerContext.Scope worker = WorkerContext.Begin(context, scene, imageFunction, renderer, options, cancel,
+                                                               Interlocked.Increment(ref nextWorker), caller);
         while (!cancel.IsCancellationRequested && failure.Exception == null &&
                (k = Interlocked.Increment(ref next)) < tiles.Count)
         {
@@ -114,11 +108,6 @@ public static class TileRenderer
       {
         // Tiles in flight may fail differently; report the first in tile order, whatever the threads.
         failure.Report(k, e);
-      }
-      finally
-      {
-        MT.SetRendering(null, null, null);
-        MT.threadID = previousThreadID;
       }
     }
 

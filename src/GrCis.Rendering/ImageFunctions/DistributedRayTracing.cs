@@ -11,7 +11,7 @@ namespace Rendering.Distributed;
 /// <see cref="PhongMaterial.H"/> around the ideal direction (glossy reflection and translucency), with soft
 /// shadows from area lights (<see cref="RectangleLightSource"/>, <see cref="SphereLightSource"/>) and depth of
 /// field from a <see cref="ThinLensCamera"/>. Every random choice is stratified over the pixel's samples
-/// (<see cref="MT.rank"/> of <see cref="MT.total"/>, <see cref="Strata"/>), so n×n supersampling is what makes the
+/// (<see cref="MT.rank"/> of <see cref="MT.total"/>, the worker's <see cref="Sampler"/>), so n×n supersampling is what makes the
 /// effects smooth: use 16 or more samples per pixel.
 /// </summary>
 /// <remarks>
@@ -47,18 +47,18 @@ public class DistributedRayTracing : RayTracing
   }
 
   protected override bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction) =>
-    Lobe(GlossyReflections, i, mirror, Strata.Dimension(3, depth), out direction);
+    Lobe(GlossyReflections, i, mirror, SampleDimension.GlossyReflection, depth, out direction);
 
   protected override bool RefractionDirection(Intersection i, Vector3d refracted, int depth, out Vector3d direction) =>
-    Lobe(GlossyRefractions, i, refracted.Normalized(), Strata.Dimension(4, depth), out direction);
+    Lobe(GlossyRefractions, i, refracted.Normalized(), SampleDimension.GlossyRefraction, depth, out direction);
 
   /// <summary>A direction from the cos^H lobe around <paramref name="ideal"/>, on the same side of the surface; false when it falls on the other side.</summary>
-  bool Lobe(bool glossy, Intersection i, Vector3d ideal, uint dimension, out Vector3d direction)
+  bool Lobe(bool glossy, Intersection i, Vector3d ideal, SampleDimension dimension, int depth, out Vector3d direction)
   {
     direction = ideal;
     if (!glossy || i.Material is not PhongMaterial m || m.H >= IdealExponent)
       return true;
-    Strata.Sample2D(dimension, out double u, out double v);
+    Rendering.Execution.WorkerContext.Current.Sampler.Get2D(dimension, depth, out double u, out double v);
     direction = SampleWarp.PowerCosine(u, v, ideal.Normalized(), Math.Max(m.H, 0));
     // A direction that leaves on the other side of the surface than the ideal one carries no light here.
     return Vector3d.Dot(direction, i.Normal) * Vector3d.Dot(ideal, i.Normal) > 0.0;

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using MathSupport;
 using OpenTK.Mathematics;
 using Rendering.Accel;
+using Rendering.Execution;
 using Rendering.Observation;
 
 namespace Rendering;
@@ -13,8 +14,9 @@ namespace Rendering;
 /// Phong parameters), emissive surfaces (<see cref="PhongMaterial.Emission"/>), GrCis's light sources and the
 /// background as an environment light. Every diffuse or glossy vertex samples the lights (next-event
 /// estimation) and combines that with the scattered ray by multiple importance sampling (power heuristic);
-/// paths end by Russian roulette from the second bounce on. Output is linear radiance: render to PFM
-/// for comparisons, use n×n supersampling for the noise to fall.
+/// paths end by Russian roulette from the second bounce on. Every random decision of a vertex (lobe, direction,
+/// roulette, emitter, point on it) comes from the worker's <see cref="Sampler"/>, each in a <see cref="SampleDimension"/>
+/// of its own. Output is linear radiance: render to PFM for comparisons, use n×n supersampling for the noise to fall.
 /// </summary>
 /// <remarks>
 /// GrCis's light sources are points (or area lights sampled as points): a light of intensity I lights a
@@ -50,21 +52,19 @@ public class PathTracing : RayTracing
     MirrorExponent = p.MirrorExponent;
   }
 
-  // The emitters of the scene this thread renders, rebuilt when the scene, its snapshot or the frame changes.
-  [ThreadStatic] static EmitterSet? emitters;
-  [ThreadStatic] static object? emittersRoot, emittersSnapshot;
-  [ThreadStatic] static int emittersFrame;
-
-  EmitterSet EmittersOf(ShadingScratch scratch, IRayScene sc)
+  /// <summary>The emitters of the scene the worker renders, kept in its context and rebuilt when the scene, its snapshot or the frame changes.</summary>
+  EmitterSet EmittersOf(WorkerContext context, IRayScene sc)
   {
     IIntersectable? root = sc.Intersectable;
-    PreparedScene? snapshot = PreparedFor(scratch);
-    if (emitters == null || !ReferenceEquals(emittersRoot, root) || !ReferenceEquals(emittersSnapshot, snapshot) || emittersFrame != MT.frame)
+    PreparedScene? snapshot = PreparedFor(context.Scratch);
+    int frame = context.Sampler.Frame;
+    if (context.Emitters is not EmitterSet emitters || !ReferenceEquals(context.EmittersRoot, root) ||
+        !ReferenceEquals(context.EmittersSnapshot, snapshot) || context.EmittersFrame != frame)
     {
-      emitters = EmitterSet.Of(root);
-      emittersRoot = root;
-      emittersSnapshot = snapshot;
-      emittersFrame = MT.frame;
+      context.Emitters = emitters = EmitterSet.Of(root);
+      context.EmittersRoot = root;
+      context.EmittersSnapshot = snapshot;
+      context.EmittersFrame = frame;
     }
     return emitters;
   }
@@ -72,10 +72,11 @@ public class PathTracing : RayTracing
   /// <summary>Radiance arriving along the ray <c>p0 + t p1</c> by path tracing, into <paramref name="color"/>; returns the first hit's hash.</summary>
   public override long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
   {
-    ShadingScratch scratch = ShadingScratch.Current;
+    WorkerContext context = WorkerContext.Current;
+    ShadingScratch scratch = context.Scratch;
+    Sampler sampler = context.Sampler;
     IRayScene sc = Scene;
-    EmitterSet lights = NextEventEstimation ? EmittersOf(scratch, sc) : EmitterSet.Empty;
-    RandomJames rnd = MT.rnd;
+    EmitterSet lights = NextEventEstimation ? EmittersOf(context, sc) : EmitterSet.Empty;
 
     Rgb radiance = Rgb.Zero, throughput = Rgb.One;
     Vector3d origin = p0, direction = p1.Normalized();
@@ -103,7 +104,7 @@ public class PathTracing : RayTracing
         // Each bounce fills a pooled hit of its own depth, so every hit is still valid when the chain ends.
         observer.BeginRay(kind, depth + bounce, origin, direction);
         i = FirstHitAt(scratch, depth + bounce, origin, direction);
-        Observed(observed++) = (kind, depth + bounce, origin, direction, i);
+        Observed(context, observed++) = (kind, depth + bounce, origin, direction, i);
       }
       if (i == null)
       {
@@ -133,11 +134,11 @@ public class PathTracing : RayTracing
       if (!bsdf.Scatters)
         break;
       if (NextEventEstimation && bsdf.HasSmooth)
-        radiance += throughput * SampleLights(scratch, sc, lights, i, bsdf, bounce);
+        radiance += throughput * SampleLights(scratch, sampler, sc, lights, i, bsdf, bounce);
 
       // Continue the path in a direction sampled from the surface's lobes.
-      Strata.Sample2D(Strata.Dimension(5, bounce), out double u, out double v);
-      if (!bsdf.Sample(rnd.UniformNumber(), u, v, out Vector3d wi, out Rgb weight, out double pdf, out bool delta))
+      sampler.Get2D(SampleDimension.PathDirection, bounce, out double u, out double v);
+      if (!bsdf.Sample(sampler.Get1D(SampleDimension.PathLobe, bounce), u, v, out Vector3d wi, out Rgb weight, out double pdf, out bool delta))
         break;
       throughput *= weight;
       if (throughput.IsBlack)
@@ -145,7 +146,7 @@ public class PathTracing : RayTracing
       if (bounce >= RussianRouletteStart)
       {
         double survive = Math.Min(1.0, Math.Sqrt(throughput.Max));
-        if (rnd.UniformNumber() >= survive)
+        if (sampler.Get1D(SampleDimension.PathRoulette, bounce) >= survive)
           break;
         throughput *= 1.0 / survive;
       }
@@ -157,25 +158,23 @@ public class PathTracing : RayTracing
     }
     while (observed > 0)
     {
-      var (k, d, o, dir, hit) = Observed(--observed);
+      var (k, d, o, dir, hit) = Observed(context, --observed);
       observer!.EndRay(k, d, o, dir, hit);
     }
     radiance.CopyTo(color);
     return hash;
   }
 
-  // The rays of the path being observed on this thread, ended in reverse order when the path is done.
-  [ThreadStatic] static (RayKind Kind, int Depth, Vector3d Origin, Vector3d Direction, Intersection? Hit)[]? observedRays;
-
-  static ref (RayKind Kind, int Depth, Vector3d Origin, Vector3d Direction, Intersection? Hit) Observed(int index)
+  /// <summary>Ray <paramref name="index"/> of the path being observed (kept in the worker's context, ended in reverse order when the path is done).</summary>
+  static ref (RayKind Kind, int Depth, Vector3d Origin, Vector3d Direction, Intersection? Hit) Observed(WorkerContext context, int index)
   {
-    if (observedRays == null || index >= observedRays.Length)
-      Array.Resize(ref observedRays, Math.Max(16, 2 * index));
-    return ref observedRays![index];
+    if (context.ObservedRays == null || index >= context.ObservedRays.Length)
+      Array.Resize(ref context.ObservedRays, Math.Max(16, 2 * index));
+    return ref context.ObservedRays![index];
   }
 
   /// <summary>Direct light at hit <paramref name="i"/>: every light source once, and one sample of one emitter.</summary>
-  Rgb SampleLights(ShadingScratch scratch, IRayScene sc, EmitterSet lights, Intersection i, in PathBsdf bsdf, int bounce)
+  Rgb SampleLights(ShadingScratch scratch, Sampler sampler, IRayScene sc, EmitterSet lights, Intersection i, in PathBsdf bsdf, int bounce)
   {
     Rgb sum = Rgb.Zero;
     Vector3d x = i.CoordWorld;
@@ -199,8 +198,8 @@ public class PathTracing : RayTracing
 
     if (lights.Count > 0)
     {
-      Strata.Sample2D(Strata.Dimension(6, bounce), out double u, out double v);
-      if (lights.Sample(x, MT.rnd.UniformNumber(), u, v, out Vector3d toLight, out double dist, out Vector3d wi, out Rgb le, out double lightPdf))
+      sampler.Get2D(SampleDimension.PathLightPoint, bounce, out double u, out double v);
+      if (lights.Sample(x, sampler.Get1D(SampleDimension.PathLightPick, bounce), u, v, out Vector3d toLight, out double dist, out Vector3d wi, out Rgb le, out double lightPdf))
       {
         double cos = Vector3d.Dot(wi, nf);
         if (cos > 0.0)

@@ -3,17 +3,28 @@ using System;
 namespace Rendering;
 
 /// <summary>
-/// One worker thread's shading state, fetched with one thread-static look-up per shaded ray instead of one
-/// per use: its ray and hit counts, the observer of its render (<see cref="Execution.RenderContext"/>), and per recursion depth the reusable intersection, the material copy that
+/// One worker's shading state (part of its <see cref="Execution.WorkerContext"/>), fetched once per shaded ray
+/// instead of once per use: its ray and hit counts, the observer of its render (<see cref="Execution.RenderContext"/>), and per recursion depth the reusable intersection, the material copy that
 /// carries the surface colour and the buffer a secondary ray's colour is returned in. A depth's objects are
 /// only used while that depth's shade() runs, so deeper levels never overwrite them.
 /// </summary>
 internal sealed class ShadingScratch
 {
-  [ThreadStatic] static ShadingScratch? current;
+  /// <summary>The calling thread's scratch (its <see cref="Execution.WorkerContext"/>'s).</summary>
+  public static ShadingScratch Current
+  {
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    get => Execution.WorkerContext.Current.Scratch;
+  }
 
-  /// <summary>The calling thread's scratch.</summary>
-  public static ShadingScratch Current => current ??= new ShadingScratch();
+  /// <summary>Shades for <paramref name="render"/>: its observer, noise estimate and prepared scenes.</summary>
+  public void UseRender(Execution.RenderContext render)
+  {
+    Observer = render.Observer;
+    Noise = render.Noise;
+    Queries = render.Queries;
+    LastPrepared = null;
+  }
 
   /// <summary>Rays counted on this thread (<see cref="Execution.RayCounter"/>).</summary>
   public long Rays;

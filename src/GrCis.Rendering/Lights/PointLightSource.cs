@@ -24,24 +24,17 @@ public class PointLightSource : ILightSource
     intensity = (double[])intens.Clone();
   }
 
-  // Per-thread result buffer of Attenuated (no array per shadow ray).
-  [NonSerialized] System.Threading.ThreadLocal<double[]>? dimmed;
-
   /// <summary>
   /// <see cref="intensity"/> attenuated by 1 / (d0 + d1·r + d2·r²) at distance <paramref name="distance"/>, the
   /// <c>Dim</c> of GrCis's area lights; <paramref name="dim"/> null (or short) = no attenuation. The result is this
-  /// thread's buffer, valid until its next call.
+  /// light's buffer in the worker's context (no array per shadow ray), valid until this light's next call there.
   /// </summary>
   private protected double[] Attenuated(double[]? dim, double distance)
   {
     if (dim == null || dim.Length < 3)
       return intensity;
     double factor = 1.0 / (dim[0] + distance * (dim[1] + distance * dim[2]));
-    System.Threading.ThreadLocal<double[]> buffers = System.Threading.LazyInitializer.EnsureInitialized(ref dimmed,
-      () => new System.Threading.ThreadLocal<double[]>(() => new double[intensity.Length]));
-    double[] result = buffers.Value!;
-    if (result.Length != intensity.Length)
-      buffers.Value = result = new double[intensity.Length];
+    double[] result = Execution.WorkerContext.Current.LightBuffer(this, intensity.Length);
     for (int i = 0; i < result.Length; i++)
       result[i] = intensity[i] * factor;
     return result;

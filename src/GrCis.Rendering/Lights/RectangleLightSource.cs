@@ -43,14 +43,14 @@ public class RectangleLightSource : PointLightSource
       v = rnd.UniformNumber();
       return;
     }
-    Strata.Sample2D(Dimension(), out u, out v);
+    Execution.WorkerContext.Current.Sampler.Get2D(SampleDimension.RectangleLight, Instance(), out u, out v);
   }
 
-  /// <summary>The stratification dimension of this light: from its corner and edges, the same in every clone and run.</summary>
-  uint Dimension()
+  /// <summary>This light's instance of <see cref="SampleDimension.RectangleLight"/>: from its corner and edges, the same in every clone and run.</summary>
+  int Instance()
   {
     long h = Mix(Mix(Mix(17, position ?? Vector3d.Zero), width), height);
-    return Strata.Dimension(7, (int)(h ^ (h >> 32)));
+    return (int)(h ^ (h >> 32));
   }
 
   static long Mix(long h, in Vector3d v) =>

@@ -21,13 +21,13 @@ public class SphereLightSource : PointLightSource
 
   public SphereLightSource(Vector3d pos, double rad, double[] intens) : base(pos, intens) => radius = rad;
 
-  /// <summary>The stratification dimension of this light: from its position and radius, the same in every clone and run.</summary>
-  uint Dimension()
+  /// <summary>This light's instance of <see cref="SampleDimension.SphereLight"/>: from its position and radius, the same in every clone and run.</summary>
+  int Instance()
   {
     Vector3d c = position ?? Vector3d.Zero;
     long h = BitConverter.DoubleToInt64Bits(c.X) * 31 ^ BitConverter.DoubleToInt64Bits(c.Y) * 17 ^
              BitConverter.DoubleToInt64Bits(c.Z) * 7 ^ BitConverter.DoubleToInt64Bits(radius);
-    return Strata.Dimension(2, (int)(h ^ (h >> 32)));
+    return (int)(h ^ (h >> 32));
   }
 
   public override double[]? GetIntensity(Intersection intersection, out Vector3d dir)
@@ -45,7 +45,7 @@ public class SphereLightSource : PointLightSource
       double dist = Math.Sqrt(dist2);
       Vector3d axis = toCentre / dist;
       double cosMax = Math.Sqrt(Math.Max(0.0, 1.0 - r2 / dist2));
-      Strata.Sample2D(Dimension(), out double u, out double v);
+      Execution.WorkerContext.Current.Sampler.Get2D(SampleDimension.SphereLight, Instance(), out double u, out double v);
       Vector3d w = SampleWarp.UniformCone(u, v, axis, cosMax);
       double b = Vector3d.Dot(w, toCentre);
       double t = b - Math.Sqrt(Math.Max(0.0, b * b - dist2 + r2));

@@ -23,9 +23,6 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
   MeshBvh? bvh;
   MeshTriangles? triangles;
 
-  [ThreadStatic]
-  static List<MeshHit>? hitBuffer;
-
   /// <summary>Treat the surface as a thin double-sided shell: each crossing adds an exit just behind it.</summary>
   public bool ShellMode { get; set; }
 
@@ -73,7 +70,8 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
 
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
-    List<MeshHit> hits = hitBuffer ??= new List<MeshHit>(16);
+    Execution.WorkerContext context = Execution.WorkerContext.Current;
+    List<MeshHit> hits = context.MeshHits ??= new List<MeshHit>(16);
     hits.Clear();
     double eps;
     if (ExhaustiveSearch.Active)

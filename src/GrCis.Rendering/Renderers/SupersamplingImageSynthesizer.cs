@@ -127,7 +127,7 @@ public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
   public static bool IsStreamStart(int s, int n) => s <= 1 || s % n == 0;
 
   /// <summary>The <see cref="Strata"/> dimension of the sample positions in the pixel (the rotations of their sub-cell order): purpose 0.</summary>
-  static readonly uint PixelDimension = Strata.Dimension(0, 0);
+  static readonly uint PixelDimension = Strata.Dimension(SampleDimension.PixelGrid, 0);
 
   /// <summary>The pixel's colour from the sum of all its samples.</summary>
   public void FinishPixel(ReadOnlySpan<double> sum, double[] color)

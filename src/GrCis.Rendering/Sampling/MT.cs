@@ -1,38 +1,76 @@
 using System;
 using MathSupport;
+using Rendering.Execution;
 
 namespace Rendering;
 
 /// <summary>
-/// Thread-static sampling state ("hidden sampling"): the renderer sets the current pixel and the
+/// GrCis's per-thread sampling state ("hidden sampling"): the renderer sets the current pixel and the
 /// rank of the current sample within it, and any component (area light, lens, motion blur) may
-/// stratify its own random dimension by <see cref="rank"/> out of <see cref="total"/>.
+/// stratify its own random dimension by <see cref="rank"/> out of <see cref="total"/>. Kept for scripts
+/// and students' code, as a facade: the per-thread values are properties over the calling thread's
+/// <see cref="WorkerContext"/> (the pixel and sample are its <see cref="Sampler"/>'s); GrCis's code only
+/// ever read and assigned them (no <c>ref MT.x</c> in its history), which properties allow.
 /// </summary>
 public static class MT
 {
-  [ThreadStatic] static RandomJames? rndField;
-
   /// <summary>This thread's generator; reseeded per pixel from (seed, frame, pixel) for reproducible images.</summary>
   public static RandomJames rnd
   {
-    get => rndField ??= new RandomJames();
-    set => rndField = value;
+    get
+    {
+      WorkerContext c = WorkerContext.Current;
+      return c.Rnd ??= new RandomJames();
+    }
+    set => WorkerContext.Current.Rnd = value;
   }
 
   /// <summary>Index of the current sample within the current pixel.</summary>
-  [ThreadStatic] public static int rank;
+  public static int rank
+  {
+    get => WorkerContext.Current.Sampler.Index;
+    set => WorkerContext.Current.Sampler.Index = value;
+  }
 
   /// <summary>Number of samples in the current pixel.</summary>
-  [ThreadStatic] public static int total;
+  public static int total
+  {
+    get => WorkerContext.Current.Sampler.Count;
+    set => WorkerContext.Current.Sampler.Count = value;
+  }
 
   /// <summary>Current pixel.</summary>
-  [ThreadStatic] public static int x, y;
+  public static int x
+  {
+    get => WorkerContext.Current.Sampler.X;
+    set => WorkerContext.Current.Sampler.X = value;
+  }
+
+  public static int y
+  {
+    get => WorkerContext.Current.Sampler.Y;
+    set => WorkerContext.Current.Sampler.Y = value;
+  }
 
   /// <summary>Image position of the current sample (set by <see cref="RayCasting.GetSample"/> and <see cref="RayTracing.GetSample"/>).</summary>
-  [ThreadStatic] public static double doubleX, doubleY;
+  public static double doubleX
+  {
+    get => WorkerContext.Current.DoubleX;
+    set => WorkerContext.Current.DoubleX = value;
+  }
+
+  public static double doubleY
+  {
+    get => WorkerContext.Current.DoubleY;
+    set => WorkerContext.Current.DoubleY = value;
+  }
 
   /// <summary>Index of this rendering thread, 0 to <see cref="threads"/> − 1 (0 outside rendering).</summary>
-  [ThreadStatic] public static int threadID;
+  public static int threadID
+  {
+    get => WorkerContext.Current.ThreadID;
+    set => WorkerContext.Current.ThreadID = value;
+  }
 
   /// <summary>Rendering threads of the render in progress (or the last one).</summary>
   public static int threads = 1;
@@ -54,33 +92,55 @@ public static class MT
   public static bool pointCloudCheckBox;
 
   /// <summary>Current frame number (animation) and the time of the current sample.</summary>
-  [ThreadStatic] public static int frame;
+  public static int frame
+  {
+    get => WorkerContext.Current.Sampler.Frame;
+    set => WorkerContext.Current.Sampler.Frame = value;
+  }
 
-  [ThreadStatic] public static double time;
+  public static double time
+  {
+    get => WorkerContext.Current.Time;
+    set => WorkerContext.Current.Time = value;
+  }
 
   /// <summary>What this thread is rendering (for components that need it).</summary>
-  [ThreadStatic] public static IRayScene? scene;
+  public static IRayScene? scene
+  {
+    get => WorkerContext.Current.Scene;
+    set => WorkerContext.Current.Scene = value;
+  }
 
-  [ThreadStatic] public static IImageFunction? imageFunction;
+  public static IImageFunction? imageFunction
+  {
+    get => WorkerContext.Current.ImageFunction;
+    set => WorkerContext.Current.ImageFunction = value;
+  }
 
-  [ThreadStatic] public static IRenderer? renderer;
+  public static IRenderer? renderer
+  {
+    get => WorkerContext.Current.Renderer;
+    set => WorkerContext.Current.Renderer = value;
+  }
 
   /// <summary>The user's seed; every pixel's random stream is derived from it.</summary>
-  [ThreadStatic] public static long seed;
+  public static long seed
+  {
+    get => WorkerContext.Current.Sampler.Seed;
+    set => WorkerContext.Current.Sampler.Seed = value;
+  }
 
   /// <summary>Sets the thread's rendering context.</summary>
   public static void SetRendering(IRayScene? sc, IImageFunction? imf, IRenderer? rend)
   {
-    scene = sc;
-    imageFunction = imf;
-    renderer = rend;
+    WorkerContext c = WorkerContext.Current;
+    c.Scene = sc;
+    c.ImageFunction = imf;
+    c.Renderer = rend;
   }
 
   /// <summary>Clears the thread's rendering context.</summary>
   public static void ResetRendering() => SetRendering(null, null, null);
-
-  /// <summary>The current pixel's hash of (seed, frame, pixel); each sample's stream is derived from it.</summary>
-  [ThreadStatic] static ulong pixelHash;
 
   /// <summary>
   /// Starts pixel (px, py) at sample 0: reseeds <see cref="rnd"/> from (seed, frame, pixel), independent of
@@ -88,21 +148,20 @@ public static class MT
   /// </summary>
   public static void StartPixel(int px, int py, int samples)
   {
-    x = px;
-    y = py;
-    total = samples;
-    rank = 0;
-    ulong h = RandomStatic.Mix64((ulong)seed ^ 0x5DEECE66DUL);
-    h = RandomStatic.Mix64(h ^ (uint)frame);
-    pixelHash = h = RandomStatic.Mix64(h ^ ((ulong)(uint)py << 32 | (uint)px));
-    rnd.ResetFast(h);
+    WorkerContext c = WorkerContext.Current;
+    Sampler s = c.Sampler;
+    s.StartPixel(px, py, samples);
+    ulong h = RandomStatic.Mix64((ulong)s.Seed ^ 0x5DEECE66DUL);
+    h = RandomStatic.Mix64(h ^ (uint)s.Frame);
+    c.PixelHash = h = RandomStatic.Mix64(h ^ ((ulong)(uint)py << 32 | (uint)px));
+    (c.Rnd ??= new RandomJames()).ResetFast(h);
   }
 
   /// <summary>Marks the start of sample <paramref name="r"/> of the current pixel.</summary>
-  public static void StartSample(int r) => rank = r;
+  public static void StartSample(int r) => WorkerContext.Current.Sampler.Index = r;
 
   /// <summary>Advances to the next sample of the current pixel.</summary>
-  public static void NextSample() => rank++;
+  public static void NextSample() => WorkerContext.Current.Sampler.Index++;
 
   /// <summary>
   /// Starts sample <paramref name="r"/> of the current pixel on a random stream of its own, derived from (pixel, r):
@@ -112,8 +171,10 @@ public static class MT
   /// </summary>
   public static void StartStream(int r)
   {
-    rank = r;
-    rnd.ResetFast(r == 0 ? pixelHash : RandomStatic.Mix64(pixelHash ^ (ulong)(uint)r * 0xD6E8FEB86659FD93UL));
+    WorkerContext c = WorkerContext.Current;
+    c.Sampler.Index = r;
+    ulong pixelHash = c.PixelHash;
+    (c.Rnd ??= new RandomJames()).ResetFast(r == 0 ? pixelHash : RandomStatic.Mix64(pixelHash ^ (ulong)(uint)r * 0xD6E8FEB86659FD93UL));
   }
 
   /// <summary>Makes sure this thread has its generator.</summary>

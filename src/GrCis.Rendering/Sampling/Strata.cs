@@ -10,7 +10,8 @@ namespace Rendering;
 /// lens or light points instead of 16 independent random ones. The points are correlated multi-jittered
 /// (Kensler 2013): stratified in 2D and in each coordinate alone. They are a pure function of the seed,
 /// frame, pixel, dimension and rank, and consume nothing of <see cref="MT.rnd"/>: the image does not depend
-/// on threads or on the order the samples are taken.
+/// on threads or on the order the samples are taken. <see cref="CorrelatedMultiJitterSampler"/> is this pattern as
+/// a <see cref="Sampler"/>; the members that take a numbered dimension read the current worker's pixel and sample.
 /// </summary>
 public static class Strata
 {
@@ -18,16 +19,24 @@ public static class Strata
   public static uint Dimension(uint purpose, int depth) => purpose * 0x9E3779B9u + (uint)depth * 0x85EBCA6Bu + 1u;
 
   /// <summary>A point of [0,1)² for the current sample of <paramref name="dimension"/>.</summary>
-  public static void Sample2D(uint dimension, out double u, out double v) =>
-    Sample2D(MT.rank, MT.total, Pattern(dimension), out u, out v);
+  public static void Sample2D(uint dimension, out double u, out double v)
+  {
+    Sampler s = Execution.WorkerContext.Current.Sampler;
+    Sample2D(s.Index, s.Count, Pattern(s.Seed, s.Frame, s.X, s.Y, dimension), out u, out v);
+  }
+
+  /// <summary>The dimension of a named purpose (<see cref="SampleDimension"/>) at an instance (depth, light).</summary>
+  public static uint Dimension(SampleDimension purpose, int instance) => Dimension((uint)purpose, instance);
 
   /// <summary>A number of [0,1) for the current sample of <paramref name="dimension"/> (stratified over the pixel's samples).</summary>
-  public static double Sample1D(uint dimension)
+  public static double Sample1D(uint dimension) => Sample1D(MT.rank, MT.total, Pattern(dimension));
+
+  /// <summary>Sample <paramref name="rank"/> of <paramref name="total"/> of the one-dimensional pattern <paramref name="pattern"/>.</summary>
+  public static double Sample1D(int rank, int total, uint pattern)
   {
-    int total = Math.Max(MT.total, 1);
-    uint p = Pattern(dimension);
-    uint s = Permute((uint)Math.Clamp(MT.rank, 0, total - 1), (uint)total, p * 0x51633E2Du);
-    return (s + Jitter(s, p * 0x68BC21EBu)) / total;
+    total = Math.Max(total, 1);
+    uint s = Permute((uint)Math.Clamp(rank, 0, total - 1), (uint)total, pattern * 0x51633E2Du);
+    return (s + Jitter(s, pattern * 0x68BC21EBu)) / total;
   }
 
   /// <summary>
@@ -57,9 +66,16 @@ public static class Strata
   /// <summary>The pattern of a dimension in the current pixel: a hash of seed, frame, pixel and dimension.</summary>
   internal static uint Pattern(uint dimension)
   {
-    ulong h = RandomStatic.Mix64((ulong)MT.seed ^ 0xD1B54A32D192ED03UL);
-    h = RandomStatic.Mix64(h ^ ((ulong)(uint)MT.frame << 32 | dimension));
-    h = RandomStatic.Mix64(h ^ ((ulong)(uint)MT.y << 32 | (uint)MT.x));
+    Sampler s = Execution.WorkerContext.Current.Sampler;
+    return Pattern(s.Seed, s.Frame, s.X, s.Y, dimension);
+  }
+
+  /// <summary>The pattern of a dimension in pixel (x, y) of a frame: a hash of seed, frame, pixel and dimension.</summary>
+  internal static uint Pattern(long seed, int frame, int x, int y, uint dimension)
+  {
+    ulong h = RandomStatic.Mix64((ulong)seed ^ 0xD1B54A32D192ED03UL);
+    h = RandomStatic.Mix64(h ^ ((ulong)(uint)frame << 32 | dimension));
+    h = RandomStatic.Mix64(h ^ ((ulong)(uint)y << 32 | (uint)x));
     return (uint)(h ^ (h >> 32));
   }
 

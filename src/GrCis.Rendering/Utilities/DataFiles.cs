@@ -9,13 +9,11 @@ namespace Utilities;
 /// Windows: with <c>\</c> separators, in any letter case, relative to the current folder, to the script's
 /// own folder, or to GrCis's working folder — the project's <c>bin/Debug</c>, so that
 /// <c>..\..\..\data\rtscenes\scene.yaml</c> meant the repository's <c>data/rtscenes</c>. The script host
-/// sets <see cref="ScriptDirectory"/> on the thread while a script runs.
+/// sets <see cref="ScriptDirectory"/> on the thread while a script runs (kept in the thread's
+/// <see cref="Rendering.Execution.WorkerContext"/>, so a render's workers inherit it).
 /// </summary>
 public static class DataFiles
 {
-  [ThreadStatic]
-  static string? scriptDirectory;
-
   /// <summary>
   /// How many folders above the script's folder (and the current folder) a path written for GrCis's working
   /// folder is looked for, beyond the levels its leading <c>..</c> segments climb.
@@ -23,14 +21,15 @@ public static class DataFiles
   public const int SearchLevels = 4;
 
   /// <summary>Folder of the script running on this thread (null outside scripts).</summary>
-  public static string? ScriptDirectory => scriptDirectory;
+  public static string? ScriptDirectory => Rendering.Execution.WorkerContext.Current.ScriptDirectory;
 
   /// <summary>While the scope lives, relative paths on this thread are also looked up in <paramref name="directory"/>.</summary>
   public static Scope UseScriptDirectory(string? directory)
   {
-    string? previous = scriptDirectory;
-    scriptDirectory = directory;
-    return new Scope(previous);
+    Rendering.Execution.WorkerContext c = Rendering.Execution.WorkerContext.Current;
+    string? previous = c.ScriptDirectory;
+    c.ScriptDirectory = directory;
+    return new Scope(c, previous);
   }
 
   /// <summary>
@@ -60,7 +59,7 @@ public static class DataFiles
     string portable = Path.DirectorySeparatorChar == '\\' ? path : path.Replace('\\', '/');
     if (File.Exists(portable))
       return portable;
-    string? script = scriptDirectory;
+    string? script = ScriptDirectory;
     bool relative = !Path.IsPathRooted(portable);
     if (script != null && relative)
     {
@@ -211,10 +210,19 @@ public static class DataFiles
   /// <summary>Restores the thread's previous script folder.</summary>
   public readonly struct Scope : IDisposable
   {
+    readonly Rendering.Execution.WorkerContext? context;
     readonly string? previous;
 
-    internal Scope(string? previous) => this.previous = previous;
+    internal Scope(Rendering.Execution.WorkerContext context, string? previous)
+    {
+      this.context = context;
+      this.previous = previous;
+    }
 
-    public void Dispose() => scriptDirectory = previous;
+    public void Dispose()
+    {
+      if (context != null)
+        context.ScriptDirectory = previous;
+    }
   }
 }

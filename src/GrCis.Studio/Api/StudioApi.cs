@@ -58,6 +58,7 @@ internal static class StudioApi
     api.MapViewsApi();
     api.MapHistoryApi();
     api.MapAnimationApi();
+    api.MapEditorApi();
     api.MapFilesApi();
     return api;
   }

@@ -4,6 +4,7 @@ import { $, state } from "./state.js";
 import { api, problemText } from "./api.js";
 import { showError, say } from "./messages.js";
 import { showStatus } from "./status.js";
+import { assist } from "./assist.js";
 
 const ed = state.editor;
 
@@ -17,6 +18,7 @@ async function openEditor() {
   if (!ed.cm) {
     ed.cm = CodeMirror($("editor"), { value: text, mode: "text/x-csharp", lineNumbers: true, indentUnit: 2, tabSize: 2 });
     ed.cm.setOption("extraKeys", { "Ctrl-S": save, "Cmd-S": save });
+    assist(ed.cm);
   }
   ed.scene = name;
   loadSource(text, r.headers.get("ETag"));

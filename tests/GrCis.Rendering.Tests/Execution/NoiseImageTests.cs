@@ -59,8 +59,9 @@ public class NoiseImageTests
       var context = new RenderContext { Noise = new NoiseImage(size, size) };
       FloatImage image = PathTracingTests.Render(CornellScene.Create(diffuse: true), new PathTracing(), size, spp, context: context);
       double actual = Rmse(image, reference), estimated = context.Noise.Rmse()!.Value;
-      // The estimate is of the right size (half-images of stratified samples err on the high side) ...
-      Assert.InRange(estimated / actual, 0.7, 1.8);
+      // The estimate is of the right size (half-images of stratified samples err on the high side: every decision of a
+      // path vertex is stratified over the whole pixel, so each half alone is less even than the two together) ...
+      Assert.True(estimated / actual is >= 0.7 and <= 2.2, $"{spp} spp: estimated {estimated}, actual {actual}");
       // ... and falls at least as 1/√spp does: 4× the samples, at most half the error.
       Assert.True(estimated < previous / 2, $"{spp} spp: estimated {estimated}, before {previous}");
       previous = estimated;

@@ -1,0 +1,21 @@
+namespace Rendering;
+
+/// <summary>
+/// Correlated multi-jitter (Kensler 2013, <see cref="Strata"/>): within a pixel, the samples of one dimension are
+/// stratified in 2D and in each coordinate alone, and different dimensions are independent shuffles. The default
+/// sampler; its values are those <see cref="Strata"/> gave before samplers were objects, so images are unchanged.
+/// </summary>
+public sealed class CorrelatedMultiJitterSampler : Sampler
+{
+  public override SamplerKind Kind => SamplerKind.CorrelatedMultiJitter;
+
+  public override double Get1D(SampleDimension dimension, int instance = 0) =>
+    Strata.Sample1D(Index, Count, Pattern(dimension, instance));
+
+  public override void Get2D(SampleDimension dimension, int instance, out double u, out double v) =>
+    Strata.Sample2D(Index, Count, Pattern(dimension, instance), out u, out v);
+
+  /// <summary>The pattern of a dimension in the current pixel (the hash <see cref="Strata"/> has always used).</summary>
+  public uint Pattern(SampleDimension dimension, int instance = 0) =>
+    Strata.Pattern(Seed, Frame, X, Y, Strata.Dimension((uint)dimension, instance));
+}
