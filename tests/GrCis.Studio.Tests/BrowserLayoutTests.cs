@@ -173,6 +173,7 @@ public sealed class BrowserLayoutTests(StudioFixture studio) : IClassFixture<Stu
     using ChromeDriver browser = Browser();
     browser.Navigate().GoToUrl(studio.Server.Url);
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    Shot(browser, "studio-start.png");
     // Every visible, enabled control, in the order Tab goes through the page.
     var controls = ((IReadOnlyCollection<object>)Js(browser, """
       return [...document.querySelectorAll('button, input, select, a[href], summary')]
