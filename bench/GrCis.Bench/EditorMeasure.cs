@@ -14,7 +14,8 @@ namespace GrCis.Bench;
 /// inside each call's parentheses and a hover on each identifier (and a completion list without descriptions, and one
 /// entry described afterwards, as the page asks when an undescribed entry is selected): the first call (cold: metadata loading) and then
 /// median and 95th percentile of the warm calls, in ms, each against the 150 ms budget; and, as the floor
-/// measured in the same run, a bare Roslyn lookup of the names visible at the same positions.
+/// measured in the same run, a bare Roslyn lookup of the names visible at the same positions. Also the check of a draft
+/// (the whole text compiled as the script, <c>ScriptHost.Check</c>), which marks errors while typing.
 /// </summary>
 internal static class EditorMeasure
 {
@@ -40,6 +41,9 @@ internal static class EditorMeasure
     var signature = new List<double>();
     var hover = new List<double>();
     var floor = new List<double>();
+    var check = new List<double>();
+    using var host = new GrCis.Scripting.ScriptHost();
+    host.Check("scene.Intersectable = null;", Path.Combine(args[0], "Warm-up.cs"));
     foreach (string file in scripts)
     {
       string text = File.ReadAllText(file);
@@ -53,6 +57,9 @@ internal static class EditorMeasure
           describe.Add(Time(() => assistant.DescribeAsync(typed, typed.Length, list.Items[^1].Label).GetAwaiter().GetResult()));
         floor.Add(Time(() => assistant.LookupFloorAsync(typed, typed.Length).GetAwaiter().GetResult()));
       }
+      // A draft that differs from everything compiled before (a new comment), as each keystroke's text does.
+      for (int i = 0; i < 3; i++)
+        check.Add(Time(() => host.Check(text + $"\n// draft {i}\n", file)));
       foreach (int paren in Positions(text, c => c == '(').Take(20))
         signature.Add(Time(() => assistant.SignatureAsync(text, paren + 1).GetAwaiter().GetResult()));
       foreach (int start in Positions(text, char.IsUpper).Take(20))
@@ -67,6 +74,7 @@ internal static class EditorMeasure
     Report("signature help", signature, floor);
     Report("hover", hover, floor);
     Report("name lookup (floor)", floor, floor);
+    Report("check of a draft (compile)", check, floor);
     Console.WriteLine($"whole run {total.Elapsed.TotalSeconds:F1} s");
     return 0;
   }

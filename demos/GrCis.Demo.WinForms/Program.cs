@@ -18,7 +18,8 @@ static class Program
     Application.EnableVisualStyles();
     Application.SetCompatibleTextRenderingDefault(false);
 
-    using var scripts = new GrCis.Scripting.ScriptHost();
+    // Compiled scripts are kept between sessions in the platform's cache folder (GRCIS_NO_CACHE=1: not).
+    using var scripts = new GrCis.Scripting.ScriptHost(diskCache: GrCis.Scripting.Caching.ScriptCache.FromEnvironment());
     var problems = new List<string>();
     using DemoController controller = DemoController.FromCommandLine(args, scripts, problems);
     using var form = new MainForm(controller);

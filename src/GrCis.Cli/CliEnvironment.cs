@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using System.Threading;
+using GrCis.Scripting.Caching;
 
 namespace GrCis.Cli;
 
@@ -36,6 +37,13 @@ public sealed class CliEnvironment
 
   /// <summary>The environment variable that asks for <see cref="StackTraces"/>.</summary>
   public const string StackTraceVariable = "GRCIS_STACKTRACE";
+
+  /// <summary>
+  /// Where compiled scene scripts are kept between runs: by default the one the environment asks for
+  /// (<see cref="ScriptCache.FromEnvironment"/>: the platform's cache folder or <c>GRCIS_CACHE_DIR</c>; none with
+  /// <c>GRCIS_NO_CACHE=1</c>); null = none. <c>--no-cache</c> leaves it unused for one command.
+  /// </summary>
+  public ScriptCache? ScriptCache { get; init; } = ScriptCache.FromEnvironment();
 
   /// <summary>Scenes a test registers by name, tried before the resolver (the tests' animated scenes).</summary>
   internal Func<string, GrCis.Hosting.ISceneSource?>? ExtraScenes { get; init; }

@@ -15,16 +15,16 @@ public sealed class CompiledScript
 {
   readonly Func<object?[], Task<object?>> factory;
   // The script's file and its modules' files, by full path: where a runtime error may be located.
-  readonly Dictionary<string, InstrumentedSource> sources;
+  readonly Dictionary<string, SourceMap> sources;
   ScriptLoadContext? loadContext;
 
   internal CompiledScript(string path, string contentHash, Func<object?[], Task<object?>> factory,
-                          ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings, InstrumentedSource source,
+                          ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings, SourceMap source,
                           IReadOnlyList<ScriptModule> modules)
   {
-    sources = new Dictionary<string, InstrumentedSource>(RuntimeErrors.PathComparer) { [path] = source };
+    sources = new Dictionary<string, SourceMap>(RuntimeErrors.PathComparer) { [path] = source };
     foreach (ScriptModule m in modules)
-      foreach ((string file, InstrumentedSource s) in m.Sources)
+      foreach ((string file, SourceMap s) in m.Sources)
         sources.TryAdd(file, s);
     Path = path;
     ContentHash = contentHash;

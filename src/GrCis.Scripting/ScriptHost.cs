@@ -5,8 +5,8 @@ using System.Linq;
 using System.Security.Cryptography;
 using System.Text;
 using System.Threading;
+using GrCis.Scripting.Caching;
 using GrCis.Scripting.Compilation;
-using Microsoft.CodeAnalysis;
 using Rendering;
 using Utilities;
 
@@ -15,7 +15,8 @@ namespace GrCis.Scripting;
 /// <summary>
 /// Compiles and runs GrCis scene scripts. A script is compiled once per (path, content, modules) and
 /// cached (least recently used entries are evicted and their code unloaded); every further run, on any
-/// thread, executes the compiled code. Thread-safe.
+/// thread, executes the compiled code. With a <see cref="ScriptCache"/> the compiled code is also kept on
+/// disk, and a later process loads it instead of compiling. Thread-safe.
 /// </summary>
 public sealed class ScriptHost : IDisposable
 {
@@ -35,8 +36,13 @@ public sealed class ScriptHost : IDisposable
   /// a failed assertion cannot always name its line. Off by default: readable errors first, as a student's
   /// Debug build.
   /// </param>
-  public ScriptHost(int cacheCapacity = DefaultCacheCapacity, bool optimizeScripts = false)
+  /// <param name="diskCache">
+  /// Where compiled scripts and modules are kept between processes (see <see cref="ScriptCache"/>; front ends pass
+  /// <see cref="ScriptCache.FromEnvironment"/>); null compiles every script of a new process afresh.
+  /// </param>
+  public ScriptHost(int cacheCapacity = DefaultCacheCapacity, bool optimizeScripts = false, ScriptCache? diskCache = null)
   {
+    DiskCache = diskCache;
     // Modules are built with DEBUG defined: a failed Debug.Assert must warn, not end the process.
     Assertions.Install();
     CacheCapacity = cacheCapacity;
@@ -56,10 +62,13 @@ public sealed class ScriptHost : IDisposable
   /// <summary>Whether script code is compiled with optimisations (see the constructor).</summary>
   public bool OptimizeScripts { get; }
 
-  /// <summary>Number of script compilations this host has performed (cache hits do not count).</summary>
+  /// <summary>The compiled-script cache on disk this host reads and fills (null: none).</summary>
+  public ScriptCache? DiskCache { get; }
+
+  /// <summary>Number of script compilations this host has performed (hits of either cache do not count).</summary>
   public int CompilationCount => Volatile.Read(ref compilations);
 
-  /// <summary>Number of module compilations this host has performed.</summary>
+  /// <summary>Number of module compilations this host has performed (modules loaded from the disk cache do not count).</summary>
   public int ModuleCompilationCount => Volatile.Read(ref moduleCompilations);
 
   /// <summary>Compiled scripts currently held by the cache.</summary>
@@ -115,48 +124,28 @@ public sealed class ScriptHost : IDisposable
     if (dirs.Count == 0)
       throw new ArgumentException("No module folder given.", nameof(directories));
 
-    // Scene scripts kept beside the classes, and build output, are not module code.
-    var files = new List<string>();
-    var sources = new List<string>();
-    var trees = new List<SyntaxTree>();
-    var scripts = new List<string>();
+    // Every *.cs file outside build output, read once: which of them are scene scripts is decided by their text.
+    var texts = new Dictionary<string, string>(StringComparer.Ordinal);
+    var candidates = new List<ModuleFiles.Candidate>();
     foreach (string dir in dirs)
-    {
-      int before = files.Count, scriptsBefore = scripts.Count;
       foreach (string file in ModuleFiles.Candidates(dir))
       {
-        if (files.Contains(file) || scripts.Contains(file))
-          continue; // a folder inside another one given too
-        string text = File.ReadAllText(file);
-        SyntaxTree tree = ModuleFiles.Parse(file, text);
-        if (ModuleFiles.IsSceneScript(tree))
-          scripts.Add(file);
-        else
-        {
-          files.Add(file);
-          sources.Add(text);
-          trees.Add(tree);
-        }
+        if (!texts.TryGetValue(file, out string? text))
+          texts[file] = text = File.ReadAllText(file);
+        candidates.Add(new ModuleFiles.Candidate(dir, file, text));
       }
-      if (files.Count == before)
-        throw new ScriptCompilationException(dir, new[] { new ScriptDiagnostic(dir, 1, 1, "error", "GRCIS001",
-          scripts.Count == scriptsBefore ? "the module folder holds no *.cs file"
-                             : $"the module folder holds only scene scripts ({scripts.Count - scriptsBefore}), no classes; give a script as the scene, not as --module") });
-    }
-
-    var sb = new StringBuilder();
-    for (int i = 0; i < files.Count; i++)
-      sb.Append(files[i]).Append('\0').Append(sources[i]).Append('\0');
 
     lock (sync)
     {
-      string hash = Hash(sb.ToString());
-      ScriptModule? existing = modules.FirstOrDefault(m => m.ContentHash == hash);
+      string contentHash = CacheKeys.ModuleContent(candidates);
+      ScriptModule? existing = modules.FirstOrDefault(m => m.ContentHash == contentHash);
       if (existing != null)
         return existing;
-      ScriptModule module = ScriptCompiler.CompileModule(dirs, files, trees, hash, modules.ToArray(), OptimizeScripts);
-      module.SkippedScripts = scripts;
-      Interlocked.Increment(ref moduleCompilations);
+      ScriptModule[] earlier = modules.ToArray();
+      string key = CacheKeys.Module(contentHash, earlier, OptimizeScripts);
+      (ScriptModule module, bool compiled) = CachedBuilds.Module(DiskCache, dirs, candidates, contentHash, key, earlier, OptimizeScripts);
+      if (compiled)
+        Interlocked.Increment(ref moduleCompilations);
       modules.Add(module);
       return module;
     }
@@ -176,7 +165,26 @@ public sealed class ScriptHost : IDisposable
 
   /// <summary>Compiles script text; <paramref name="path"/> names it in messages and stack traces.</summary>
   /// <exception cref="ScriptCompilationException">The script did not compile; lists every error.</exception>
-  public CompiledScript CompileSource(string source, string path)
+  public CompiledScript CompileSource(string source, string path) => CompileSource(source, path, DiskCache);
+
+  /// <summary>
+  /// The compiler's errors and warnings for script text, without running it (an editor's check as the user types). The
+  /// compilation is kept in memory, so running the same text next reuses it, but not written to the disk cache: a checked
+  /// text is mostly a draft.
+  /// </summary>
+  public IReadOnlyList<ScriptDiagnostic> Check(string source, string path)
+  {
+    try
+    {
+      return CompileSource(source, path, disk: null).Warnings;
+    }
+    catch (ScriptCompilationException e)
+    {
+      return e.Diagnostics;
+    }
+  }
+
+  CompiledScript CompileSource(string source, string path, ScriptCache? disk)
   {
     ArgumentNullException.ThrowIfNull(source);
     ArgumentException.ThrowIfNullOrEmpty(path);
@@ -187,13 +195,16 @@ public sealed class ScriptHost : IDisposable
     lock (sync)
     {
       ScriptModule[] mods = modules.ToArray();
-      key = Hash(full + "\0" + source + "\0" + string.Join("|", mods.Select(m => m.ContentHash)));
+      key = Hash(full + "\0" + source + "\0" + string.Join("|", mods.Select(m => m.CacheKey)));
       if (!cache.TryGet(key, out entry))
       {
+        string memoryKey = key;
         entry = new Lazy<CompiledScript>(() =>
         {
-          Interlocked.Increment(ref compilations);
-          return ScriptCompiler.CompileScript(full, source, key, mods, OptimizeScripts);
+          (CompiledScript script, bool compiled) = CachedBuilds.Script(disk, full, source, memoryKey, mods, OptimizeScripts);
+          if (compiled)
+            Interlocked.Increment(ref compilations);
+          return script;
         }, LazyThreadSafetyMode.ExecutionAndPublication);
         cache.Add(key, entry);
       }

@@ -1,7 +1,6 @@
 using System.Collections.Generic;
 using System.Reflection;
 using GrCis.Scripting.Compilation;
-using Microsoft.CodeAnalysis;
 
 namespace GrCis.Scripting;
 
@@ -12,9 +11,9 @@ namespace GrCis.Scripting;
 /// </summary>
 public sealed class ScriptModule
 {
-  internal ScriptModule(IReadOnlyList<string> directories, IReadOnlyList<string> files, string contentHash, Assembly assembly,
-                        MetadataReference reference, ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings,
-                        IReadOnlyDictionary<string, InstrumentedSource> sources)
+  internal ScriptModule(IReadOnlyList<string> directories, IReadOnlyList<string> files, string contentHash, string cacheKey, Assembly assembly,
+                        byte[] image, ScriptLoadContext loadContext, IReadOnlyList<ScriptDiagnostic> warnings,
+                        IReadOnlyDictionary<string, SourceMap> sources)
   {
     Directories = directories;
     Directory = directories[0];
@@ -22,7 +21,8 @@ public sealed class ScriptModule
     Files = files;
     ContentHash = contentHash;
     Assembly = assembly;
-    Reference = reference;
+    CacheKey = cacheKey;
+    Image = image;
     LoadContext = loadContext;
     Warnings = warnings;
   }
@@ -36,7 +36,7 @@ public sealed class ScriptModule
   /// <summary>The source files compiled (full paths, ordinal order).</summary>
   public IReadOnlyList<string> Files { get; }
 
-  /// <summary>SHA-256 over the files' paths and contents (hex).</summary>
+  /// <summary>SHA-256 (hex) over the paths and contents of the folders' <c>*.cs</c> files (the scene scripts left out too).</summary>
   public string ContentHash { get; }
 
   /// <summary>The loaded module assembly.</summary>
@@ -50,12 +50,20 @@ public sealed class ScriptModule
 
   public string AssemblyName => Assembly.GetName().Name!;
 
-  internal MetadataReference Reference { get; }
+  /// <summary>
+  /// The module's identity in the compiled-script cache: its folders, every file's path and content, the modules
+  /// compiled before it, the library and the compiler options (see <see cref="Caching.CacheKeys"/>). Its assembly is
+  /// named after it, so a script compiled against it finds it again in another process.
+  /// </summary>
+  internal string CacheKey { get; }
+
+  /// <summary>The assembly's bytes: scripts compiled later reference them.</summary>
+  internal byte[] Image { get; }
 
   internal ScriptLoadContext LoadContext { get; }
 
   /// <summary>The compiled files, to map a stack frame back to the user's line.</summary>
-  internal IReadOnlyDictionary<string, InstrumentedSource> Sources { get; }
+  internal IReadOnlyDictionary<string, SourceMap> Sources { get; }
 
   /// <summary>Types compiled under a suffixed name because the library has one of the same full name (scripts get aliases).</summary>
   internal IReadOnlyList<ShadowedLibraryTypes.Renamed> Renamed { get; init; } = [];

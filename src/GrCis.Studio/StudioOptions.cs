@@ -20,6 +20,9 @@ public sealed record StudioOptions
   /// <summary>Leave the built-in scenes out of the scene list (GrCis's <c>-nodefault</c>).</summary>
   public bool NoDefault { get; init; }
 
+  /// <summary>Where compiled scene scripts are kept between runs (null: compiled afresh in each studio).</summary>
+  public GrCis.Scripting.Caching.ScriptCache? ScriptCache { get; init; }
+
   /// <summary>True when <see cref="Host"/> is a loopback address (or <c>localhost</c>).</summary>
   public bool IsLoopback => Host is "127.0.0.1" or "localhost" or "::1" or "[::1]";
 

@@ -58,7 +58,7 @@ public sealed class StudioServer : IAsyncDisposable
     }
     if (options.NoDefault)
       args.Add("-nodefault");
-    var scripts = new GrCis.Scripting.ScriptHost();
+    var scripts = new GrCis.Scripting.ScriptHost(diskCache: options.ScriptCache);
     var files = new AllowedFiles(options.Paths);
     var controller = DemoController.FromCommandLine(args, scripts, problems, files.Allows);
     var session = new StudioSession(controller) { Scripts = scripts };

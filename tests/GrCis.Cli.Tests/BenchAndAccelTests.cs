@@ -58,6 +58,9 @@ public class BenchAndAccelTests
       Assert.Equal(2, c.GetProperty("threads").GetInt32());
     }
     Assert.Contains("faithful", run.Error);
+    // Only the mesh case reports its triangle count (the mesh-size plot's x axis).
+    Assert.Equal(JsonValueKind.Null, cases[0].GetProperty("triangles").ValueKind);
+    Assert.InRange(cases[2].GetProperty("triangles").GetInt64(), 1_800, 2_200);
   }
 
   [Fact]

@@ -34,7 +34,7 @@ public sealed partial class BrowserTests
     Until(browser, () => browser.FindElements(By.XPath("//ul[contains(@class,'CodeMirror-hints')]/li[starts-with(., 'Intersectable')]")).Count == 1,
           "the scene's members in the completion list");
     Until(browser, () => Shown("assistDoc") && Text("assistDoc").Length > 0, "the selected entry's description");
-    Shot(browser, "studio-editor-completion.png");
+    Shot(browser, "studio-editor-completion.png", docs: true);
     input.SendKeys(Keys.Escape);
     Until(browser, () => browser.FindElements(By.CssSelector(".CodeMirror-hints")).Count == 0, "the list closed");
 
@@ -42,7 +42,7 @@ public sealed partial class BrowserTests
     Js(browser, "document.querySelector('#editor .CodeMirror').CodeMirror.setValue(arguments[0]);", saved);
     TypeAtEnd("var m = new PhongMaterial(");
     Until(browser, () => Shown("assistSignature") && Text("assistSignature").Contains("PhongMaterial(", StringComparison.Ordinal), "the signature");
-    Shot(browser, "studio-editor-signature.png");
+    Shot(browser, "studio-editor-signature.png", docs: true);
     input.SendKeys(Keys.Escape);
 
     // Hovering the type name shows its doc comment.
@@ -56,7 +56,7 @@ public sealed partial class BrowserTests
     TypeAtEnd("int count = \"many\";");
     Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror-lint-mark-error")).Count > 0 &&
                          browser.FindElements(By.CssSelector("#editor .CodeMirror-lint-marker-error")).Count > 0, "the error marked");
-    Shot(browser, "studio-editor-error-while-typing.png");
+    Shot(browser, "studio-editor-error-while-typing.png", docs: true);
     Assert.Equal(saved, File.ReadAllText(path));
   }
 }

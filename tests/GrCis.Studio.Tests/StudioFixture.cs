@@ -23,6 +23,11 @@ public sealed class StudioFixture : IAsyncLifetime
 
   public string ScriptsFolder => Path.Combine(Folder, "scripts");
 
+  /// <summary>The studio's compiled-script cache, in the fixture's folder (the studio reads and fills it as <c>grcis studio</c> does).</summary>
+  public string CacheFolder => Path.Combine(Folder, "cache");
+
+  public GrCis.Scripting.Caching.ScriptCache Cache { get; private set; } = null!;
+
   public async Task InitializeAsync()
   {
     Directory.CreateDirectory(ScriptsFolder);
@@ -31,20 +36,30 @@ public sealed class StudioFixture : IAsyncLifetime
     Directory.CreateDirectory(Path.Combine(ScriptsFolder, "more"));
     File.WriteAllText(Path.Combine(ScriptsFolder, "more", "Flags.cs"), "Rendering.Scenes.Flags(scene);\n");
     File.WriteAllText(Path.Combine(Folder, "Outside.cs"), "Rendering.Scenes.Flags(scene);\n");
-    Server = await StudioServer.StartAsync(new StudioOptions { Paths = [ScriptsFolder] }, new List<string>());
-    var root = new Uri(Server.Url).GetLeftPart(UriPartial.Authority);
-    Client = new HttpClient { BaseAddress = new Uri(root) };
-    Client.DefaultRequestHeaders.Add(AccessGuard.HeaderName, Server.Token);
-    Stranger = new HttpClient { BaseAddress = new Uri(root) };
+    Cache = new GrCis.Scripting.Caching.ScriptCache(CacheFolder);
+    Server = await StudioServer.StartAsync(new StudioOptions { Paths = [ScriptsFolder], ScriptCache = Cache }, new List<string>());
+    Client = ClientOf(Server);
+    Stranger = new HttpClient { BaseAddress = Client.BaseAddress };
+  }
+
+  /// <summary>A client of <paramref name="server"/> that knows its token.</summary>
+  public static HttpClient ClientOf(StudioServer server)
+  {
+    var client = new HttpClient { BaseAddress = new Uri(new Uri(server.Url).GetLeftPart(UriPartial.Authority)) };
+    client.DefaultRequestHeaders.Add(AccessGuard.HeaderName, server.Token);
+    return client;
   }
 
   /// <summary>Polls <c>GET <paramref name="path"/></c> until <paramref name="done"/> holds for its JSON (60 s at most).</summary>
-  public async Task<JsonElement> PollUntil(string path, Func<JsonElement, bool> done, string what)
+  public Task<JsonElement> PollUntil(string path, Func<JsonElement, bool> done, string what) => PollUntil(Client, path, done, what);
+
+  /// <summary>As <see cref="PollUntil(string, Func{JsonElement, bool}, string)"/>, asking <paramref name="client"/>'s studio.</summary>
+  public static async Task<JsonElement> PollUntil(HttpClient client, string path, Func<JsonElement, bool> done, string what)
   {
     var deadline = DateTime.UtcNow + TimeSpan.FromSeconds(60);
     while (DateTime.UtcNow < deadline)
     {
-      JsonElement answer = await Client.GetFromJsonAsync<JsonElement>(path);
+      JsonElement answer = await client.GetFromJsonAsync<JsonElement>(path);
       if (done(answer))
         return answer;
       await Task.Delay(50);
@@ -53,11 +68,14 @@ public sealed class StudioFixture : IAsyncLifetime
   }
 
   /// <summary>Asks for a render and waits until it has finished; returns the status then.</summary>
-  public async Task<JsonElement> RenderAndWait(object body)
+  public Task<JsonElement> RenderAndWait(object body) => RenderAndWait(Client, body);
+
+  /// <summary>As <see cref="RenderAndWait(object)"/>, in <paramref name="client"/>'s studio.</summary>
+  public static async Task<JsonElement> RenderAndWait(HttpClient client, object body)
   {
-    using HttpResponseMessage started = await Client.PostAsJsonAsync("/api/render", body);
+    using HttpResponseMessage started = await client.PostAsJsonAsync("/api/render", body);
     Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
-    return await PollUntil("/api/status",
+    return await PollUntil(client, "/api/status",
       s => !s.GetProperty("rendering").GetBoolean() && s.GetProperty("statistics").GetString() is { Length: > 0 }, "the end of the render");
   }
 

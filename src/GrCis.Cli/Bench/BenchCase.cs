@@ -13,4 +13,7 @@ public sealed record BenchCase(string Id, string Name, Func<IRayScene> Build, Im
 {
   /// <summary>What the scene holds (members, triangles …), for the report.</summary>
   public string Description { get; init; } = "";
+
+  /// <summary>For mesh cases: the mesh's triangle count, asked after <see cref="Build"/> (an OBJ file is read there).</summary>
+  public Func<long>? Triangles { get; init; }
 }

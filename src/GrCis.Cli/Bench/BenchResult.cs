@@ -8,6 +8,9 @@ public sealed record BenchResult
   public string Description { get; init; } = "";
   public required string Size { get; init; }
   public int Spp { get; init; }
+
+  /// <summary>Triangles of the case's mesh (mesh cases only, else null): the x axis of mesh-size scaling.</summary>
+  public long? Triangles { get; init; }
   public int Threads { get; init; }
   /// <summary>Wall-clock seconds of the timed render.</summary>
   public double Seconds { get; init; }

@@ -3,12 +3,13 @@ using System.CommandLine;
 using GrCis.Cli.SceneSources;
 
 using GrCis.Hosting;
+using GrCis.Scripting.Caching;
 
 namespace GrCis.Cli.Commands;
 
 /// <summary>
 /// The options commands share for scene scripts: <c>--param</c> (the script's <c>param</c> text),
-/// <c>--module DIR</c> (repeatable) and <c>--time T</c>. Used by <c>render</c> and <c>info</c>.
+/// <c>--module DIR</c> (repeatable), <c>--no-cache</c> and <c>--time T</c>. Used by <c>render</c>, <c>animate</c> and <c>info</c>.
 /// </summary>
 public sealed class ScriptOptions
 {
@@ -31,11 +32,17 @@ public sealed class ScriptOptions
     HelpName = "T",
   };
 
+  public Option<bool> NoCache { get; } = new("--no-cache")
+  {
+    Description = $"Compile the scene script and its modules afresh, without reading or writing the compiled-script cache (also {ScriptCache.DisableVariable}=1)",
+  };
+
   /// <summary>Adds the options to <paramref name="cmd"/> (<paramref name="withTime"/>: also <c>--time</c>).</summary>
   public void AddTo(Command cmd, bool withTime = true)
   {
     cmd.Options.Add(Param);
     cmd.Options.Add(Modules);
+    cmd.Options.Add(NoCache);
     if (withTime)
       cmd.Options.Add(TimeOption);
   }
@@ -50,5 +57,6 @@ public sealed class ScriptOptions
 
   /// <summary>The scene source for the scene argument, with the script options applied.</summary>
   public ISceneSource Resolve(ParseResult parse, string? scene, CliEnvironment env) =>
-    new SceneResolver(env.WorkingDirectory).Resolve(scene, parse.GetValue(Param), parse.GetValue(Modules) ?? Array.Empty<string>());
+    new SceneResolver(env.WorkingDirectory).Resolve(scene, parse.GetValue(Param), parse.GetValue(Modules) ?? Array.Empty<string>(),
+                                                    parse.GetValue(NoCache) ? null : env.ScriptCache);
 }

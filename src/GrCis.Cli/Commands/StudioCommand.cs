@@ -53,6 +53,7 @@ public sealed class StudioCommand
       Port = p,
       Paths = parse.GetValue(paths) ?? Array.Empty<string>(),
       NoDefault = parse.GetValue(noDefault),
+      ScriptCache = env.ScriptCache,
     };
     foreach (string path in options.Paths)
       if (!File.Exists(path) && !Directory.Exists(path))

@@ -4,6 +4,7 @@ using System.IO;
 using Rendering;
 
 using GrCis.Hosting;
+using GrCis.Scripting.Caching;
 
 namespace GrCis.Cli.SceneSources;
 
@@ -29,11 +30,12 @@ public sealed class SceneResolver
   public ISceneSource Resolve(string? spec) => Resolve(spec, null, Array.Empty<string>());
 
   /// <summary>As <see cref="Resolve(string?)"/>; a script gets <paramref name="param"/> and the module folders.</summary>
+  /// <param name="diskCache">Where a script's compiled code is kept between runs (null: compiled afresh).</param>
   /// <exception cref="UsageException">Unknown scene, missing script or module folder, or script options for a built-in scene.</exception>
-  public ISceneSource Resolve(string? spec, string? param, IReadOnlyList<string> modules)
+  public ISceneSource Resolve(string? spec, string? param, IReadOnlyList<string> modules, ScriptCache? diskCache = null)
   {
     if (!string.IsNullOrWhiteSpace(spec) && !spec.StartsWith('-') && IsScriptPath(spec))
-      return ResolveScript(spec, param, modules);
+      return ResolveScript(spec, param, modules, diskCache);
     if (modules.Count > 0)
       throw new UsageException("--module works only with a scene script (*.cs)");
     return ResolveBuiltIn(spec, param);
@@ -84,7 +86,7 @@ public sealed class SceneResolver
 
   static bool IsScriptPath(string spec) => spec.EndsWith(".cs", StringComparison.OrdinalIgnoreCase);
 
-  ISceneSource ResolveScript(string spec, string? param, IReadOnlyList<string> modules)
+  ISceneSource ResolveScript(string spec, string? param, IReadOnlyList<string> modules, ScriptCache? diskCache)
   {
     string path = Path.GetFullPath(spec, workingDirectory);
     if (Directory.Exists(path))
@@ -99,7 +101,7 @@ public sealed class SceneResolver
         throw new UsageException($"module folder '{m}' not found (looked for '{dir}')");
       dirs.Add(dir);
     }
-    return new ScriptSceneSource(path, param, dirs);
+    return new ScriptSceneSource(path, param, dirs, diskCache);
   }
 
   static IEnumerable<string> Quote(IEnumerable<string> names)

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using GrCis.Scripting;
+using GrCis.Scripting.Caching;
 using Rendering;
 
 namespace GrCis.Hosting;
@@ -23,7 +24,7 @@ public sealed class ScriptSceneSource : ISceneSource, IDisposable
   /// <param name="path">Full path of an existing script file.</param>
   /// <param name="param">The <c>--param</c> text passed to the script as <c>param</c>.</param>
   /// <param name="modules">Full paths of existing module folders, in the order given.</param>
-  public ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules) : this(path, param, modules, null)
+  public ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules) : this(path, param, modules, (ScriptCache?)null)
   {
   }
 
@@ -35,12 +36,26 @@ public sealed class ScriptSceneSource : ISceneSource, IDisposable
   /// source per render); null = one of its own, disposed with the source.
   /// </param>
   public ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules, ScriptHost? host)
+    : this(path, param, modules, host ?? new ScriptHost(cacheCapacity: 4), ownsHost: host == null)
+  {
+  }
+
+  /// <param name="path">Full path of an existing script file.</param>
+  /// <param name="param">The text passed to the script as <c>param</c>.</param>
+  /// <param name="modules">Full paths of existing module folders, in the order given.</param>
+  /// <param name="diskCache">The compiled-script cache the source's own host reads and fills (null: none).</param>
+  public ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules, ScriptCache? diskCache)
+    : this(path, param, modules, new ScriptHost(cacheCapacity: 4, diskCache: diskCache), ownsHost: true)
+  {
+  }
+
+  ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules, ScriptHost host, bool ownsHost)
   {
     Path = path;
     Param = param ?? "";
     this.modules = modules;
-    ownsHost = host == null;
-    this.host = host ?? new ScriptHost(cacheCapacity: 4);
+    this.ownsHost = ownsHost;
+    this.host = host;
   }
 
   /// <summary>Full path of the script.</summary>

@@ -6,8 +6,8 @@ using Microsoft.CodeAnalysis;
 namespace GrCis.Scripting.Compilation;
 
 /// <summary>
-/// Metadata references every script and module compiles against: the shared framework, GrCis.Rendering,
-/// GrCis.Compatibility (GrCis's classic helpers: Util, Arith, histograms ...) and GrCis.Scripting. Created once per process: Roslyn keys its metadata cache by reference object,
+/// Metadata references every script and module compiles against: the shared framework and the
+/// <see cref="LibraryAssemblies"/>. Created once per process: Roslyn keys its metadata cache by reference object,
 /// so sharing them keeps repeated compilations from reloading ~170 assemblies' metadata.
 /// </summary>
 internal static class FrameworkReferences
@@ -32,7 +32,7 @@ internal static class FrameworkReferences
         list.Add(MetadataReference.CreateFromFile(file));
     }
 
-    foreach (System.Reflection.Assembly a in new[] { typeof(Rendering.IRayScene).Assembly, typeof(Utilities.Util).Assembly, typeof(ScriptGlobals).Assembly })
+    foreach (System.Reflection.Assembly a in LibraryAssemblies.All)
       if (seen.Add(a.GetName().Name!))
         list.Add(MetadataReference.CreateFromFile(a.Location));
 

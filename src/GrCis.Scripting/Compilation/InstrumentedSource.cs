@@ -59,37 +59,19 @@ internal sealed class InstrumentedSource
   }
 
   /// <summary>The offset in the original text of an offset in the instrumented one (inside an insertion: where it was inserted).</summary>
-  public int ToOriginal(int offset)
+  public int ToOriginal(int offset) => SourceMap.ToOriginal(insertions, offset, Original.Length);
+
+  /// <summary>The mapping as plain numbers, for runtime errors after the compilation (and in the compiled-script cache).</summary>
+  public SourceMap ToMap()
   {
-    int shift = 0;
-    foreach ((int position, int length) in insertions)
+    static int[] Starts(SourceText text)
     {
-      int start = position + shift;
-      if (offset < start)
-        break;
-      if (offset < start + length)
-        return position;
-      shift += length;
+      var starts = new int[text.Lines.Count];
+      for (int i = 0; i < starts.Length; i++)
+        starts[i] = text.Lines[i].Start;
+      return starts;
     }
-    return Math.Clamp(offset - shift, 0, Original.Length);
-  }
-
-  /// <summary>0-based line and character in the original text of a 0-based position in the instrumented one.</summary>
-  public LinePosition ToOriginal(LinePosition position)
-  {
-    if (position.Line >= Instrumented.Lines.Count)
-      return position;
-    TextLine line = Instrumented.Lines[position.Line];
-    int offset = Math.Min(line.Start + position.Character, line.EndIncludingLineBreak);
-    return Original.Lines.GetLinePosition(ToOriginal(offset));
-  }
-
-  /// <summary>1-based column in the original text of a 1-based line and column of the instrumented one (0 = unknown stays 0).</summary>
-  public int OriginalColumn(int line, int column)
-  {
-    if (line <= 0 || column <= 0)
-      return column;
-    return ToOriginal(new LinePosition(line - 1, column - 1)).Character + 1;
+    return new SourceMap(Original.Length, Starts(Original), Instrumented.Length, Starts(Instrumented), insertions);
   }
 
   /// <summary>

@@ -17,20 +17,15 @@ namespace GrCis.Scripting.Compilation;
 /// </summary>
 internal static class ModuleFiles
 {
+  /// <summary>A <c>*.cs</c> file found in a module folder, with its text (read once: for the cache key, then to compile).</summary>
+  public sealed record Candidate(string Directory, string File, string Text);
+
   /// <summary>Build output and tool folders of a C# project (generated AssemblyInfo files would clash).</summary>
   static readonly string[] skippedFolders = { "bin", "obj", ".git", ".vs", ".idea", "node_modules" };
 
-  /// <summary>
-  /// How module files are parsed: regular C# (not the script dialect) with <c>DEBUG</c> and <c>TRACE</c>
-  /// defined, as the Debug build of a student's GrCis project defined them (<c>#if DEBUG</c> blocks and
-  /// <c>Debug.Assert</c> calls are compiled, see <see cref="Assertions"/>).
-  /// </summary>
-  public static readonly CSharpParseOptions ParseOptions =
-    new CSharpParseOptions(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Regular).WithPreprocessorSymbols("DEBUG", "TRACE");
-
   /// <summary>A module file's text, parsed once: to tell scene scripts apart and then to compile.</summary>
   public static SyntaxTree Parse(string path, string source) =>
-    CSharpSyntaxTree.ParseText(SourceText.From(source, Encoding.UTF8), ParseOptions, path);
+    CSharpSyntaxTree.ParseText(SourceText.From(source, Encoding.UTF8), ScriptCompiler.ModuleParseOptions, path);
 
   /// <summary>Every <c>*.cs</c> below <paramref name="directory"/> outside build-output folders, in ordinal order.</summary>
   public static string[] Candidates(string directory)

@@ -12,7 +12,7 @@ internal static class RuntimeErrors
   public static StringComparer PathComparer => OperatingSystem.IsWindows() ? StringComparer.OrdinalIgnoreCase : StringComparer.Ordinal;
 
   /// <summary>The exception wrapped with the place in the user's code that threw; without one, with the script's path and no line.</summary>
-  public static ScriptRuntimeException Wrap(Exception ex, string scriptPath, IReadOnlyDictionary<string, InstrumentedSource> sources)
+  public static ScriptRuntimeException Wrap(Exception ex, string scriptPath, IReadOnlyDictionary<string, SourceMap> sources)
   {
     if (ex is ScriptRuntimeException sre && sources.ContainsKey(sre.Path))
       return sre;
@@ -23,7 +23,7 @@ internal static class RuntimeErrors
   /// The exception wrapped with the innermost frame of <paramref name="ex"/> (or of an inner exception) that lies in
   /// one of <paramref name="sources"/> (the script and its modules), or null when none does.
   /// </summary>
-  public static ScriptRuntimeException? Locate(Exception ex, IReadOnlyDictionary<string, InstrumentedSource> sources)
+  public static ScriptRuntimeException? Locate(Exception ex, IReadOnlyDictionary<string, SourceMap> sources)
   {
     for (Exception? e = ex; e != null; e = e.InnerException)
     {
@@ -34,7 +34,7 @@ internal static class RuntimeErrors
         if (file == null || f.GetFileLineNumber() <= 0)
           continue;
         string full = Path.GetFullPath(file);
-        if (!sources.TryGetValue(full, out InstrumentedSource? source))
+        if (!sources.TryGetValue(full, out SourceMap? source))
           continue;
         int line = f.GetFileLineNumber();
         // The exception that passed through the user's line (not a wrapper the renderer added around it).

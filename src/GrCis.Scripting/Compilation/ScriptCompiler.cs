@@ -3,10 +3,9 @@ using System.Collections.Generic;
 using System.Collections.Immutable;
 using System.IO;
 using System.Linq;
-using System.Reflection;
+using System.Runtime.CompilerServices;
 using System.Text;
 using System.Threading;
-using System.Threading.Tasks;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
 using Microsoft.CodeAnalysis.Emit;
@@ -38,7 +37,16 @@ internal static class ScriptCompiler
   static readonly CSharpParseOptions scriptParseOptions =
     new(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Script);
 
-  static readonly CSharpParseOptions moduleParseOptions = ModuleFiles.ParseOptions;
+  /// <summary>
+  /// How module files are parsed: regular C# (not the script dialect) with <c>DEBUG</c> and <c>TRACE</c>
+  /// defined, as the Debug build of a student's GrCis project defined them (<c>#if DEBUG</c> blocks and
+  /// <c>Debug.Assert</c> calls are compiled, see <see cref="Assertions"/>).
+  /// </summary>
+  public static readonly CSharpParseOptions ModuleParseOptions =
+    new CSharpParseOptions(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Regular).WithPreprocessorSymbols("DEBUG", "TRACE");
+
+  // Roslyn keys its metadata cache by reference object: one reference per module, made when a script first needs it.
+  static readonly ConditionalWeakTable<ScriptModule, MetadataReference> moduleReferences = new();
 
   static readonly EmitOptions emitOptions = new(debugInformationFormat: DebugInformationFormat.PortablePdb);
 
@@ -51,7 +59,9 @@ internal static class ScriptCompiler
   static readonly ImmutableDictionary<string, ReportDiagnostic> QuietWarnings =
     ImmutableDictionary<string, ReportDiagnostic>.Empty.Add("CS9191", ReportDiagnostic.Suppress);
 
-  public static CompiledScript CompileScript(string path, string source, string key, IReadOnlyList<ScriptModule> modules, bool optimize)
+  /// <summary>Compiles a scene script to an image (not loaded yet: see <see cref="ScriptLoader"/>).</summary>
+  /// <param name="key">Its key in the host's memory cache (part of the assembly name).</param>
+  public static ScriptImage CompileScript(string path, string source, string key, IReadOnlyList<ScriptModule> modules, bool optimize)
   {
     int nul = source.IndexOf('\0', StringComparison.Ordinal);
     if (nul >= 0)
@@ -96,28 +106,53 @@ internal static class ScriptCompiler
 
     IMethodSymbol entry = compilation.GetEntryPoint(CancellationToken.None)
       ?? throw new InvalidOperationException($"{path}: the script compilation has no entry point.");
-    var context = new ScriptLoadContext(assemblyName, ModuleMap(modules));
-    Assembly assembly = context.LoadFromStream(pe, pdb);
     string typeName = entry.ContainingType.MetadataName;
     if (entry.ContainingNamespace is { IsGlobalNamespace: false } ns)
       typeName = ns.ToDisplayString() + "." + typeName;
-    MethodInfo method = assembly.GetType(typeName, throwOnError: true)!.GetMethod(entry.MetadataName, BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Static)
-      ?? throw new InvalidOperationException($"{path}: the script entry point {entry.MetadataName} was not found.");
-    var factory = method.CreateDelegate<Func<object?[], Task<object?>>>();
-    return new CompiledScript(path, key, factory, context, warnings, instrumented, modules);
+    return new ScriptImage(assemblyName, pe.ToArray(), pdb.ToArray(), typeName, entry.MetadataName, warnings, instrumented.ToMap());
   }
 
-  /// <param name="parsed">The files' trees, parsed with <see cref="ModuleFiles.Parse"/>.</param>
+  /// <summary>
+  /// Compiles module folders to one image (not loaded yet: see <see cref="ScriptLoader"/>). Scene scripts kept among
+  /// the files are left out; a folder with nothing else is an error (GRCIS001).
+  /// </summary>
   /// <param name="directories">The module folders compiled together (one assembly, so they may use each other).</param>
-  public static ScriptModule CompileModule(IReadOnlyList<string> directories, IReadOnlyList<string> files, IReadOnlyList<SyntaxTree> parsed,
-                                           string hash, IReadOnlyList<ScriptModule> earlier, bool optimize)
+  /// <param name="candidates">Every <c>*.cs</c> file of each folder (<see cref="ModuleFiles.Candidates"/>) with its text.</param>
+  /// <param name="cacheKey">The module's key in the compiled-script cache; its assembly is named after it.</param>
+  public static ModuleImage CompileModule(IReadOnlyList<string> directories, IReadOnlyList<ModuleFiles.Candidate> candidates,
+                                          string cacheKey, IReadOnlyList<ScriptModule> earlier, bool optimize)
   {
     string directory = directories[0];
+    // Scene scripts kept beside the classes are not module code.
+    var files = new List<string>();
+    var parsed = new List<SyntaxTree>();
+    var scripts = new List<string>();
+    foreach (string dir in directories)
+    {
+      int before = files.Count, scriptsBefore = scripts.Count;
+      foreach (ModuleFiles.Candidate c in candidates)
+      {
+        if (c.Directory != dir || files.Contains(c.File) || scripts.Contains(c.File))
+          continue; // another folder's file, or one of a folder inside another one given too
+        SyntaxTree tree = ModuleFiles.Parse(c.File, c.Text);
+        if (ModuleFiles.IsSceneScript(tree))
+          scripts.Add(c.File);
+        else
+        {
+          files.Add(c.File);
+          parsed.Add(tree);
+        }
+      }
+      if (files.Count == before)
+        throw new ScriptCompilationException(dir, new[] { new ScriptDiagnostic(dir, 1, 1, "error", "GRCIS001",
+          scripts.Count == scriptsBefore ? "the module folder holds no *.cs file"
+                             : $"the module folder holds only scene scripts ({scripts.Count - scriptsBefore}), no classes; give a script as the scene, not as --module") });
+    }
     var trees = new List<SyntaxTree>(files.Count);
     var instrumented = new Dictionary<SyntaxTree, InstrumentedSource>();
     for (int i = 0; i < files.Count; i++)
     {
-      (SyntaxTree tree, InstrumentedSource source) = Instrument(parsed[i], moduleParseOptions);
+      (SyntaxTree tree, InstrumentedSource source) = Instrument(parsed[i], ModuleParseOptions);
       trees.Add(tree);
       instrumented[tree] = source;
     }
@@ -136,28 +171,25 @@ internal static class ScriptCompiler
     // as scripts import it; a file's own types still win over imported ones.
     // Types an earlier module compiled under a suffixed name (see ShadowedLibraryTypes) keep their plain name here too.
     string imports = ModuleImports + string.Concat(earlier.SelectMany(m => m.Renamed).Select(r => "global " + r.Alias + "\n"));
-    trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(imports, Encoding.UTF8), moduleParseOptions, "GrCisModuleImports.g.cs"));
+    trees.Add(CSharpSyntaxTree.ParseText(SourceText.From(imports, Encoding.UTF8), ModuleParseOptions, "GrCisModuleImports.g.cs"));
 
     string dirName = new string(Path.GetFileName(directory.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar))
       .Select(c => char.IsLetterOrDigit(c) ? c : '_').ToArray());
-    string assemblyName = $"GrCisModule{Interlocked.Increment(ref serial)}_{dirName}_{hash[..12]}";
+    string assemblyName = $"GrCisModule_{dirName}_{cacheKey[..16]}";
     CSharpCompilation compilation = CSharpCompilation.Create(assemblyName, trees, References(earlier), options);
 
     var removed = new List<MissingNamespaces.Removed>();
-    compilation = DropMissingNamespaces(compilation, instrumented, moduleParseOptions, removed);
+    compilation = DropMissingNamespaces(compilation, instrumented, ModuleParseOptions, removed);
     var overrides = new List<OverrideAccess.Changed>();
-    compilation = OverrideAccess.Normalize(compilation, instrumented, moduleParseOptions, overrides);
-    compilation = DataFileCalls.Rewrite(compilation, instrumented, moduleParseOptions);
+    compilation = OverrideAccess.Normalize(compilation, instrumented, ModuleParseOptions, overrides);
+    compilation = DataFileCalls.Rewrite(compilation, instrumented, ModuleParseOptions);
     var shadowed = new List<ShadowedLibraryTypes.Renamed>();
     var partials = new List<ScriptDiagnostic>();
-    compilation = ShadowedLibraryTypes.Rename(compilation, instrumented, moduleParseOptions, shadowed, partials);
+    compilation = ShadowedLibraryTypes.Rename(compilation, instrumented, ModuleParseOptions, shadowed, partials);
     (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides, partials);
     warnings.AddRange(ShadowedLibraryTypes.Report(shadowed));
-    byte[] image = pe.ToArray();
-    var context = new ScriptLoadContext(assemblyName, ModuleMap(earlier));
-    Assembly assembly = context.LoadFromStream(new MemoryStream(image), pdb);
-    return new ScriptModule(directories, files, hash, assembly, MetadataReference.CreateFromImage(image), context, warnings,
-      instrumented.ToDictionary(kv => kv.Key.FilePath, kv => kv.Value, StringComparer.Ordinal)) { Renamed = shadowed };
+    return new ModuleImage(assemblyName, pe.ToArray(), pdb.ToArray(), files, scripts, warnings,
+      instrumented.ToDictionary(kv => kv.Key.FilePath, kv => kv.Value.ToMap(), StringComparer.Ordinal), shadowed);
   }
 
   /// <summary>The user's tree with interruption points inserted (see <see cref="InterruptionPoints"/>), parsed again, and the way back to the original.</summary>
@@ -231,8 +263,8 @@ internal static class ScriptCompiler
     .Where(t => t.Namespace == YieldingImport).Select(t => t.Name), StringComparer.Ordinal);
 
   internal static IEnumerable<MetadataReference> References(IReadOnlyList<ScriptModule> modules) =>
-    modules.Count == 0 ? FrameworkReferences.All : FrameworkReferences.All.Concat(modules.Select(m => m.Reference));
+    modules.Count == 0 ? FrameworkReferences.All : FrameworkReferences.All.Concat(modules.Select(Reference));
 
-  static Dictionary<string, Assembly> ModuleMap(IReadOnlyList<ScriptModule> modules) =>
-    modules.ToDictionary(m => m.AssemblyName, m => m.Assembly);
+  static MetadataReference Reference(ScriptModule module) =>
+    moduleReferences.GetValue(module, static m => MetadataReference.CreateFromImage(m.Image));
 }

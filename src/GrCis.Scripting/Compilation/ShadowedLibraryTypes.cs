@@ -20,8 +20,8 @@ internal static class ShadowedLibraryTypes
 {
   public const string Suffix = "__module";
 
-  /// <summary>A module type renamed: where it is declared, its full name, and the alias scripts get.</summary>
-  public sealed record Renamed(string Path, LinePosition At, string FullName)
+  /// <summary>A module type renamed: where it is declared (1-based line and column), its full name, and the alias scripts get.</summary>
+  public sealed record Renamed(string Path, int Line, int Column, string FullName)
   {
     public string Name => FullName[(FullName.LastIndexOf('.') + 1)..];
 
@@ -61,7 +61,7 @@ internal static class ShadowedLibraryTypes
             "put the new members in a class of the module's own (a subclass, or a static class of helpers)"));
           continue;
         }
-        renamed.Add(new Renamed(tree.FilePath, at, fullName));
+        renamed.Add(new Renamed(tree.FilePath, at.Line + 1, at.Character + 1, fullName));
       }
     }
     if (clashing.Count == 0)
@@ -104,7 +104,7 @@ internal static class ShadowedLibraryTypes
 
   /// <summary>One warning per renamed type.</summary>
   public static IEnumerable<ScriptDiagnostic> Report(IEnumerable<Renamed> renamed) =>
-    renamed.Select(r => new ScriptDiagnostic(r.Path, r.At.Line + 1, r.At.Character + 1, "warning", ScriptDiagnostic.ShadowedLibraryTypeId,
+    renamed.Select(r => new ScriptDiagnostic(r.Path, r.Line, r.Column, "warning", ScriptDiagnostic.ShadowedLibraryTypeId,
       $"'{r.FullName}' is also a type of the library (GrCis added it later); the module and its scripts use this one"));
 
   /// <summary>

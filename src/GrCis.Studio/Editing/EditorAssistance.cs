@@ -29,15 +29,7 @@ public sealed class EditorAssistance(StudioSession session) : IDisposable
     await checking.WaitAsync(cancel).ConfigureAwait(false);
     try
     {
-      IReadOnlyList<ScriptDiagnostic> found;
-      try
-      {
-        found = await Task.Run(() => scripts.CompileSource(text, path).Warnings, cancel).ConfigureAwait(false);
-      }
-      catch (ScriptCompilationException e)
-      {
-        found = e.Diagnostics;
-      }
+      IReadOnlyList<ScriptDiagnostic> found = await Task.Run(() => scripts.Check(text, path), cancel).ConfigureAwait(false);
       string full = System.IO.Path.GetFullPath(path);
       return found.Where(d => d.Path == full)
         .Select(d => new ScriptError(d.Line, d.Column, d.Severity, d.Id, d.Message)).ToList();

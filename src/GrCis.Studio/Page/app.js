@@ -1,9 +1,10 @@
-// GrCis studio page: scene list, settings, render/stop with previews, zoom/pan, pixel read-out and probe, history and
-// A/B, the script editor, animation. ES modules, one concern each, over one state object (state.js); the studio's state
+// GrCis studio page: the layout (theme, panels, keys), scene list, settings, render/stop with previews, zoom/pan, pixel
+// read-out and probe, history and A/B, the script editor, animation. ES modules, one concern each, over one state object (state.js); the studio's state
 // comes as pushed events (events.js). Every request carries the studio's cookie (set by the first load).
 import { $, state } from "./state.js";
 import { api } from "./api.js";
-import { showError } from "./messages.js";
+import { showError, initMessages } from "./messages.js";
+import { initLayout } from "./layout.js";
 import { showStatus } from "./status.js";
 import { connect } from "./events.js";
 import { initView } from "./view.js";
@@ -13,6 +14,8 @@ import { initEditor } from "./editor.js";
 import { initProbe, probe } from "./probe.js";
 import { initAnimation } from "./animation.js";
 
+initLayout();
+initMessages();
 initView(probe);
 initHistory();
 initSettings();

@@ -8,7 +8,8 @@ export async function loadHistory(list) {
   const h = list ?? await (await api("history")).json();
   $("back").disabled = !h.canGoBack;
   $("forward").disabled = !h.canGoForward;
-  $("historyLabel").textContent = h.position >= 0 ? `${h.position + 1}/${h.items.length}: ${h.items[h.position].label}` : "";
+  $("historyLabel").textContent = $("historyLabel").title =
+    h.position >= 0 ? `${h.position + 1}/${h.items.length}: ${h.items[h.position].label}` : "";
   // The B choices: every kept render; a choice whose render is no longer the same one is dropped.
   const select = $("abWith"), chosen = select.value, chosenLabel = select.selectedOptions[0]?.textContent;
   select.length = 1;

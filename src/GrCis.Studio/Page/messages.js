@@ -1,12 +1,24 @@
-// The message line: another tab's takeover, the render's notes and error, and the page's own error and note.
+// The message box above the image: another tab's takeover, the render's notes and error, and the page's own error and
+// note. A message stays until the user dismisses it or the next action replaces it; errors are marked as such.
 import { $, state } from "./state.js";
 
 const tookOver = "Another tab or window of this studio started what is on show (one render at a time; Render here to take it back).";
 
+// The text the user dismissed: not shown again while the messages are just that.
+let dismissed = "";
+
+function show(text, error) {
+  $("messages").textContent = text;
+  $("messageBox").hidden = text === "";
+  $("messageBox").classList.toggle("error", error);
+}
+
 export function showMessages() {
   const s = state.studio;
   const other = s.tab && s.tab !== state.tab ? tookOver : "";
-  $("messages").textContent = [other, ...s.notes, s.error, state.pageError, state.pageNote].filter(Boolean).join("\n");
+  const text = [other, ...s.notes, s.error, state.pageError, state.pageNote].filter(Boolean).join("\n");
+  if (text !== dismissed) dismissed = "";
+  show(text === dismissed ? "" : text, Boolean(s.error || state.pageError));
 }
 
 // The page's own error (a refused request), shown until the next action; "" clears it.
@@ -18,5 +30,12 @@ export function showError(message) {
 
 // A passing word (what the page just did): replaced by the next change of the studio's state.
 export function say(text) {
-  $("messages").textContent = text;
+  show(text, false);
+}
+
+export function initMessages() {
+  $("dismiss").addEventListener("click", () => {
+    dismissed = $("messages").textContent;
+    show("", false);
+  });
 }

@@ -36,6 +36,7 @@ export function initProbe() {
   $("show3d").addEventListener("click", async () => {
     const pane = $("rays3dPane");
     pane.hidden = !pane.hidden;
+    $("show3d").setAttribute("aria-pressed", String(!pane.hidden));
     if (pane.hidden) RayView.close();
     else await show3d();
   });

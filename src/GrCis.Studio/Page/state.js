@@ -30,8 +30,9 @@ export const state = {
   wantedVersion: -1,
   historyFor: -1,
   viewsFor: -1,
-  // Zoom and pan of the image; a drag in progress.
-  view: { zoom: 1, panX: 0, panY: 0, drag: null, hoverTimer: null },
+  // Zoom and pan of the image (fitted: fitted again to each new image and view size, until the user zooms or pans); a drag
+  // in progress.
+  view: { zoom: 1, panX: 0, panY: 0, fitted: true, drag: null, hoverTimer: null },
   // Settings the user changed since the scene was chosen: they win over the script's own values (as command-line
   // options do); the other fields show the script's values, marked, and are sent as not given.
   given: new Set(),

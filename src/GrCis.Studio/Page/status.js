@@ -8,11 +8,13 @@ const phaseText = { compiling: "compiling the scriptâ€¦", rendering: "renderingâ
 export function showStatus() {
   const s = state.studio;
   $("bar").style.width = (100 * s.fraction).toFixed(1) + "%";
+  $("progress").setAttribute("aria-valuenow", (100 * s.fraction).toFixed(0));
   $("elapsed").textContent = s.seconds.toFixed(1) + " s";
   // While passes run: the samples so far and the estimated noise, so a user sees when the image has converged.
   $("stats").textContent = s.statistics || (s.samples != null
     ? `${s.samples} spp so far` + (s.noise != null ? `, noise ${s.noise.toPrecision(3)} RMSE` : "")
     : "");
+  $("stats").title = $("stats").textContent;   // in full, where the status bar cuts it
   // The first compile of a script takes seconds: say so, not a still page.
   $("phase").textContent = phaseText[s.phase] ?? s.phase;
   $("phase").dataset.phase = s.phase;

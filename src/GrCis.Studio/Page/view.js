@@ -1,5 +1,6 @@
-// The image: drawn on a canvas, zoomed about the cursor and panned; Fit and 1:1; the pixel read-out under the cursor;
-// the extra views (depth, normals, rays per pixel, noise) in its place.
+// The image: drawn on a canvas, fitted and centred (the default, kept while the view changes size), zoomed about the
+// cursor and panned, or 1:1; the pixel read-out under the cursor; the extra views (depth, normals, rays per pixel, noise)
+// in its place.
 import { $, state } from "./state.js";
 import { api } from "./api.js";
 import { showError, say } from "./messages.js";
@@ -18,7 +19,9 @@ export async function draw(response) {
     canvas.height = bitmap.height;
   }
   ctx.drawImage(bitmap, 0, 0);
-  place();
+  canvas.classList.add("drawn");
+  if (view.fitted) fit();
+  else place();
 }
 
 export async function showImage(version) {
@@ -69,10 +72,13 @@ export async function showView() {
   }
 }
 
-// The whole image in the view, as large as it fits (within the zoom's 1/8 to 64), centred.
+// The whole image in the view, as large as it fits (within the zoom's 1/8 to 64), centred; it stays fitted (each new
+// image, a view that changes size) until the user zooms or pans.
+const margin = 8;   // px of the view's grey around a fitted image, so its edges show
 export function fit() {
+  view.fitted = true;
   const w = $("view").clientWidth, h = $("view").clientHeight;
-  view.zoom = Math.min(64, Math.max(1 / 8, Math.min(w / canvas.width, h / canvas.height)));
+  view.zoom = Math.min(64, Math.max(1 / 8, Math.min((w - 2 * margin) / canvas.width, (h - 2 * margin) / canvas.height)));
   view.panX = (w - canvas.width * view.zoom) / 2;
   view.panY = (h - canvas.height * view.zoom) / 2;
   place();
@@ -80,6 +86,7 @@ export function fit() {
 
 // 1:1 about the view's centre: the pixel in the middle stays there.
 function actualSize() {
+  view.fitted = false;
   const cx = $("view").clientWidth / 2, cy = $("view").clientHeight / 2;
   view.panX = cx - (cx - view.panX) / view.zoom;
   view.panY = cy - (cy - view.panY) / view.zoom;
@@ -100,6 +107,7 @@ export function initView(onClick) {
     // Zoom about the cursor, 1/8 to 64.
     e.preventDefault();
     const box = $("view").getBoundingClientRect(), cx = e.clientX - box.left, cy = e.clientY - box.top;
+    view.fitted = false;
     const next = Math.min(64, Math.max(1 / 8, view.zoom * (e.deltaY < 0 ? 1.25 : 0.8)));
     view.panX = cx - (cx - view.panX) * next / view.zoom;
     view.panY = cy - (cy - view.panY) * next / view.zoom;
@@ -117,7 +125,7 @@ export function initView(onClick) {
   $("view").addEventListener("mousemove", e => {
     const drag = view.drag;
     if (drag) {
-      if (Math.abs(e.clientX - drag.x) + Math.abs(e.clientY - drag.y) > 2) drag.moved = true;
+      if (Math.abs(e.clientX - drag.x) + Math.abs(e.clientY - drag.y) > 2) { drag.moved = true; view.fitted = false; }
       view.panX += e.clientX - drag.x;
       view.panY += e.clientY - drag.y;
       drag.x = e.clientX;
@@ -143,10 +151,13 @@ export function initView(onClick) {
   window.addEventListener("keydown", e => {
     // Keys for the view, except while typing (a field, the editor) or with a modifier (Ctrl+S and the like).
     if (e.ctrlKey || e.metaKey || e.altKey || e.target.closest?.("input, textarea, select, .CodeMirror")) return;
-    if (e.key === "r") { view.zoom = 1; view.panX = view.panY = 0; place(); }
+    if (e.key === "r") { view.fitted = false; view.zoom = 1; view.panX = view.panY = 0; place(); }
     else if (e.key === "f" || e.key === "F") fit();
     else if (e.key === "1") actualSize();
   });
   $("fit").addEventListener("click", fit);
+  $("actual").addEventListener("click", actualSize);
+  // The panes beside it open and close, the window changes size: a fitted image is fitted again.
+  new ResizeObserver(() => { if (view.fitted && canvas.classList.contains("drawn")) fit(); }).observe($("view"));
   $("view-kind").addEventListener("change", showView);
 }
