@@ -61,7 +61,7 @@ public class RenderStateTests
     demo.Settings = new RenderSettings { Width = 32, Height = 24, Threads = 2 };
     Task<RenderResult?> second = demo.RenderAsync();
     Assert.Equal(2, demo.RenderId);
-    Assert.True(demo.IsBusy);
+    // (Not asserted busy here: a 32x24 render may finish before the next line; Busy_covers_the_build_and_stop_ends_it_at_once covers the state.)
 
     RenderResult? replaced = await first.WaitAsync(TimeSpan.FromMinutes(1));
     Assert.True(replaced == null || replaced.Cancelled);
