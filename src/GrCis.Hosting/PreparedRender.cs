@@ -18,6 +18,7 @@ public sealed class PreparedRender
   PreparedRender(IRayScene scene, RenderPlan plan, ScriptScene? script)
   {
     Scene = scene;
+    Plan = plan;
     Settings = plan.Settings;
     ImageFunction = plan.ImageFunction;
     Synthesizer = plan.Synthesizer;
@@ -26,6 +27,9 @@ public sealed class PreparedRender
   }
 
   public IRayScene Scene { get; }
+
+  /// <summary>What precedence decided; builds the image function, the sampler and the options of this render.</summary>
+  public RenderPlan Plan { get; }
 
   /// <summary>Settings after precedence (what the render and its summary line use).</summary>
   public RenderSettings Settings { get; }
@@ -104,10 +108,8 @@ public sealed class PreparedRender
   public FrameResult Render(Action<RenderProgress>? progress = null, CancellationToken cancel = default,
                             IReadOnlyList<Tile>? tiles = null, RenderContext? context = null)
   {
-    ImageSynthesizer renderer = Synthesizer ?? Settings.CreateSynthesizer();
-    IImageFunction function = ImageFunction ?? Settings.CreateImageFunction(Scene);
-    RenderOptions options = Settings.ToRenderOptions() with { Tiles = tiles };
-    return FrameRendering.Render(Scene, function, renderer, options, progress, cancel, context);
+    return FrameRendering.Render(Scene, Plan.CreateImageFunction(Scene), Plan.CreateSynthesizer(), Plan.CreateOptions(tiles: tiles),
+      progress, cancel, context);
   }
 
   sealed record ScriptTiming(double? Start, double? End, double? Fps) : ISceneTiming;

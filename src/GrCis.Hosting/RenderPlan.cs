@@ -1,9 +1,14 @@
 using System.Collections.Generic;
 using Rendering;
+using Rendering.Execution;
 
 namespace GrCis.Hosting;
 
-/// <summary>What <see cref="Precedence.Resolve"/> decided: the effective settings and the script's objects that render.</summary>
+/// <summary>
+/// What <see cref="Precedence.Resolve"/> decided: the effective settings and the script's objects that render.
+/// The one builder between front ends and the renderer: the image function, the sampler
+/// (<see cref="ImageSynthesizer"/>) and the execution options of every render come from here.
+/// </summary>
 public sealed class RenderPlan
 {
   internal RenderPlan(RenderSettings settings, IImageFunction? function, ImageSynthesizer? synthesizer, IReadOnlyList<string> notes)
@@ -31,4 +36,8 @@ public sealed class RenderPlan
 
   /// <summary>The renderer to render with: the script's, else a new one from the settings.</summary>
   public ImageSynthesizer CreateSynthesizer() => Synthesizer ?? Settings.CreateSynthesizer();
+
+  /// <summary>The execution options (threads, tiles, seed, sampler) of frame <paramref name="frame"/>; only <paramref name="tiles"/> when given.</summary>
+  public RenderOptions CreateOptions(int frame = 0, IReadOnlyList<Tile>? tiles = null) =>
+    Settings.ToRenderOptions(frame) with { Tiles = tiles };
 }

@@ -90,14 +90,14 @@ public sealed class FrameStore
     return removed;
   }
 
-  /// <summary>Writes frame <paramref name="frame"/> atomically, with display gamma and GrCis's truncating quantization.</summary>
+  /// <summary>Writes frame <paramref name="frame"/> atomically, with the render display encoding (<see cref="DisplayEncoding.ForRender"/>).</summary>
   /// <exception cref="CliFailure">The frame could not be written; no partial file remains.</exception>
   public void Save(int frame, FloatImage image)
   {
     string file = pattern.FileOf(frame);
     try
     {
-      PngFile.Save(file, Rgb8Image.FromFloatImage(image, gamma, Quantization.Truncate));
+      PngFile.Save(file, DisplayEncoding.ForRender(gamma).Encode(image));
     }
     catch (ImageSaveException e)
     {

@@ -155,7 +155,7 @@ public static class BenchSuite
     var settings = new RenderSettings { Width = size.Width, Height = size.Height, SamplesPerPixel = spp, Threads = threads, Accel = accel }.Validate();
     ImageSynthesizer renderer = settings.CreateSynthesizer();
     RayTracing function = settings.CreateImageFunction(scene);
-    FrameResult result = FrameRendering.Render(scene, function, renderer, new RenderOptions { Threads = threads, Seed = 0 }, null, cancel);
+    FrameResult result = FrameRendering.Render(scene, function, renderer, settings.ToRenderOptions(), null, cancel);
     fallbacks = function.LastPrepared?.FallbackCount ?? 0;
     return result;
   }

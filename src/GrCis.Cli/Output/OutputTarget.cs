@@ -108,14 +108,14 @@ public sealed class OutputTarget
     return target.StartsWith("/dev/", StringComparison.Ordinal) || target.StartsWith("/proc/", StringComparison.Ordinal);
   }
 
-  /// <summary>Writes the image: PNG with display gamma and GrCis's truncating quantization, or linear PFM.</summary>
+  /// <summary>Writes the image: PNG with the render display encoding (<see cref="DisplayEncoding.ForRender"/>), or linear PFM.</summary>
   /// <exception cref="CliFailure">The save failed; any existing file is unchanged and no temporary file remains.</exception>
   public void Save(FloatImage image, double gamma) => Saving(() =>
   {
     if (Format == OutputFormat.Pfm)
       PfmWriter.Save(FullPath, image);
     else
-      PngFile.Save(FullPath, Rgb8Image.FromFloatImage(image, gamma, Quantization.Truncate));
+      PngFile.Save(FullPath, DisplayEncoding.ForRender(gamma).Encode(image));
   });
 
   /// <summary>Writes the tiles of one part (<c>render --tiles</c>) with its header.</summary>

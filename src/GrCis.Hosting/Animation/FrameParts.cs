@@ -61,7 +61,7 @@ public sealed class FrameParts
   static bool IsLibraryRayCaster(IImageFunction f) => f.GetType() == typeof(RayTracing) || f.GetType() == typeof(RayCasting);
 
   static object ShallowCopy(object o) =>
-    typeof(object).GetMethod("MemberwiseClone", System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.NonPublic)!
+    typeof(object).GetMethod(nameof(MemberwiseClone), System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.NonPublic)!
       .Invoke(o, null)!;
 
   /// <summary>Words for the user about what was chosen (empty when nothing is worth saying).</summary>

@@ -11,8 +11,9 @@ namespace GrCis.Hosting;
 /// </summary>
 public sealed class RenderJob
 {
-  RenderJob(IRayScene scene, IImageFunction function, ImageSynthesizer renderer, RenderSettings settings, string? name, string param)
+  RenderJob(IRayScene scene, IImageFunction function, ImageSynthesizer renderer, RenderSettings settings, RenderPlan plan, string? name, string param)
   {
+    Plan = plan;
     Scene = scene;
     ImageFunction = function;
     Renderer = renderer;
@@ -30,6 +31,9 @@ public sealed class RenderJob
   /// <summary>The effective settings (script overrides applied).</summary>
   public RenderSettings Settings { get; }
 
+  /// <summary>What precedence decided, the builder of this job's function, renderer and options.</summary>
+  public RenderPlan Plan { get; }
+
   public string? SceneName { get; }
 
   public string Param { get; }
@@ -44,7 +48,8 @@ public sealed class RenderJob
 
   public int Height => Settings.Height;
 
-  public RenderOptions Options => Settings.ToRenderOptions();
+  /// <summary>The execution options, from the same builder as every front end's (<see cref="RenderPlan.CreateOptions"/>).</summary>
+  public RenderOptions Options => Plan.CreateOptions();
 
   /// <summary>
   /// What a demo user sets explicitly, winning over a script (<see cref="Precedence"/>): the ray-tracing switches,
@@ -99,7 +104,7 @@ public sealed class RenderJob
     ScriptObjects.Wire(f, scene);
     ImageSynthesizer synth = plan.CreateSynthesizer();
     Bind(scene, f, synth, settings);
-    return new RenderJob(scene, f, synth, settings, sceneName, param) { Notes = plan.Notes };
+    return new RenderJob(scene, f, synth, settings, plan, sceneName, param) { Notes = plan.Notes };
   }
 
   /// <summary>
@@ -110,10 +115,10 @@ public sealed class RenderJob
   {
     ArgumentNullException.ThrowIfNull(prepared);
     RenderSettings settings = prepared.Settings with { Time = prepared.Time };
-    IImageFunction f = prepared.ImageFunction ?? CreateImageFunction(prepared.Scene, settings);   // unbound (see there)
-    ImageSynthesizer synth = prepared.Synthesizer ?? settings.CreateSynthesizer();
+    IImageFunction f = prepared.Plan.CreateImageFunction();   // unbound (see CreateImageFunction)
+    ImageSynthesizer synth = prepared.Plan.CreateSynthesizer();
     Bind(prepared.Scene, f, synth, settings);
-    return new RenderJob(prepared.Scene, f, synth, settings, sceneName ?? prepared.Script?.Script.Path, param)
+    return new RenderJob(prepared.Scene, f, synth, settings, prepared.Plan, sceneName ?? prepared.Script?.Script.Path, param)
     {
       Notes = prepared.Notes.ToArray(),
       Prepared = prepared,

@@ -12,7 +12,7 @@ namespace Rendering;
 internal static class SceneNodeRelinker
 {
   static readonly Func<object, object> memberwiseClone = typeof(object)
-    .GetMethod("MemberwiseClone", BindingFlags.Instance | BindingFlags.NonPublic)!
+    .GetMethod(nameof(MemberwiseClone), BindingFlags.Instance | BindingFlags.NonPublic)!
     .CreateDelegate<Func<object, object>>();
 
   static readonly Action<DefaultSceneNode, ICollection<ISceneNode>> setChildren = typeof(DefaultSceneNode)

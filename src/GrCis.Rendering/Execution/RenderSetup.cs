@@ -47,9 +47,9 @@ public static class RenderSetup
   }
 
   /// <summary>
-  /// The 8-bit image shown and saved: <paramref name="gamma"/> applied (≤ 0.001 = linear) and GrCis's
-  /// truncating quantization, so a PNG from the demo equals one from <c>grcis render</c> byte for byte.
+  /// The 8-bit image shown and saved: <see cref="DisplayEncoding.ForRender"/> (gamma, ≤ 0.001 = linear, and
+  /// GrCis's truncation), so a PNG from the demo equals one from <c>grcis render</c> byte for byte.
   /// </summary>
   public static Rgb8Image ToDisplayImage(FloatImage image, double gamma = DefaultGamma) =>
-    Rgb8Image.FromFloatImage(image, gamma > 0.001 ? gamma : 1.0, Quantization.Truncate);
+    DisplayEncoding.ForRender(gamma).Encode(image);
 }

@@ -85,7 +85,7 @@ public class RayCasting : IImageFunction
 
   /// <summary>The virtual methods of RayCasting and RayTracing that see a hit: a subclass overriding one may read anything.</summary>
   public static readonly System.Collections.Generic.IReadOnlyList<string> HitReaders =
-    new[] { nameof(GetSample), nameof(FirstHit), "shade", "Occluded", "ShadowTransmittance" };
+    new[] { nameof(GetSample), nameof(FirstHit), RayTracing.ShadeName, RayTracing.OccludedName, RayTracing.ShadowTransmittanceName };
 
   /// <summary>
   /// True when nothing but the library's own code reads a shaded hit, decided once per prepared scene: the

@@ -80,6 +80,9 @@ public class RayTracing : RayCasting
   }
 
   /// <summary>True when something (not marked NO_SHADOW) lies between the point and the light at <c>p0 + dir</c>.</summary>
+  // Names of the hit-reading virtuals for RayCasting.HitReaders: constants, so no static initialization order matters.
+  internal const string ShadeName = nameof(shade), OccludedName = nameof(Occluded), ShadowTransmittanceName = nameof(ShadowTransmittance);
+
   protected virtual bool Occluded(Vector3d p0, Vector3d dir) => Occluded(ShadingScratch.Current, p0, dir);
 
   /// <summary>

@@ -68,48 +68,14 @@ public sealed class Rgb8Image
     other is not null && other.Width == Width && other.Height == Height && Data.AsSpan().SequenceEqual(other.Data);
 
   /// <summary>
-  /// Quantizes a linear framebuffer: v^(1/gamma), clamped to [0, 1], byte = (int)(v * 255 + 0.5).
-  /// NaN and negative values become 0. A 1-band image is replicated to gray; 3 bands map to RGB.
-  /// gamma = 1 writes values unchanged, as the original GrCis bitmap output does.
+  /// Quantizes a linear framebuffer with <see cref="DisplayEncoding"/>: v^(1/gamma), clamped to [0, 1],
+  /// then rounded (default) or truncated. gamma = 1 writes values unchanged, as GrCis's bitmap output does.
+  /// Rendered images are written with <see cref="DisplayEncoding.ForRender"/> (truncation).
   /// </summary>
   public static Rgb8Image FromFloatImage(FloatImage image, double gamma = 1.0, Quantization quantization = Quantization.Round)
   {
     ArgumentNullException.ThrowIfNull(image);
-    if (!(gamma > 0.0) || double.IsInfinity(gamma))
-      throw new ArgumentOutOfRangeException(nameof(gamma), gamma, "Gamma must be a positive finite number.");
-    if (image.Bands != 1 && image.Bands != 3)
-      throw new ArgumentException($"Only 1- or 3-band images convert to RGB; this one has {image.Bands} bands.", nameof(image));
-
-    Rgb8Image result = new(image.Width, image.Height);
-    float[] src = image.Data;
-    byte[] dst = result.Data;
-    double invGamma = 1.0 / gamma;
-    if (image.Bands == 3)
-    {
-      for (int i = 0; i < src.Length; i++)
-        dst[i] = Quantize(src[i], invGamma, quantization);
-    }
-    else
-    {
-      for (int i = 0; i < src.Length; i++)
-      {
-        byte v = Quantize(src[i], invGamma, quantization);
-        dst[3 * i] = dst[3 * i + 1] = dst[3 * i + 2] = v;
-      }
-    }
-    return result;
-  }
-
-  internal static byte Quantize(double v, double invGamma, Quantization quantization = Quantization.Round)
-  {
-    // Written so NaN falls into the first branch.
-    if (!(v > 0.0))
-      return 0;
-    if (v >= 1.0)
-      return 255;
-    if (invGamma != 1.0)
-      v = Math.Pow(v, invGamma);
-    return quantization == Quantization.Truncate ? (byte)(int)(v * 255.0) : (byte)(int)(v * 255.0 + 0.5);
+    return new DisplayEncoding(gamma, quantization).Encode(image);
   }
 
   private static void Validate(int width, int height)

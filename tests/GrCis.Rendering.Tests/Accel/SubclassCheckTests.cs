@@ -81,6 +81,16 @@ public class SubclassCheckTests
   }
 
   [Fact]
+  public void Every_hit_reader_name_is_an_overridable_method_of_the_ray_tracer()
+  {
+    // A misspelt or renamed name would silently stop a script's override from being noticed.
+    const System.Reflection.BindingFlags all = System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.NonPublic;
+    Assert.Equal(5, RayCasting.HitReaders.Count);
+    foreach (string name in RayCasting.HitReaders)
+      Assert.Contains(typeof(RayTracing).GetMethods(all), m => m.Name == name && m.IsVirtual && !m.IsFinal);
+  }
+
+  [Fact]
   public void Only_script_classes_overriding_a_hit_reader_read_whole_hits()
   {
     Assert.False(SubclassCheck.OverridesAny(typeof(RayTracing), RayCasting.HitReaders));

@@ -80,7 +80,7 @@ public class GrCisReferenceTests
     IRayScene scene = Scenes.Create(sceneName);
     var renderer = new SimpleImageSynthesizer { Width = width, Height = height, Gamma = 2.2 };
     FloatImage linear = TileRenderer.Render(scene, new RayTracing(scene), renderer, new RenderOptions());
-    return Rgb8Image.FromFloatImage(linear, renderer.Gamma, Quantization.Truncate);
+    return DisplayEncoding.ForRender(renderer.Gamma).Encode(linear);
   }
 
   /// <summary>The reference renders in the shared folder.</summary>

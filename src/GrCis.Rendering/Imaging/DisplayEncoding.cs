@@ -1,0 +1,90 @@
+using System;
+
+namespace Rendering.Imaging;
+
+/// <summary>
+/// How linear float pixels become 8-bit display bytes: v^(1/<see cref="Gamma"/>), clamped to [0, 1],
+/// then <see cref="Quantization"/>. NaN and negative values become 0. Every PNG writer and preview goes
+/// through one of these, so the rule is written once.
+/// <para>
+/// Rendered images use <see cref="ForRender"/>: GrCis's truncation, so today's images equal the original
+/// program's byte for byte (and every recorded image hash holds). Data maps (depth, normals, differences)
+/// use <see cref="LinearRound"/>: no gamma, nearest byte, the better rule where no old output must match.
+/// </para>
+/// </summary>
+public readonly record struct DisplayEncoding
+{
+  /// <summary>Display gamma (1 = linear); positive and finite.</summary>
+  public double Gamma { get; }
+
+  /// <summary>How a [0, 1] value becomes a byte.</summary>
+  public Quantization Quantization { get; }
+
+  readonly double invGamma;
+
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="gamma"/> is not a positive finite number.</exception>
+  public DisplayEncoding(double gamma, Quantization quantization)
+  {
+    if (!(gamma > 0.0) || double.IsInfinity(gamma))
+      throw new ArgumentOutOfRangeException(nameof(gamma), gamma, "Gamma must be a positive finite number.");
+    if (quantization is not (Quantization.Round or Quantization.Truncate))
+      throw new ArgumentOutOfRangeException(nameof(quantization), quantization, "Unknown quantization.");
+    Gamma = gamma;
+    Quantization = quantization;
+    invGamma = 1.0 / gamma;
+  }
+
+  /// <summary>
+  /// The encoding of a rendered image shown or saved by any front end: <paramref name="gamma"/> as the
+  /// renderer's <c>Gamma</c> (≤ 0.001 means linear, as in GrCis's <c>ApplyGamma</c>) and truncation.
+  /// </summary>
+  public static DisplayEncoding ForRender(double gamma) =>
+    new(gamma > 0.001 && !double.IsInfinity(gamma) ? gamma : 1.0, Quantization.Truncate);
+
+  /// <summary>No gamma, nearest byte: for data maps and other images that are not renders.</summary>
+  public static DisplayEncoding LinearRound => new(1.0, Quantization.Round);
+
+  /// <summary>One channel value to its display byte.</summary>
+  public byte Encode(float v) => Encode((double)v);
+
+  /// <summary>One channel value to its display byte.</summary>
+  public byte Encode(double v)
+  {
+    // Written so NaN falls into the first branch.
+    if (!(v > 0.0))
+      return 0;
+    if (v >= 1.0)
+      return 255;
+    double g = invGamma == 0.0 ? 1.0 : invGamma;   // default(DisplayEncoding) acts as linear
+    if (g != 1.0)
+      v = Math.Pow(v, g);
+    return Quantization == Quantization.Truncate ? (byte)(int)(v * 255.0) : (byte)(int)(v * 255.0 + 0.5);
+  }
+
+  /// <summary>Encodes <paramref name="source"/> value by value into <paramref name="destination"/> (same length).</summary>
+  public void Encode(ReadOnlySpan<float> source, Span<byte> destination)
+  {
+    if (destination.Length != source.Length)
+      throw new ArgumentException($"Destination has {destination.Length} bytes for {source.Length} values.", nameof(destination));
+    for (int i = 0; i < source.Length; i++)
+      destination[i] = Encode(source[i]);
+  }
+
+  /// <summary>A 1-band image becomes gray, a 3-band image RGB.</summary>
+  /// <exception cref="ArgumentException">The image has neither 1 nor 3 bands.</exception>
+  public Rgb8Image Encode(FloatImage image)
+  {
+    ArgumentNullException.ThrowIfNull(image);
+    if (image.Bands != 1 && image.Bands != 3)
+      throw new ArgumentException($"Only 1- or 3-band images convert to RGB; this one has {image.Bands} bands.", nameof(image));
+    Rgb8Image result = new(image.Width, image.Height);
+    float[] src = image.Data;
+    byte[] dst = result.Data;
+    if (image.Bands == 3)
+      Encode(src, dst);
+    else
+      for (int i = 0; i < src.Length; i++)
+        dst[3 * i] = dst[3 * i + 1] = dst[3 * i + 2] = Encode(src[i]);
+    return result;
+  }
+}

@@ -1,0 +1,68 @@
+using System;
+using System.IO;
+using Rendering;
+using Rendering.Execution;
+
+namespace GrCis.Hosting.Tests;
+
+/// <summary>
+/// The render plan is the one builder between front ends and the renderer: the same settings give the
+/// same execution options and the same kind of function and sampler whichever way a render is put together.
+/// </summary>
+public sealed class RenderPlanTests : IDisposable
+{
+  readonly string dir = Directory.CreateTempSubdirectory("grcis-plan-").FullName;
+
+  public void Dispose() => Directory.Delete(dir, recursive: true);
+
+  static readonly RenderSettings Odd = new()
+  {
+    Width = 40, Height = 30, SamplesPerPixel = 4, Threads = 3, TileSize = 16, Seed = 77,
+    Sampler = SamplerKind.Independent, Algorithm = RenderAlgorithm.Path,
+  };
+
+  [Fact]
+  public void Same_settings_give_equal_options_through_request_job_and_direct_job()
+  {
+    PreparedRender prepared = new RenderRequest(new BuiltInSceneSource("Two spheres"), Odd).Prepare();
+    RenderOptions expected = new() { Threads = 3, TileSize = 16, Seed = 77, Frame = 0, Sampler = SamplerKind.Independent };
+
+    Assert.Equal(expected, prepared.Plan.CreateOptions());
+    Assert.Equal(expected, RenderJob.From(prepared).Options);
+    Assert.Equal(expected, RenderJob.Create(new BuiltInSceneSource("Two spheres").CreateScene(), Odd).Options);
+    Assert.Equal(expected with { Frame = 5 }, prepared.Plan.CreateOptions(frame: 5));
+  }
+
+  [Fact]
+  public void Options_of_a_part_carry_only_its_tiles()
+  {
+    PreparedRender prepared = new RenderRequest(new BuiltInSceneSource("Two spheres"), Odd).Prepare();
+    Tile[] tiles = [new Tile(0, 0, 16, 16)];
+    Assert.Same(tiles, prepared.Plan.CreateOptions(tiles: tiles).Tiles);
+    Assert.Null(prepared.Plan.CreateOptions().Tiles);
+  }
+
+  [Fact]
+  public void Request_and_job_build_the_settings_function_and_sampler()
+  {
+    PreparedRender prepared = new RenderRequest(new BuiltInSceneSource("Two spheres"), Odd).Prepare();
+    RenderJob job = RenderJob.From(prepared);
+    Assert.IsType<PathTracing>(job.ImageFunction);
+    Assert.IsType<SupersamplingImageSynthesizer>(job.Renderer);
+    Assert.Same(prepared.Plan, job.Plan);
+  }
+
+  [Fact]
+  public void A_scripts_own_sampler_is_what_request_and_job_render_with()
+  {
+    string path = Path.Combine(dir, "Scene.cs");
+    File.WriteAllText(path, """
+      Rendering.Scenes.FiveBalls(scene);
+      context[PropertyName.CTX_SYNTHESIZER] = new SimpleImageSynthesizer();
+      """);
+    using var source = new ScriptSceneSource(path, "", Array.Empty<string>());
+    PreparedRender prepared = new RenderRequest(source, Odd with { Algorithm = RenderAlgorithm.RayTracing }).Prepare();
+    Assert.IsType<SimpleImageSynthesizer>(prepared.Plan.CreateSynthesizer());
+    Assert.Same(prepared.Synthesizer, RenderJob.From(prepared).Renderer);
+  }
+}

@@ -1,0 +1,85 @@
+using System;
+using Rendering.Execution;
+using Rendering.Imaging;
+using Xunit;
+
+namespace Rendering.Tests.Imaging;
+
+public class DisplayEncodingTests
+{
+  [Fact]
+  public void Render_encoding_truncates_where_linear_round_rounds()
+  {
+    // 0.5 * 255 = 127.5: the two rules differ exactly here.
+    Assert.Equal(127, DisplayEncoding.ForRender(1.0).Encode(0.5f));
+    Assert.Equal(128, DisplayEncoding.LinearRound.Encode(0.5f));
+    Assert.Equal(Quantization.Truncate, DisplayEncoding.ForRender(2.2).Quantization);
+  }
+
+  [Theory]
+  [InlineData(0.0)]
+  [InlineData(0.001)]
+  [InlineData(-3.0)]
+  public void Render_gamma_at_or_below_a_thousandth_is_linear_as_GrCis_ApplyGamma(double gamma)
+  {
+    Assert.Equal(1.0, DisplayEncoding.ForRender(gamma).Gamma);
+    Assert.Equal(63, DisplayEncoding.ForRender(gamma).Encode(0.25f));
+  }
+
+  [Fact]
+  public void Gamma_is_applied_before_quantization()
+  {
+    // 0.25^(1/2) = 0.5 -> 127 truncated.
+    Assert.Equal(127, DisplayEncoding.ForRender(2.0).Encode(0.25f));
+    Assert.Equal(128, new DisplayEncoding(2.0, Quantization.Round).Encode(0.25f));
+  }
+
+  [Theory]
+  [InlineData(float.NaN, 0)]
+  [InlineData(-1f, 0)]
+  [InlineData(1f, 255)]
+  [InlineData(7f, 255)]
+  [InlineData(float.PositiveInfinity, 255)]
+  public void Out_of_range_values_clamp_and_NaN_is_black(float v, int expected) =>
+    Assert.Equal(expected, DisplayEncoding.ForRender(2.2).Encode(v));
+
+  [Fact]
+  public void Span_variant_matches_value_by_value_and_checks_length()
+  {
+    float[] values = [0f, 0.1f, 0.33f, 0.5f, 0.9f, 1.2f];
+    byte[] row = new byte[values.Length];
+    DisplayEncoding e = DisplayEncoding.ForRender(2.2);
+    e.Encode(values, row);
+    for (int i = 0; i < values.Length; i++)
+      Assert.Equal(e.Encode(values[i]), row[i]);
+    Assert.Throws<ArgumentException>(() => e.Encode(values, new byte[2]));
+  }
+
+  [Fact]
+  public void Image_encoding_equals_the_old_entry_points()
+  {
+    FloatImage img = new(5, 3, 3);
+    var rnd = new Random(3);
+    for (int i = 0; i < img.Data.Length; i++)
+      img.Data[i] = (float)(rnd.NextDouble() * 1.2 - 0.1);
+    Assert.Equal(Rgb8Image.FromFloatImage(img, 2.2, Quantization.Truncate).Data, DisplayEncoding.ForRender(2.2).Encode(img).Data);
+    Assert.Equal(RenderSetup.ToDisplayImage(img, 2.2).Data, DisplayEncoding.ForRender(2.2).Encode(img).Data);
+    Assert.Equal(Rgb8Image.FromFloatImage(img, 1.0).Data, DisplayEncoding.LinearRound.Encode(img).Data);
+  }
+
+  [Fact]
+  public void Gray_image_is_replicated_and_other_band_counts_are_refused()
+  {
+    FloatImage gray = new(1, 1, 1);
+    gray.Data[0] = 0.5f;
+    Assert.Equal(new byte[] { 127, 127, 127 }, DisplayEncoding.ForRender(1.0).Encode(gray).Data);
+    Assert.Throws<ArgumentException>(() => DisplayEncoding.ForRender(1.0).Encode(new FloatImage(1, 1, 2)));
+  }
+
+  [Theory]
+  [InlineData(0.0)]
+  [InlineData(double.NaN)]
+  [InlineData(double.PositiveInfinity)]
+  public void Explicit_gamma_must_be_positive_and_finite(double gamma) =>
+    Assert.Throws<ArgumentOutOfRangeException>(() => new DisplayEncoding(gamma, Quantization.Round));
+}
