@@ -294,6 +294,31 @@ public sealed class StudioSession : IDisposable
       return image == null ? null : (Rendering.Execution.RenderSetup.ToDisplayImage(image, gamma), version);
   }
 
+  (RenderJob Job, IReadOnlyList<(OpenTK.Mathematics.Vector3d Min, OpenTK.Mathematics.Vector3d Max)> Boxes)? boxes;
+
+  /// <summary>
+  /// World boxes of the last render's scene members (<see cref="Rendering.Accel.PreparedScene.WorldBoxes"/>), or null before a
+  /// render. The render's own prepared snapshot is read when its ray tracer kept one of this scene; otherwise (the faithful
+  /// path, another image function, per-worker clones) the snapshot is built once per render and kept.
+  /// </summary>
+  public IReadOnlyList<(OpenTK.Mathematics.Vector3d Min, OpenTK.Mathematics.Vector3d Max)>? SceneBoxes()
+  {
+    RenderJob? job = Controller.LastJob;
+    if (job is null)
+      return null;
+    lock (sync)
+      if (boxes is { } kept && ReferenceEquals(kept.Job, job))
+        return kept.Boxes;
+    Rendering.Accel.PreparedScene prepared =
+      job.ImageFunction is Rendering.RayCasting { LastPrepared: { } used } && ReferenceEquals(used.Source, job.Scene.Intersectable)
+        ? used
+        : Rendering.Accel.PreparedScene.Prepare(job.Scene.Intersectable);
+    var found = prepared.WorldBoxes();
+    lock (sync)
+      boxes = (job, found);
+    return found;
+  }
+
   /// <summary>The final linear image of the last finished render, or null.</summary>
   public FloatImage? FinalImage() => Controller.LastResult?.Image;
 

@@ -57,6 +57,20 @@ public sealed class RenderTests(StudioFixture studio) : IClassFixture<StudioFixt
   }
 
   [Fact]
+  public async Task The_boxes_come_from_the_renders_own_snapshot_and_are_kept_for_that_render()
+  {
+    await RenderAndWait(new { scene = "Five balls", settings = new { width = 32, height = 24 } });
+    StudioSession session = studio.Server.Session;
+    GrCis.Hosting.RenderJob job = session.Controller.LastJob!;
+    var raytracer = Assert.IsAssignableFrom<Rendering.RayCasting>(job.ImageFunction);
+    Assert.Same(job.Scene.Intersectable, raytracer.LastPrepared!.Source);   // the render kept a snapshot of this scene
+
+    var boxes = session.SceneBoxes()!;
+    Assert.Same(boxes, session.SceneBoxes());                                // no second build for the same render
+    Assert.Equal(Rendering.Accel.PreparedScene.Prepare(job.Scene.Intersectable).WorldBoxes(), boxes);
+  }
+
+  [Fact]
   public async Task A_setting_out_of_range_is_refused_with_its_name()
   {
     using HttpResponseMessage r = await studio.Client.PostAsJsonAsync("/api/render", new { scene = "Five balls", settings = new { width = 0, height = 48 } });

@@ -81,9 +81,8 @@ internal static class StudioApi
   internal sealed record BoxJson(double[] Min, double[] Max);
 
   static Results<Ok<BoxJson[]>, ProblemHttpResult> Boxes(StudioSession s) =>
-    s.Controller.LastJob is { } job
-      ? TypedResults.Ok(Rendering.Accel.PreparedScene.Prepare(job.Scene.Intersectable).WorldBoxes()
-          .Select(b => new BoxJson([b.Min.X, b.Min.Y, b.Min.Z], [b.Max.X, b.Max.Y, b.Max.Z])).ToArray())
+    s.SceneBoxes() is { } boxes
+      ? TypedResults.Ok(boxes.Select(b => new BoxJson([b.Min.X, b.Min.Y, b.Min.Z], [b.Max.X, b.Max.Y, b.Max.Z])).ToArray())
       : Problems.NotFound("render something first");
 
   static Results<FileContentHttpResult, NotFound> Image(StudioSession s, HttpResponse response)
