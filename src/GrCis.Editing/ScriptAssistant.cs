@@ -83,7 +83,7 @@ public sealed class ScriptAssistant : IDisposable
       string? detail = null, documentation = null;
       if (entries.Count < described)
         (detail, documentation) = Split(await service.GetDescriptionAsync(document, item, cancel).ConfigureAwait(false));
-      entries.Add(new CompletionEntry(item.DisplayTextPrefix + item.DisplayText + item.DisplayTextSuffix, Kind(item.Tags), detail, documentation));
+      entries.Add(new CompletionEntry(Label(item), Kind(item.Tags), detail, documentation));
     }
     return new CompletionResult(span.Start, span.End, entries);
   }
@@ -98,7 +98,7 @@ public sealed class ScriptAssistant : IDisposable
     if (service is null)
       return null;
     CompletionList list = await service.GetCompletionsAsync(document, position, cancellationToken: cancel).ConfigureAwait(false);
-    CompletionItem? item = list.ItemsList.FirstOrDefault(i => i.DisplayTextPrefix + i.DisplayText + i.DisplayTextSuffix == label);
+    CompletionItem? item = list.ItemsList.FirstOrDefault(i => Label(i) == label);
     if (item is null)
       return null;
     (string? detail, string? documentation) = Split(await service.GetDescriptionAsync(document, item, cancel).ConfigureAwait(false));
@@ -150,6 +150,9 @@ public sealed class ScriptAssistant : IDisposable
     string rest = text[(newline + 1)..].Trim();
     return (text[..newline].TrimEnd('\r'), rest.Length == 0 ? null : rest);
   }
+
+  // What the entry shows and inserts, e.g. "List<>" (its prefix and suffix included).
+  static string Label(CompletionItem item) => item.DisplayTextPrefix + item.DisplayText + item.DisplayTextSuffix;
 
   static readonly HashSet<string> AccessTags = new(StringComparer.Ordinal) { "Public", "Protected", "Private", "Internal" };
 

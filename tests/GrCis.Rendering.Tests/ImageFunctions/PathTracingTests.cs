@@ -91,26 +91,28 @@ public class PathTracingTests
     }
   }
 
+  /// <summary>One diffuse plane seen from above, no ambient, lit by <paramref name="light"/> alone: direct light only.</summary>
+  static IRayScene DiffusePlane(ILightSource light)
+  {
+    var root = new CSGInnerNode(SetOperation.Union);
+    root.SetAttribute(PropertyName.REFLECTANCE_MODEL, new PhongModel());
+    root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { 0.9, 0.5, 0.2 }, 0.0, 0.8, 0.0, 1, 0.0));
+    root.InsertChild(new Plane(), Matrix4d.RotateX(-MathHelper.PiOver2));
+    return new DefaultRayScene
+    {
+      Intersectable = root,
+      BackgroundColor = new[] { 0.0, 0.0, 0.0 },
+      Camera = new StaticCamera(new Vector3d(0, 2, -3), new Vector3d(0, -0.6, 1), 60.0),
+      Sources = new LinkedList<ILightSource>(new[] { light }),
+    };
+  }
+
   [Fact]
   public void Direct_light_from_a_GrCis_point_light_equals_Whitted_diffuse_shading()
   {
     // One diffuse plane, no ambient: path tracing (direct light only, nothing else to see) must agree with Phong's kd·cos·I.
-    IRayScene Scene()
-    {
-      var root = new CSGInnerNode(SetOperation.Union);
-      root.SetAttribute(PropertyName.REFLECTANCE_MODEL, new PhongModel());
-      root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { 0.9, 0.5, 0.2 }, 0.0, 0.8, 0.0, 1, 0.0));
-      root.InsertChild(new Plane(), Matrix4d.RotateX(-MathHelper.PiOver2));
-      return new DefaultRayScene
-      {
-        Intersectable = root,
-        BackgroundColor = new[] { 0.0, 0.0, 0.0 },
-        Camera = new StaticCamera(new Vector3d(0, 2, -3), new Vector3d(0, -0.6, 1), 60.0),
-        Sources = new LinkedList<ILightSource>(new ILightSource[] { new PointLightSource(new Vector3d(1, 3, 1), 1.3) }),
-      };
-    }
-    FloatImage whitted = Render(Scene(), new RayTracing(), 16, 1);
-    FloatImage path = Render(Scene(), new PathTracing(), 16, 1);
+    FloatImage whitted = Render(DiffusePlane(new PointLightSource(new Vector3d(1, 3, 1), 1.3)), new RayTracing(), 16, 1);
+    FloatImage path = Render(DiffusePlane(new PointLightSource(new Vector3d(1, 3, 1), 1.3)), new PathTracing(), 16, 1);
     for (int i = 0; i < whitted.Data.Length; i++)
       Assert.Equal(whitted.Data[i], path.Data[i], 5);
     Assert.True(Mean(whitted) > 0.05);
@@ -131,22 +133,8 @@ public class PathTracingTests
   [Fact]
   public void A_students_own_light_source_lights_a_path_traced_scene_as_it_lights_Whitted()
   {
-    IRayScene Scene()
-    {
-      var root = new CSGInnerNode(SetOperation.Union);
-      root.SetAttribute(PropertyName.REFLECTANCE_MODEL, new PhongModel());
-      root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new[] { 0.9, 0.5, 0.2 }, 0.0, 0.8, 0.0, 1, 0.0));
-      root.InsertChild(new Plane(), Matrix4d.RotateX(-MathHelper.PiOver2));
-      return new DefaultRayScene
-      {
-        Intersectable = root,
-        BackgroundColor = new[] { 0.0, 0.0, 0.0 },
-        Camera = new StaticCamera(new Vector3d(0, 2, -3), new Vector3d(0, -0.6, 1), 60.0),
-        Sources = new LinkedList<ILightSource>(new ILightSource[] { new StudentLight() }),
-      };
-    }
-    FloatImage whitted = Render(Scene(), new RayTracing(), 16, 1);
-    FloatImage path = Render(Scene(), new PathTracing(), 16, 1);
+    FloatImage whitted = Render(DiffusePlane(new StudentLight()), new RayTracing(), 16, 1);
+    FloatImage path = Render(DiffusePlane(new StudentLight()), new PathTracing(), 16, 1);
     for (int i = 0; i < whitted.Data.Length; i++)
       Assert.Equal(whitted.Data[i], path.Data[i], 5);
     Assert.True(Mean(whitted) > 0.02);
