@@ -27,19 +27,24 @@ public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixtu
 
   Task<JsonElement> Status() => studio.Client.GetFromJsonAsync<JsonElement>("/api/status");
 
-  [Fact]
-  public async Task A_building_script_is_busy_and_stop_makes_the_studio_idle_at_once()
+  /// <summary>Asks for a small render of <paramref name="scene"/> and waits until its script writes <paramref name="marker"/>.</summary>
+  async Task RenderUntil(string scene, string marker, string what)
   {
-    string marker = Path.Combine(studio.Folder, "stuck-started").Replace("\\", "/", StringComparison.Ordinal);
-    string name = await AddScript("StuckBuild.cs", StuckScripts.WhileBuilding(marker));
-    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", new { scene = name, settings = new { width = 8, height = 6 } }))
+    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", new { scene, settings = new { width = 8, height = 6 } }))
       Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
     DateTime deadline = DateTime.UtcNow + TimeSpan.FromMinutes(1);
     while (!File.Exists(marker))
     {
-      Assert.True(DateTime.UtcNow < deadline, "the script never started");
+      Assert.True(DateTime.UtcNow < deadline, what);
       await Task.Delay(20);
     }
+  }
+
+  [Fact]
+  public async Task A_building_script_is_busy_and_stop_makes_the_studio_idle_at_once()
+  {
+    string marker = Path.Combine(studio.Folder, "stuck-started").Replace("\\", "/", StringComparison.Ordinal);
+    await RenderUntil(await AddScript("StuckBuild.cs", StuckScripts.WhileBuilding(marker)), marker, "the script never started");
     JsonElement building = await Status();
     Assert.True(building.GetProperty("rendering").GetBoolean(), "busy while the script builds");
     Assert.Equal("compiling", building.GetProperty("phase").GetString());
@@ -54,15 +59,7 @@ public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixtu
   public async Task The_phase_is_rendering_once_the_script_is_built_and_idle_after_stop()
   {
     string marker = Path.Combine(studio.Folder, "stuck-rendering").Replace("\\", "/", StringComparison.Ordinal);
-    string name = await AddScript("StuckRender.cs", StuckScripts.WhileRendering(marker));
-    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", new { scene = name, settings = new { width = 8, height = 6 } }))
-      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
-    DateTime deadline = DateTime.UtcNow + TimeSpan.FromMinutes(1);
-    while (!File.Exists(marker))
-    {
-      Assert.True(DateTime.UtcNow < deadline, "the render never reached the script's texture");
-      await Task.Delay(20);
-    }
+    await RenderUntil(await AddScript("StuckRender.cs", StuckScripts.WhileRendering(marker)), marker, "the render never reached the script's texture");
     JsonElement rendering = await Status();
     Assert.True(rendering.GetProperty("rendering").GetBoolean());
     Assert.Equal("rendering", rendering.GetProperty("phase").GetString());
