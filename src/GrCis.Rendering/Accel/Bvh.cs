@@ -23,27 +23,18 @@ internal sealed class Bvh
   /// <summary>Maximal depth (for sizing the traversal stack).</summary>
   public readonly int Depth;
 
-  /// <summary>Per inner node, both children's boxes packed for the two-box SIMD tests (unused for leaves).</summary>
-  public readonly BvhChildBoxes[] Children;
-
-  Bvh(BvhNode[] nodes, int[] items, int depth, double childPad)
+  Bvh(BvhNode[] nodes, int[] items, int depth)
   {
     Nodes = nodes;
     Items = items;
     Depth = depth;
-    Children = new BvhChildBoxes[nodes.Length];
-    // A node without items is an inner node, except the single empty leaf of a tree over nothing (an empty mesh).
-    for (int i = 0; i < nodes.Length && items.Length > 0; i++)
-      if (nodes[i].Count == 0)
-        Children[i] = new BvhChildBoxes(nodes[i + 1], nodes[nodes[i].Index], childPad);
   }
 
   /// <summary>
   /// Builds over <paramref name="boxes"/>[ids[k]], split by <paramref name="centers"/>; <paramref name="ids"/>
-  /// is reordered into leaf order and kept as <see cref="Items"/>. <paramref name="childPad"/> grows the
-  /// packed child boxes (not <see cref="Nodes"/>) for kernels that need a conservative two-box test.
+  /// is reordered into leaf order and kept as <see cref="Items"/>. Traversals run on its <see cref="WideBvh"/>.
   /// </summary>
-  public static Bvh Build(Aabb[] boxes, Vector3d[] centers, int[] ids, BvhShape shape, double childPad = 0.0)
+  public static Bvh Build(Aabb[] boxes, Vector3d[] centers, int[] ids, BvhShape shape)
   {
     var nodes = new List<BvhNode>(Math.Max(1, 2 * ids.Length));
     int depth = 0;
@@ -51,7 +42,7 @@ internal sealed class Bvh
       new Builder(boxes, centers, ids, shape, nodes).Node(0, ids.Length, 1, ref depth);
     else
       nodes.Add(Leaf(new Aabb(Vector3d.Zero, Vector3d.Zero), 0, 0));
-    return new Bvh(nodes.ToArray(), ids, depth, childPad);
+    return new Bvh(nodes.ToArray(), ids, depth);
   }
 
   /// <summary>Builds over boxes split by their centres.</summary>

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using OpenTK.Mathematics;
@@ -10,6 +11,8 @@ namespace Rendering.Accel;
 public sealed partial class PreparedScene
 {
   /// <summary>Closest first-valid record over all members; false when the fast rule does not apply.</summary>
+  /// <remarks>The traversal stack is written before it is read: no zeroing of it per ray.</remarks>
+  [SkipLocalsInit]
   bool Closest(ref Query q, in Vector3d p0, in Vector3d p1)
   {
     // Zero direction components become tiny ones: no NaN from 0 · ∞ in the slab test, and the
@@ -31,30 +34,49 @@ public sealed partial class PreparedScene
     if (bvh == null)
       return true;
 
-    BvhNode[] nodes = bvh.Nodes;
-    BvhChildBoxes[] children = bvh.Children;
+    WideNode[] nodes = bvh.Nodes;
     int[] items = bvh.Items;
-    // Per-axis "direction is negative" as bits (bit a set: near child is the right one along axis a).
-    int negMask = (dx < 0.0 ? 1 : 0) | (dy < 0.0 ? 2 : 0) | (dz < 0.0 ? 4 : 0);
+    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
+    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
 
-    // Visit boxes overlapping [0, best]; "≤ best" keeps equal-T ties for the depth-first order rule.
-    if (!BvhChildBoxes.Slab(nodes[0], ox, oy, oz, ix, iy, iz, q.BestT, out _))
-      return true;
-    Vector128<double> vox = Vector128.Create(ox), voy = Vector128.Create(oy), voz = Vector128.Create(oz);
-    Vector128<double> vix = Vector128.Create(ix), viy = Vector128.Create(iy), viz = Vector128.Create(iz);
-
-    // A pushed child's box is known to be hit; only its entry t against the shrinking best is checked again.
-    Span<int> stack = stackSize <= 256 ? stackalloc int[stackSize] : new int[stackSize];
-    Span<double> stackT = stackSize <= 256 ? stackalloc double[stackSize] : new double[stackSize];
+    // Visit boxes overlapping [0, best]; "≤ best" keeps equal-T ties for the depth-first order rule (the winner is
+    // chosen by T, then member index, whatever the visiting order). Stack entries: an inner node (≥ 0) or a leaf lane
+    // (~(node·4 + lane)), with the entry t of its box, re-checked against the shrinking best when popped.
+    int size = bvh.StackSize;
+    Span<int> stack = size <= 256 ? stackalloc int[size] : new int[size];
+    Span<double> stackT = size <= 256 ? stackalloc double[size] : new double[size];
     int sp = 0;
-    int ni = 0;
+    int code = 0;
     while (true)
     {
-      ref BvhNode n = ref nodes[ni];
-      if (n.Count > 0)
+      if (code >= 0)
       {
-        int end = n.Index + n.Count;
-        for (int k = n.Index; k < end; k++)
+        // Four child boxes at once; the hit ones are pushed nearest last, so the nearest is popped next.
+        ref WideNode n = ref nodes[code];
+        int hit = n.Hit(vox, voy, voz, vix, viy, viz, q.BestT, out Vector256<double> entry);
+        int first = sp;
+        for (; hit != 0; hit &= hit - 1)
+        {
+          int lane = BitOperations.TrailingZeroCount(hit);
+          double t = entry.GetElement(lane);
+          int c = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);
+          // Insertion into the pushed run, farthest first.
+          int k = sp++;
+          for (; k > first && stackT[k - 1] < t; k--)
+          {
+            stackT[k] = stackT[k - 1];
+            stack[k] = stack[k - 1];
+          }
+          stackT[k] = t;
+          stack[k] = c;
+        }
+      }
+      else
+      {
+        int slot = ~code;
+        ref WideNode parent = ref nodes[slot / WideNode.Width];
+        int start = parent.Index[slot % WideNode.Width], end = start + parent.Count[slot % WideNode.Width];
+        for (int k = start; k < end; k++)
         {
           int item = items[k];
           // A clear miss of the member's world bounding sphere skips its transform chain (exact: conservative).
@@ -62,29 +84,6 @@ public sealed partial class PreparedScene
             continue;
           if (!TestMember(item, ref q, p0, p1))
             return false;
-        }
-      }
-      else
-      {
-        // Both children at once; near child first (by the ray's sign along the split axis).
-        int hit = children[ni].Hit(vox, voy, voz, vix, viy, viz, q.BestT, out Vector128<double> entry);
-        if (hit != 0)
-        {
-          // Lane/bit 0 is the left child (ni + 1), lane/bit 1 the right one (n.Index).
-          int nearLane = (negMask >> n.Axis) & 1, farLane = nearLane ^ 1;
-          int near = nearLane == 0 ? ni + 1 : n.Index, far = nearLane == 0 ? n.Index : ni + 1;
-          if ((hit & (1 << nearLane)) == 0)
-          {
-            ni = far;
-            continue;
-          }
-          if ((hit & (1 << farLane)) != 0)
-          {
-            stackT[sp] = entry.GetElement(farLane);
-            stack[sp++] = far;
-          }
-          ni = near;
-          continue;
         }
       }
       while (true)
@@ -95,7 +94,7 @@ public sealed partial class PreparedScene
         if (stackT[sp] <= q.BestT)
           break;
       }
-      ni = stack[sp];
+      code = stack[sp];
     }
   }
 

@@ -40,8 +40,7 @@ public sealed partial class PreparedScene : ISceneQuery
   readonly PreparedMember[] members;
   readonly Matrix4d[] chain;
   readonly int[] always;
-  readonly Bvh? bvh;
-  readonly int stackSize;
+  readonly WideBvh? bvh;
 
   // Union-merge semantics over all members; false: one member whose raw list the scene returns.
   readonly bool union;
@@ -112,8 +111,7 @@ public sealed partial class PreparedScene : ISceneQuery
     always = open.ToArray();
     if (union && bounded.Count > 0)
     {
-      bvh = Bvh.Build(boxes, bounded.ToArray(), BvhShape.SceneMembers);
-      stackSize = bvh.Depth + 2;
+      bvh = WideBvh.Collapse(Bvh.Build(boxes, bounded.ToArray(), BvhShape.SceneMembers));
     }
     else if (!union)
       always = members.Length > 0 ? new[] { 0 } : Array.Empty<int>();

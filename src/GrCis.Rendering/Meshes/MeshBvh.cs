@@ -11,18 +11,23 @@ namespace Rendering;
 /// <summary>
 /// A mesh's triangles under the generic <see cref="Bvh"/>, with the two allocation-free traversals a
 /// mesh needs: every hit along the whole line (negative t included, because CSG needs the complete
-/// list) and the nearest accepted or last rejected hit. Triangles are stored in leaf order and tested
+/// list) and the nearest accepted or last rejected hit (on the tree collapsed to four children per node,
+/// <see cref="WideBvh"/>). Triangles are stored in leaf order and tested
 /// with Möller–Trumbore (<see cref="MeshTriangles"/>).
 /// </summary>
 internal sealed class MeshBvh
 {
   readonly Bvh tree;
+  readonly WideBvh wide;
   readonly double[] tri;      // 9 doubles per triangle in leaf order: a, b − a, c − a
   readonly int[] triId;       // leaf order → original triangle handle
 
   public int TriangleCount => triId.Length;
 
   public int NodeCount => tree.Nodes.Length;
+
+  /// <summary>Nodes of the four-wide tree the fast queries walk.</summary>
+  public int WideNodeCount => wide.Nodes.Length;
 
   /// <summary>Size of the mesh's box (for relative tolerances).</summary>
   public double Extent { get; }
@@ -57,7 +62,8 @@ internal sealed class MeshBvh
     double magnitude = 0.0;
     for (int axis = 0; axis < 3 && n > 0; axis++)
       magnitude = Math.Max(magnitude, Math.Max(Math.Abs(root.Min[axis]), Math.Abs(root.Max[axis])));
-    tree = Bvh.Build(boxes, centroids, order, BvhShape.Triangles, 1e-9 * (Extent + magnitude));
+    tree = Bvh.Build(boxes, centroids, order, BvhShape.Triangles);
+    wide = WideBvh.Collapse(tree, 1e-9 * (Extent + magnitude));
 
     tri = new double[9 * n];
     triId = order;
@@ -138,6 +144,7 @@ internal sealed class MeshBvh
   /// accepts (<c>T &gt; 0</c>, <c>T² len2 &gt; RAY_EPSILON2</c>) when <paramref name="accepted"/>; otherwise the
   /// last hit in that order among those it rejects. Allocation-free, nearest boxes first, pruned by the best so far.
   /// </summary>
+  [SkipLocalsInit]   // the stack is written before it is read: no zeroing of it per query
   public bool Nearest(in Vector3d p0, in Vector3d p1, double len2, bool accepted, out MeshHit best)
   {
     best = default;
@@ -152,52 +159,45 @@ internal sealed class MeshBvh
     bool found = false;
     double bestT = accepted ? double.PositiveInfinity : double.NegativeInfinity;
     int bestTri = 0;
-    if (!LineBox(0, ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar))
-      return false;
-    Vector128<double> vox = Vector128.Create(ox), voy = Vector128.Create(oy), voz = Vector128.Create(oz);
-    Vector128<double> vix = Vector128.Create(ix), viy = Vector128.Create(iy), viz = Vector128.Create(iz);
+    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
+    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
+    WideNode[] nodes = wide.Nodes;
 
-    // Each entry: a node and the line's parameter interval in its box, re-checked against the best when popped.
-    Span<NodeSpan> stack = stackalloc NodeSpan[128];
+    // Each entry: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)) and the line's parameter interval in its box,
+    // re-checked against the best when popped. The root has no box of its own: its lanes are tested first.
+    int size = wide.StackSize;
+    Span<NodeSpan> stack = size <= 256 ? stackalloc NodeSpan[size] : new NodeSpan[size];
     int sp = 0;
-    stack[sp++] = new NodeSpan(0, rootNear, rootFar);
+    stack[sp++] = new NodeSpan(0, double.NegativeInfinity, double.PositiveInfinity);
     while (sp > 0)
     {
       NodeSpan e = stack[--sp];
       // Accepted: T in (0, best]; rejected: T in [best, limit].
       if (accepted ? (e.Far <= 0.0 || e.Near > bestT) : (e.Near > limit || e.Far < bestT))
         continue;
-      int node = e.Node;
-      ref BvhNode n = ref tree.Nodes[node];
-      if (n.Count == 0)
+      int code = e.Node;
+      if (code >= 0)
       {
-        int left = node + 1, right = n.Index;
-        int mask = tree.Children[node].Cross(vox, voy, voz, vix, viy, viz, out Vector128<double> near, out Vector128<double> far);
-        if (mask == 0)
-          continue;
-        if (sp + 2 > stack.Length)
+        ref WideNode n = ref nodes[code];
+        int mask = n.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
+        // The boxes more likely to hold the answer are popped first: nearest entry for the first accepted hit,
+        // farthest exit for the last rejected one. Pushed in insertion order, most likely last.
+        int first = sp;
+        for (; mask != 0; mask &= mask - 1)
         {
-          // Degenerate (very deep) tree: a heap stack once.
-          Span<NodeSpan> bigger = new NodeSpan[stack.Length * 2];
-          stack.CopyTo(bigger);
-          stack = bigger;
+          int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
+          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
+          int k = sp++;
+          for (; k > first && (accepted ? stack[k - 1].Near < s.Near : stack[k - 1].Far > s.Far); k--)
+            stack[k] = stack[k - 1];
+          stack[k] = s;
         }
-        var l = new NodeSpan(left, near.GetElement(0), far.GetElement(0));
-        var r = new NodeSpan(right, near.GetElement(1), far.GetElement(1));
-        if (mask != 3)
-        {
-          stack[sp++] = mask == 1 ? l : r;
-          continue;
-        }
-        // The child more likely to hold the answer is popped first: nearest entry for the first accepted
-        // hit, farthest exit for the last rejected one.
-        bool rightFirst = accepted ? r.Near < l.Near : r.Far > l.Far;
-        stack[sp++] = rightFirst ? l : r;
-        stack[sp++] = rightFirst ? r : l;
         continue;
       }
-      int end = n.Index + n.Count;
-      for (int k = n.Index; k < end; k++)
+      int slot = ~code;
+      ref WideNode parent = ref nodes[slot / WideNode.Width];
+      int start = parent.Index[slot % WideNode.Width], end = start + parent.Count[slot % WideNode.Width];
+      for (int k = start; k < end; k++)
       {
         if (!Triangle(k, ox, oy, oz, dx, dy, dz, out double t, out double u, out double v, out bool front))
           continue;

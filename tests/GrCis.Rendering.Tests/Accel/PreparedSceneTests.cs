@@ -135,6 +135,61 @@ public class PreparedSceneTests
   }
 
   [Fact]
+  public void Four_wide_bvh_over_hundreds_of_solids_answers_as_the_lists_do()
+  {
+    // 300 spheres and cubes, scaled and placed at random so that many overlap and many boxes nest, touch or
+    // coincide (twins); rays from outside, from inside members and from hit points, some axis-parallel.
+    var r = new Random(26);
+    var root = new CSGInnerNode(SetOperation.Union);
+    var group = new CSGInnerNode(SetOperation.Union);
+    for (int k = 0; k < 300; k++)
+    {
+      ISolid solid = k % 3 == 0 ? new Cube() : new Sphere();
+      Matrix4d toParent = Matrix4d.Scale(0.05 + 0.4 * r.NextDouble()) *
+                          Matrix4d.CreateTranslation(6.0 * r.NextDouble() - 3.0, 6.0 * r.NextDouble() - 3.0, 6.0 * r.NextDouble() - 3.0);
+      (k % 2 == 0 ? root : group).InsertChild(solid, toParent);
+      if (k % 50 == 0)
+        root.InsertChild(k % 3 == 0 ? new Cube() : new Sphere(), toParent);   // a twin: equal T, the first one wins
+    }
+    root.InsertChild(group, Matrix4d.CreateTranslation(0.1, 0.0, 0.0));
+    PreparedScene ps = PreparedScene.Prepare(root);
+    Assert.True(ps.BoundedCount > 300);
+    var lists = new SceneLists(root);
+
+    int hits = 0, blocked = 0;
+    for (int n = 0; n < 20000; n++)
+    {
+      var p0 = new Vector3d(10.0 * r.NextDouble() - 5.0, 10.0 * r.NextDouble() - 5.0, 10.0 * r.NextDouble() - 5.0);
+      var p1 = new Vector3d(r.NextDouble() - 0.5, r.NextDouble() - 0.5, r.NextDouble() - 0.5);
+      if (n % 5 == 0)
+        p1 = -p0 + new Vector3d(0.3 * r.NextDouble(), 0.3 * r.NextDouble(), 0.3 * r.NextDouble());   // through the crowd
+      if (n % 7 == 0)
+        p1 = new Vector3d(n % 2 == 0 ? 0.0 : -0.0, p1.Y, n % 3 == 0 ? 0.0 : p1.Z);
+      if (n % 4 == 1 && lists.FirstHit(p0, p1) is Intersection start)
+      {
+        // From a surface point on, as secondary and shadow rays start.
+        p0 = start.CoordWorld;
+        p1 = new Vector3d(r.NextDouble() - 0.5, r.NextDouble() - 0.5, r.NextDouble() - 0.5);
+      }
+      Intersection? a = lists.FirstHit(p0, p1);
+      Intersection? b = ps.FirstHit(p0, p1);
+      Assert.Equal(a == null, b == null);
+      if (a != null && b != null)
+      {
+        hits++;
+        Assert.Same(a.Solid, b.Solid);
+        Assert.Equal(a.T, b.T);
+        Assert.Equal(a.Enter, b.Enter);
+      }
+      bool blocks = lists.AnyHit(p0, p1);
+      Assert.Equal(blocks, ps.AnyHit(p0, p1));
+      if (blocks)
+        blocked++;
+    }
+    Assert.True(hits > 5000 && blocked > 2000, $"{hits} hits, {blocked} blocked");
+  }
+
+  [Fact]
   public void Fast_path_rarely_falls_back_on_a_flake()
   {
     IRayScene scene = TestScenes.Flake9(2);

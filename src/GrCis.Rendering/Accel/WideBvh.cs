@@ -1,0 +1,111 @@
+using System;
+using System.Collections.Generic;
+
+namespace Rendering.Accel;
+
+/// <summary>
+/// A <see cref="Bvh"/> collapsed to four children per node (<see cref="WideNode"/>): one SIMD step tests four boxes,
+/// and a ray visits about half as many nodes. Built from the binary tree by pulling up grandchildren: while a node has
+/// fewer than four children, its inner child of largest surface area is replaced by that child's two children. The
+/// leaves, and so <see cref="Items"/>, are the binary tree's. The traversals (<see cref="PreparedScene"/>,
+/// <see cref="MeshBvh"/>) pick the answer by T and then by item, not by visiting order, so the order of a node's lanes
+/// only affects speed.
+/// </summary>
+internal sealed class WideBvh
+{
+  public readonly WideNode[] Nodes;
+
+  /// <summary>Item ids in leaf order (the binary tree's).</summary>
+  public readonly int[] Items;
+
+  /// <summary>Traversal stack entries that can be live at once (each step pops one and pushes at most four).</summary>
+  public readonly int StackSize;
+
+  WideBvh(WideNode[] nodes, int[] items, int stackSize)
+  {
+    Nodes = nodes;
+    Items = items;
+    StackSize = stackSize;
+  }
+
+  /// <summary>
+  /// Collapses <paramref name="tree"/>. Every box is grown by <paramref name="pad"/>: a padded test may keep a box an
+  /// exact one would drop, never the reverse, which is all exactness needs when the item tests decide.
+  /// </summary>
+  public static WideBvh Collapse(Bvh tree, double pad = 0.0)
+  {
+    var nodes = new List<WideNode>();
+    if (tree.Items.Length == 0)
+      nodes.Add(default);   // a tree over nothing: one node without lanes
+    else
+      new Collapser(tree, pad, nodes).Node(0);
+    return new WideBvh(nodes.ToArray(), tree.Items, (WideNode.Width - 1) * tree.Depth + 2);
+  }
+
+  readonly struct Collapser(Bvh tree, double pad, List<WideNode> nodes)
+  {
+    /// <summary>Adds the wide node whose children are those of binary node <paramref name="binary"/> (or the node itself, a leaf root).</summary>
+    public int Node(int binary)
+    {
+      BvhNode[] b = tree.Nodes;
+      Span<int> picks = stackalloc int[WideNode.Width];
+      int count;
+      if (b[binary].Count > 0)
+      {
+        // Only the root can be a leaf here: a one-lane node over it.
+        picks[0] = binary;
+        count = 1;
+      }
+      else
+      {
+        picks[0] = binary + 1;
+        picks[1] = b[binary].Index;
+        count = 2;
+      }
+      while (count < WideNode.Width)
+      {
+        int widest = -1;
+        double area = -1.0;
+        for (int k = 0; k < count; k++)
+          if (b[picks[k]].Count == 0 && HalfArea(b[picks[k]]) > area)
+          {
+            area = HalfArea(b[picks[k]]);
+            widest = k;
+          }
+        if (widest < 0)
+          break;
+        // Its two children take its place, in order: lanes stay in the binary tree's left-to-right order.
+        int inner = picks[widest];
+        for (int k = count; k > widest + 1; k--)
+          picks[k] = picks[k - 1];
+        picks[widest] = inner + 1;
+        picks[widest + 1] = b[inner].Index;
+        count++;
+      }
+
+      int self = nodes.Count;
+      nodes.Add(default);
+      var node = new WideNode();
+      for (int lane = 0; lane < count; lane++)
+      {
+        ref BvhNode child = ref b[picks[lane]];
+        node.SetBox(lane, child, pad);
+        if (child.Count > 0)
+        {
+          node.Index[lane] = child.Index;
+          node.Count[lane] = child.Count;
+        }
+        else
+          node.Index[lane] = Node(picks[lane]);
+      }
+      nodes[self] = node;
+      return self;
+    }
+
+    static double HalfArea(in BvhNode n)
+    {
+      double x = n.MaxX - n.MinX, y = n.MaxY - n.MinY, z = n.MaxZ - n.MinZ;
+      return x * y + y * z + z * x;
+    }
+  }
+}
