@@ -34,6 +34,9 @@ public sealed partial class PreparedScene
     if (bvh == null)
       return true;
 
+    // Most rays of a small scene miss all of its closed members: one scalar box test, before any set-up.
+    if (!WideNode.Slab(bvh.Root, ox, oy, oz, ix, iy, iz, q.BestT, out _))
+      return true;
     WideNode[] nodes = bvh.Nodes;
     int[] items = bvh.Items;
     Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);

@@ -18,12 +18,16 @@ internal sealed class WideBvh
   /// <summary>Item ids in leaf order (the binary tree's).</summary>
   public readonly int[] Items;
 
+  /// <summary>The box around everything (the binary tree's root): one scalar test sends a ray that misses it all away early.</summary>
+  public readonly BvhNode Root;
+
   /// <summary>Traversal stack entries that can be live at once (each step pops one and pushes at most four).</summary>
   public readonly int StackSize;
 
-  WideBvh(WideNode[] nodes, int[] items, int stackSize)
+  WideBvh(WideNode[] nodes, BvhNode root, int[] items, int stackSize)
   {
     Nodes = nodes;
+    Root = root;
     Items = items;
     StackSize = stackSize;
   }
@@ -39,7 +43,7 @@ internal sealed class WideBvh
       nodes.Add(default);   // a tree over nothing: one node without lanes
     else
       new Collapser(tree, pad, nodes).Node(0);
-    return new WideBvh(nodes.ToArray(), tree.Items, (WideNode.Width - 1) * tree.Depth + 2);
+    return new WideBvh(nodes.ToArray(), tree.Nodes[0], tree.Items, (WideNode.Width - 1) * tree.Depth + 2);
   }
 
   readonly struct Collapser(Bvh tree, double pad, List<WideNode> nodes)

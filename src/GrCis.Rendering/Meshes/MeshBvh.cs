@@ -159,16 +159,18 @@ internal sealed class MeshBvh
     bool found = false;
     double bestT = accepted ? double.PositiveInfinity : double.NegativeInfinity;
     int bestTri = 0;
+    if (!LineBox(0, ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar))
+      return false;
     Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
     Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
     WideNode[] nodes = wide.Nodes;
 
     // Each entry: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)) and the line's parameter interval in its box,
-    // re-checked against the best when popped. The root has no box of its own: its lanes are tested first.
+    // re-checked against the best when popped; the root's interval is that of the whole mesh's box.
     int size = wide.StackSize;
     Span<NodeSpan> stack = size <= 256 ? stackalloc NodeSpan[size] : new NodeSpan[size];
     int sp = 0;
-    stack[sp++] = new NodeSpan(0, double.NegativeInfinity, double.PositiveInfinity);
+    stack[sp++] = new NodeSpan(0, rootNear, rootFar);
     while (sp > 0)
     {
       NodeSpan e = stack[--sp];
