@@ -121,12 +121,12 @@ sealed partial class MainForm : Form
     };
     controller.ProgressChanged += (_, e) => progress.Value = (int)Math.Round(e.Fraction * progress.Maximum);
     controller.RenderCompleted += (_, e) => Finished(e.Result);
-    controller.Error += (_, message) =>
+    controller.Error += (_, e) =>
     {
       // A script that failed to build (a save watched with "Re-render on save" too) leaves nothing running.
       if (!controller.IsBusy)
         Stopped();
-      MessageBox.Show(this, message, Text, MessageBoxButtons.OK, MessageBoxIcon.Warning);
+      MessageBox.Show(this, e.Message, Text, MessageBoxButtons.OK, MessageBoxIcon.Warning);
     };
     controller.History.Changed += (_, _) => ShowHistoryButtons();
     controller.ScriptChanged += (_, _) => Started();

@@ -4,6 +4,8 @@ using System.Globalization;
 using System.IO;
 using System.Linq;
 using System.Threading;
+using GrCis.Scripting;
+using GrCis.Scripting.Compilation;
 using Microsoft.CodeAnalysis;
 
 namespace GrCis.Editing;
@@ -18,6 +20,11 @@ internal static class DocumentedReferences
 {
   // The contract assemblies whose types System.Private.CoreLib implements and scripts use most.
   static readonly string[] CoreLibContracts = { "System.Runtime", "System.Collections", "System.Console", "System.Runtime.Intrinsics" };
+
+  /// <summary>What a script compiles against (<see cref="ScriptCompiler.References"/>), the modules' with their own doc comments.</summary>
+  public static IReadOnlyList<MetadataReference> For(IReadOnlyList<ScriptModule> modules) =>
+    With(FrameworkReferences.All).Concat(modules.Select(m => MetadataReference.CreateFromImage(m.Image,
+      documentation: m.Documentation.Length > 0 ? XmlDocumentationProvider.CreateFromBytes(m.Documentation) : null))).ToList();
 
   public static IReadOnlyList<MetadataReference> With(IEnumerable<MetadataReference> references)
   {

@@ -43,7 +43,7 @@ public sealed class ScriptAssistant : IDisposable
       usings: ScriptCompiler.ScriptImports(modules), allowUnsafe: true, nullableContextOptions: NullableContextOptions.Disable);
     workspace.AddProject(ProjectInfo.Create(projectId, VersionStamp.Create(), "Scene", "Scene", LanguageNames.CSharp,
       isSubmission: true, compilationOptions: options, parseOptions: parse,
-      metadataReferences: DocumentedReferences.With(ScriptCompiler.References(modules)), hostObjectType: typeof(ScriptGlobals)));
+      metadataReferences: DocumentedReferences.For(modules), hostObjectType: typeof(ScriptGlobals)));
     documentId = DocumentId.CreateNewId(projectId);
     workspace.AddDocument(DocumentInfo.Create(documentId, "Scene.cs", sourceCodeKind: SourceCodeKind.Script,
       loader: TextLoader.From(TextAndVersion.Create(SourceText.From(""), VersionStamp.Create()))));

@@ -37,7 +37,13 @@ public sealed class RenderPlan
   /// <summary>The renderer to render with: the script's, else a new one from the settings.</summary>
   public ImageSynthesizer CreateSynthesizer() => Synthesizer ?? Settings.CreateSynthesizer();
 
-  /// <summary>The execution options (threads, tiles, seed, sampler) of frame <paramref name="frame"/>; only <paramref name="tiles"/> when given.</summary>
-  public RenderOptions CreateOptions(int frame = 0, IReadOnlyList<Tile>? tiles = null) =>
-    Settings.ToRenderOptions(frame) with { Tiles = tiles };
+  /// <summary>
+  /// The execution options (threads, tiles, seed, sampler) of frame <paramref name="frame"/>; only <paramref name="tiles"/>
+  /// when given; on <paramref name="threads"/> threads when given (an animation frame rendered beside others), else the settings'.
+  /// </summary>
+  public RenderOptions CreateOptions(int frame = 0, IReadOnlyList<Tile>? tiles = null, int? threads = null)
+  {
+    RenderOptions options = Settings.ToRenderOptions(frame) with { Tiles = tiles };
+    return threads is int n ? options with { Threads = n } : options;
+  }
 }

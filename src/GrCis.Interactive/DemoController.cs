@@ -174,8 +174,8 @@ public sealed partial class DemoController : IDisposable
 
   public event EventHandler<RenderCompletedEventArgs>? RenderCompleted;
 
-  /// <summary>A message for the user (script error, save failure); no stack traces.</summary>
-  public event EventHandler<string>? Error;
+  /// <summary>A message for the user (script error, save failure; no stack traces) with the script places it is about.</summary>
+  public event EventHandler<DemoErrorEventArgs>? Error;
 
   /// <summary>Raised when a watched script changed on disk, just before the re-render starts.</summary>
   public event EventHandler<ScriptChangedEventArgs>? ScriptChanged;
@@ -257,7 +257,7 @@ public sealed partial class DemoController : IDisposable
       // Not busy any more when the message arrives (a window enables Render again on it).
       BuildEnded(id);
       if (!building.IsCancellationRequested)
-        Raise(Error, ex.Message);
+        Raise(Error, DemoErrorEventArgs.For(ex.Message, ex));
       return null;
     }
 
@@ -266,7 +266,7 @@ public sealed partial class DemoController : IDisposable
     {
       BuildEnded(id);
       if (!building.IsCancellationRequested)
-        Raise(Error, $"{shortfall}; choose a smaller size (a render here holds its previews and noise estimate too)");
+        Raise(Error, DemoErrorEventArgs.For($"{shortfall}; choose a smaller size (a render here holds its previews and noise estimate too)", null));
       return null;
     }
 
@@ -309,8 +309,8 @@ public sealed partial class DemoController : IDisposable
         History.Add(RenderRecord.From(e.Result));
         // A script's or module's error already names its place (file(line,col): runtime error: …), as grcis prints it.
         if (e.Result.Error != null)
-          Error?.Invoke(this, e.Result.Error is GrCis.Scripting.ScriptRuntimeException located
-            ? located.Message : $"Rendering failed: {e.Result.Error.Message}");
+          Error?.Invoke(this, DemoErrorEventArgs.For(e.Result.Error is GrCis.Scripting.ScriptRuntimeException located
+            ? located.Message : $"Rendering failed: {e.Result.Error.Message}", e.Result.Error));
         RenderCompleted?.Invoke(this, e);
       };
       s.Start();
@@ -363,7 +363,7 @@ public sealed partial class DemoController : IDisposable
     }
     catch (Exception ex) when (ex is Rendering.Imaging.ImageSaveException or InvalidOperationException or ArgumentException)
     {
-      Raise(Error, ex.Message);
+      Raise(Error, DemoErrorEventArgs.For(ex.Message, null));
       return false;
     }
   }

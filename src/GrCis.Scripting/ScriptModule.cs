@@ -60,6 +60,9 @@ public sealed class ScriptModule
   /// <summary>The assembly's bytes: scripts compiled later reference them.</summary>
   internal byte[] Image { get; }
 
+  /// <summary>The XML documentation of the module's doc comments (empty when it has none), for the editor's hover and completion.</summary>
+  internal byte[] Documentation { get; init; } = [];
+
   internal ScriptLoadContext LoadContext { get; }
 
   /// <summary>The compiled files, to map a stack frame back to the user's line.</summary>

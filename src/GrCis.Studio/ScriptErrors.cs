@@ -1,21 +1,22 @@
 using System.Collections.Generic;
-using System.Globalization;
-using System.Text.RegularExpressions;
+using System.IO;
+using System.Linq;
+using GrCis.Scripting;
 
 namespace GrCis.Studio;
 
-/// <summary>The compiler diagnostics in a script error message (<c>path(line,col): error CS0103: …</c>, one per line).</summary>
-internal static partial class ScriptErrors
+/// <summary>
+/// The diagnostics the editor marks: those in the script it shows. A module's diagnostics name another file, so they
+/// stay in the message and are not drawn at the same line numbers of the script.
+/// </summary>
+internal static class ScriptErrors
 {
-  [GeneratedRegex(@"^.*\((?<line>\d+),(?<column>\d+)\): (?<severity>error|warning) (?<id>[A-Z]+\d+): (?<message>.*)$", RegexOptions.Multiline)]
-  private static partial Regex Diagnostic();
-
-  public static IReadOnlyList<ScriptError> Parse(string message)
+  public static IReadOnlyList<ScriptError> In(IEnumerable<ScriptDiagnostic> diagnostics, string? scriptPath)
   {
-    var list = new List<ScriptError>();
-    foreach (Match m in Diagnostic().Matches(message))
-      list.Add(new ScriptError(int.Parse(m.Groups["line"].Value, CultureInfo.InvariantCulture), int.Parse(m.Groups["column"].Value, CultureInfo.InvariantCulture),
-                               m.Groups["severity"].Value, m.Groups["id"].Value, m.Groups["message"].Value.TrimEnd('\r')));
-    return list;
+    if (scriptPath == null)
+      return [];
+    string full = Path.GetFullPath(scriptPath);
+    return diagnostics.Where(d => d.Path == full)
+      .Select(d => new ScriptError(d.Line, d.Column, d.Severity, d.Id, d.Message)).ToList();
   }
 }

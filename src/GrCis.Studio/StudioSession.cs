@@ -86,12 +86,12 @@ public sealed class StudioSession : IDisposable
       }
       Show(e.Result.Image, e.Result.Gamma, 1.0);
     };
-    Controller.Error += (_, message) =>
+    Controller.Error += (_, e) =>
     {
       lock (sync)
       {
-        error = message;
-        diagnostics = ScriptErrors.Parse(message);
+        error = e.Message;
+        diagnostics = ScriptErrors.In(e.Diagnostics, Controller.Selected?.Path);
         errorSequence++;
       }
       Changed();
@@ -159,6 +159,7 @@ public sealed class StudioSession : IDisposable
   async Task CheckAsync(SceneEntry entry, long id)
   {
     string? message = null;
+    IReadOnlyList<ScriptError> found = [];
     try
     {
       await Controller.ReadScriptValuesAsync(entry).ConfigureAwait(false);
@@ -166,6 +167,7 @@ public sealed class StudioSession : IDisposable
     catch (Exception e) when (e is SceneEvaluationException or ArgumentException)
     {
       message = e.Message;
+      found = ScriptErrors.In(DemoErrorEventArgs.DiagnosticsOf(e), entry.Path);
     }
     catch (OperationCanceledException)
     {
@@ -180,7 +182,7 @@ public sealed class StudioSession : IDisposable
       if (message != null)
       {
         error = message;
-        diagnostics = ScriptErrors.Parse(message);
+        diagnostics = found;
         errorSequence++;
       }
     }

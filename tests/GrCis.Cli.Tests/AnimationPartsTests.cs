@@ -70,7 +70,8 @@ public class AnimationPartsTests
     var size = new ImageSize(6, 4);
     var store = new FrameStore(FramePattern.Parse("f##.png", dir.Path), size, 1.0);
     store.Prepare();
-    var renderer = new FrameRenderer(TestAnimations.Clock(), new RenderSettings { Width = size.Width, Height = size.Height }, new Rendering.AnimationTimeline(0, 10, 1));
+    RenderPlan settings = Precedence.Resolve(new RenderSettings { Width = size.Width, Height = size.Height }, GivenSettings.None, null);
+    var renderer = new FrameRenderer(TestAnimations.Clock(), settings, new Rendering.AnimationTimeline(0, 10, 1));
     var saved = new System.Collections.Generic.List<int>();
     int n = new FrameScheduler(renderer, store).Run(Enumerable.Range(2, count).ToList(), mode, threads, saved.Add, default);
 

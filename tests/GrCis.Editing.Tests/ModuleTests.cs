@@ -30,10 +30,14 @@ public sealed class ModuleTests
       const string source = "var t = new Homework.CheckerTexture(); t.";
       CompletionResult result = await assistant.CompleteAsync(source, source.Length);
       Assert.Contains(result.Items, i => i.Label == "Frequency");
+      CompletionEntry? frequency = await assistant.DescribeAsync(source, source.Length, "Frequency");
+      Assert.Equal("Squares per unit.", frequency?.Documentation);
 
-      HoverInfo? hover = await assistant.HoverAsync(source, source.IndexOf("Checker", System.StringComparison.Ordinal) + 1);
+      const string declared = "Homework.CheckerTexture t = null;";
+      HoverInfo? hover = await assistant.HoverAsync(declared, declared.IndexOf("Checker", System.StringComparison.Ordinal) + 1);
       Assert.NotNull(hover);
       Assert.Contains("CheckerTexture", hover.Text);
+      Assert.Equal("A two-colour checkerboard texture.", hover.Documentation);
     }
     finally
     {

@@ -65,4 +65,46 @@ public sealed class RenderPlanTests : IDisposable
     Assert.IsType<SimpleImageSynthesizer>(prepared.Plan.CreateSynthesizer());
     Assert.Same(prepared.Synthesizer, RenderJob.From(prepared).Renderer);
   }
+
+  [Fact]
+  public void An_animation_frame_gets_the_options_of_a_still_with_the_same_settings()
+  {
+    PreparedRender prepared = new RenderRequest(new BuiltInSceneSource("Two spheres"), Odd).Prepare();
+    var frames = new FrameRenderer(prepared.Scene, prepared.Plan, new AnimationTimeline(0, 1, 4));
+
+    Assert.Equal(prepared.Plan.CreateOptions(), frames.Parts.CreateOptions(0, Odd.Threads));
+    Assert.Equal(prepared.Plan.CreateOptions(frame: 3), frames.Parts.CreateOptions(3, Odd.Threads));
+    // Frames rendered side by side, one thread each: only the thread count differs.
+    Assert.Equal(prepared.Plan.CreateOptions(frame: 3) with { Threads = 1 }, frames.Parts.CreateOptions(3, 1));
+    Assert.Same(prepared.Plan.Settings, frames.Settings);
+  }
+
+  [Fact]
+  public void An_animation_frame_builds_the_function_and_sampler_a_still_builds()
+  {
+    PreparedRender prepared = new RenderRequest(new BuiltInSceneSource("Two spheres"), Odd).Prepare();
+    var frames = new FrameRenderer(prepared.Scene, prepared.Plan, new AnimationTimeline(0, 1, 4));
+    IImageFunction still = prepared.Plan.CreateImageFunction(), frame = frames.Parts.CreateFunction(null);
+    Assert.IsType<PathTracing>(frame);
+    Assert.Equal(((RayCasting)still).Accel, ((RayCasting)frame).Accel);
+    ImageSynthesizer stillSampler = prepared.Plan.CreateSynthesizer(), frameSampler = frames.Parts.CreateSynthesizer();
+    Assert.Equal(stillSampler.GetType(), frameSampler.GetType());
+    Assert.Equal((stillSampler.Width, stillSampler.Height, stillSampler.SamplesPerPixel, stillSampler.Gamma),
+                 (frameSampler.Width, frameSampler.Height, frameSampler.SamplesPerPixel, frameSampler.Gamma));
+  }
+
+  [Fact]
+  public void An_animation_frame_renders_with_a_scripts_own_sampler_as_a_still_does()
+  {
+    string path = Path.Combine(dir, "Frames.cs");
+    File.WriteAllText(path, """
+      Rendering.Scenes.FiveBalls(scene);
+      context[PropertyName.CTX_SYNTHESIZER] = new SimpleImageSynthesizer();
+      """);
+    using var source = new ScriptSceneSource(path, "", Array.Empty<string>());
+    PreparedRender prepared = new RenderRequest(source, Odd with { Algorithm = RenderAlgorithm.RayTracing }).Prepare();
+    var frames = new FrameRenderer(prepared.Scene, prepared.Plan, new AnimationTimeline(0, 1, 4));
+    Assert.IsType<SimpleImageSynthesizer>(frames.Parts.CreateSynthesizer());
+    Assert.False(frames.Sequential);
+  }
 }

@@ -58,7 +58,7 @@ public class DemoControllerTests
     Assert.True(demo.SaveImage(tmp.File("out.png")));
     Assert.True(PngFile.Load(tmp.File("out.png")).ContentEquals(r.ToRgb8()));
     string? error = null;
-    demo.Error += (_, m) => error = m;
+    demo.Error += (_, e) => error = e.Message;
     Assert.False(demo.SaveImage(tmp.File("no/such/dir/out.png")));
     Assert.NotNull(error);
   }
@@ -67,15 +67,20 @@ public class DemoControllerTests
   public async Task A_broken_script_is_reported_not_thrown()
   {
     using var tmp = new TempDir();
-    File.WriteAllText(tmp.File("Bad.cs"), "nonsense here");
+    File.WriteAllText(tmp.File("Bad.cs"), "// first\nnonsense here");
     using var evaluator = new GrCis.Scripting.ScriptHost();
     var catalog = new SceneCatalog(evaluator);
     using var demo = new DemoController(catalog) { Selected = catalog.AddScriptFile(tmp.File("Bad.cs")) };
-    string? error = null;
-    demo.Error += (_, m) => error = m;
+    DemoErrorEventArgs? error = null;
+    demo.Error += (_, e) => error = e;
     Assert.Null(await demo.RenderAsync());
-    Assert.Contains("Bad.cs", error);
+    Assert.Contains("Bad.cs", error!.Message);
+    // The places come as objects (a front end marks them without reading the message back).
+    Assert.NotEmpty(error.Diagnostics);
+    Assert.All(error.Diagnostics, d => Assert.Equal(Path.GetFullPath(tmp.File("Bad.cs")), d.Path));
+    Assert.Contains(error.Diagnostics, d => d.IsError && d.Line == 2);
   }
+
   [Fact]
   public async Task A_script_class_that_throws_while_rendering_is_reported_with_its_file_and_line_as_grcis_reports_it()
   {
@@ -97,12 +102,14 @@ public class DemoControllerTests
     var catalog = new SceneCatalog(host);
     using var demo = new DemoController(catalog) { Settings = new RenderSettings { Width = 8, Height = 6 } };
     demo.Selected = catalog.AddScriptFile(path);
-    string? error = null;
-    demo.Error += (_, m) => error = m;
+    DemoErrorEventArgs? error = null;
+    demo.Error += (_, e) => error = e;
 
     RenderResult r = (await demo.RenderAsync())!;
 
     Assert.False(r.Succeeded);
-    Assert.Equal($"{path}(9,5): runtime error: InvalidOperationException: homework not finished", error);
+    Assert.Equal($"{path}(9,5): runtime error: InvalidOperationException: homework not finished", error!.Message);
+    GrCis.Scripting.ScriptDiagnostic d = Assert.Single(error.Diagnostics);
+    Assert.Equal((path, 9, 5, "error", "InvalidOperationException", "homework not finished"), (d.Path, d.Line, d.Column, d.Severity, d.Id, d.Message));
   }
 }

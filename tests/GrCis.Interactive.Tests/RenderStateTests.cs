@@ -111,7 +111,7 @@ public class RenderStateTests
       MemoryLimit = 1L << 30,
     };
     string? error = null;
-    demo.Error += (_, m) => error = m;
+    demo.Error += (_, e) => error = e.Message;
 
     Assert.Null(await demo.RenderAsync());
     Assert.StartsWith("a 16384x16384 image needs about 20.1 GiB of memory, but this process can use 1.0 GiB", error);

@@ -47,7 +47,7 @@ public class StuckScriptTests
     using (demo)
     {
       string? error = null;
-      demo.Error += (_, m) => error = m;
+      demo.Error += (_, e) => error = e.Message;
 
       // RenderAsync hands the script to a worker: the caller gets its task back at once.
       var clock = Stopwatch.StartNew();

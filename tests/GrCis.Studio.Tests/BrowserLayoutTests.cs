@@ -12,7 +12,8 @@ using static GrCis.Studio.Tests.BrowserTests;
 namespace GrCis.Studio.Tests;
 
 /// <summary>
-/// The studio's layout on a laptop's screen (1280x720) and a desktop's (1920x1080), in headless chromium: the image fitted
+/// The studio's layout on a laptop's screen (1280x720) and a desktop's (1920x1080), and in smaller windows (1024x700,
+/// 800x600: every header control whole, the image fitted), in headless chromium: the image fitted
 /// and centred, fully visible beside the 3D view and beside the editor, the header the same height after renders, the
 /// keys for Render and Stop, and axe-core's accessibility rules with no serious or critical violation, in the dark and
 /// the light theme. The screenshots of the 1280x720 run are the ones docs/studio.md shows
@@ -74,6 +75,49 @@ public sealed class BrowserLayoutTests(StudioFixture studio) : IClassFixture<Stu
   static void WaitIdle(IWebDriver browser, string what) =>
     Until(browser, () => browser.FindElement(By.Id("stats")).Text.Length > 0 && !browser.FindElement(By.Id("stop")).Enabled, what);
 
+  /// <summary>Every visible control of the header whole inside the header and the window (none cut off or under another), the parameters wide enough to type in.</summary>
+  static void AssertHeaderWhole(IWebDriver browser, int width, string state)
+  {
+    string cut = (string)Js(browser, """
+      const header = document.querySelector('header').getBoundingClientRect(), out = [], seen = [];
+      for (const e of document.querySelectorAll('header button, header a, header select, header input')) {
+        if (e.closest('[hidden]') || e.offsetParent === null) continue;
+        const r = e.getBoundingClientRect(), name = e.id || e.textContent;
+        if (r.left < 0 || r.right > innerWidth || r.top < header.top || r.bottom > header.bottom) out.push(name);
+        for (const [other, o] of seen)
+          if (r.left < o.right - 0.5 && o.left < r.right - 0.5 && r.top < o.bottom - 0.5 && o.top < r.bottom - 0.5) out.push(name + ' over ' + other);
+        seen.push([name, r]);
+      }
+      return out.join(', ');
+      """)!;
+    Assert.True(cut.Length == 0, $"{state}, {width} px wide: cut off: {cut}");
+    double[] param = Rect(browser, "param");
+    Assert.True(param[2] - param[0] >= 100, $"{state}, {width} px wide: the parameters field is {param[2] - param[0]:0} px wide");
+  }
+
+  [SkippableTheory]
+  [InlineData(1024, 700)]
+  [InlineData(800, 600)]
+  public void In_a_smaller_window_every_header_control_stays_whole_and_the_image_fits(int width, int height)
+  {
+    using ChromeDriver browser = Browser(width, height);
+    browser.Navigate().GoToUrl(studio.Server.Url);
+    Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
+    Js(browser, "document.getElementById('algorithm').value = ''; document.getElementById('spp').value = 1;");   // whatever ran before
+    AssertHeaderWhole(browser, width, "a built-in scene");
+    double header = HeaderHeight(browser);
+
+    // A script shows Edit too, the header's widest state.
+    File.WriteAllText(Path.Combine(studio.ScriptsFolder, "Balls.cs"), "Rendering.Scenes.FiveBalls(scene);\n");
+    RenderIn(browser, "Balls", 320, 240);
+    Until(browser, () => browser.FindElement(By.Id("edit")).Displayed, "the Edit button");
+    AssertHeaderWhole(browser, width, "a script");
+    Assert.Equal(header, HeaderHeight(browser));
+    AssertImageFittedAndVisible(browser, width, height);
+    AssertApart(Rect(browser, "canvas"), Rect(browser, "settingsPanel"), "the image and the settings");
+    Shot(browser, $"studio-render-{width}x{height}.png");
+  }
+
   [SkippableTheory]
   [InlineData(1280, 720)]
   [InlineData(1920, 1080)]
@@ -111,6 +155,7 @@ public sealed class BrowserLayoutTests(StudioFixture studio) : IClassFixture<Stu
     // The editor with an error: beside the image, not over it; the error stays above the image until dismissed.
     File.WriteAllText(Path.Combine(studio.ScriptsFolder, "Balls.cs"), "// Five balls\nRendering.Scenes.FiveBalls(scene);\n");
     RenderIn(browser, "Balls", 320, 240);
+    AssertHeaderWhole(browser, width, "a script");
     browser.FindElement(By.Id("edit")).Click();
     Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
     Js(browser, "document.querySelector('#editor .CodeMirror').CodeMirror.setValue(arguments[0]);", "// Five balls\nRendering.Scenes.FiveBals(scene);\n");

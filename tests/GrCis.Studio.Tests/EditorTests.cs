@@ -42,6 +42,25 @@ public sealed class EditorTests(StudioFixture studio) : IClassFixture<StudioFixt
     Assert.Equal(Good, File.ReadAllText(Path.Combine(studio.ScriptsFolder, "Balls.cs")));
   }
 
+  [Fact]
+  public async Task A_saved_script_that_throws_is_marked_at_the_line_that_threw()
+  {
+    await studio.RenderAndWait(new { scene = "Balls", settings = new { width = 32, height = 24 } });
+    using (HttpResponseMessage saved = await Save("Rendering.Scenes.FiveBalls(scene);\n\nthrow new System.InvalidOperationException(\"not yet\");\n"))
+      Assert.Equal(HttpStatusCode.NoContent, saved.StatusCode);
+    JsonElement failed = await WaitFor(s => s.GetProperty("diagnostics").GetArrayLength() > 0);
+    JsonElement d = Assert.Single(failed.GetProperty("diagnostics").EnumerateArray());
+    Assert.Equal(3, d.GetProperty("line").GetInt32());
+    Assert.Equal("InvalidOperationException", d.GetProperty("id").GetString());
+    Assert.Equal("not yet", d.GetProperty("message").GetString());
+    Assert.Contains("runtime error", failed.GetProperty("error").GetString());
+
+    using (HttpResponseMessage fixedSave = await Save(Good))
+      Assert.Equal(HttpStatusCode.NoContent, fixedSave.StatusCode);
+    await WaitFor(s => !s.GetProperty("rendering").GetBoolean() && s.GetProperty("diagnostics").GetArrayLength() == 0 &&
+                       s.GetProperty("error").ValueKind == JsonValueKind.Null);
+  }
+
   async Task<string> AddScript(string file, string text)
   {
     string path = Path.Combine(studio.ScriptsFolder, file);

@@ -142,9 +142,8 @@ public sealed class AnimateCommand
     }
     int skipped = plan.Frames.Count - todo.Count;
 
-    var parts = new FrameParts(settings, setup.ImageFunction, setup.Synthesizer);
-    var renderer = new FrameRenderer(setup.Scene, settings, plan.Timeline, open, parts);
-    foreach (string note in parts.Notes())
+    var renderer = new FrameRenderer(setup.Scene, setup.Plan, plan.Timeline, open);
+    foreach (string note in renderer.Parts.Notes())
       env.Error.WriteLine("grcis: note: " + note);
     if (open > 0.0 && (!renderer.IsAnimated || renderer.Sequential))
       env.Error.WriteLine("grcis: note: --shutter has no effect: " +

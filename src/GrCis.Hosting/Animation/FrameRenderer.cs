@@ -7,9 +7,9 @@ using Rendering.Imaging;
 namespace GrCis.Hosting;
 
 /// <summary>
-/// Renders one frame of an animation: moves a worker's scene to the frame's time and renders it
-/// with the render settings, the frame number mixed into every pixel's seed (so frames differ and
-/// each is reproducible alone, in any order, on any machine). With a shutter, samples are spread
+/// Renders one frame of an animation: moves a worker's scene to the frame's time and renders it with what the
+/// render plan builds (<see cref="FrameParts"/>), the frame number mixed into every pixel's seed (so frames differ
+/// and each is reproducible alone, in any order, on any machine). With a shutter, samples are spread
 /// over [t, t + shutter / fps] by <see cref="MotionBlurImageFunction"/>.
 /// </summary>
 public sealed class FrameRenderer
@@ -18,16 +18,17 @@ public sealed class FrameRenderer
   readonly bool animated;
   readonly FrameParts parts;
 
-  public FrameRenderer(IRayScene scene, RenderSettings settings, AnimationTimeline timeline, double shutter = 0.0, FrameParts? parts = null)
+  /// <param name="plan">What precedence decided (<see cref="PreparedRender.Plan"/>, <see cref="RenderJob.Plan"/>): every frame's
+  /// function, renderer and options come from it, as a still's do.</param>
+  public FrameRenderer(IRayScene scene, RenderPlan plan, AnimationTimeline timeline, double shutter = 0.0)
   {
     ArgumentNullException.ThrowIfNull(scene);
-    ArgumentNullException.ThrowIfNull(settings);
+    ArgumentNullException.ThrowIfNull(plan);
     ArgumentNullException.ThrowIfNull(timeline);
-    this.parts = parts ?? new FrameParts(settings);
+    parts = new FrameParts(plan);
     // The script's own objects may be bound to its scene: keep that very scene (no wrapper, no clones).
-    this.scene = this.parts.Sequential ? scene : SceneAnimation.AsTimeDependent(scene);
+    this.scene = parts.Sequential ? scene : SceneAnimation.AsTimeDependent(scene);
     animated = SceneCloner.IsTimeDependent(this.scene);
-    Settings = settings;
     Timeline = timeline;
     Shutter = shutter;
   }
@@ -35,7 +36,11 @@ public sealed class FrameRenderer
   /// <summary>True when frames must render one after another (the script's own objects are not copyable).</summary>
   public bool Sequential => parts.Sequential;
 
-  public RenderSettings Settings { get; }
+  /// <summary>Each frame's function, renderer and options (and the notes about them).</summary>
+  public FrameParts Parts => parts;
+
+  /// <summary>The settings after precedence (the plan's).</summary>
+  public RenderSettings Settings => parts.Plan.Settings;
 
   public AnimationTimeline Timeline { get; }
 
@@ -61,7 +66,7 @@ public sealed class FrameRenderer
     if (blur)
       function = new MotionBlurImageFunction(function) { FrameTime = time, Shutter = Shutter, Fps = Timeline.Fps };
     ImageSynthesizer synthesizer = parts.CreateSynthesizer();
-    RenderOptions options = Settings.ToRenderOptions(frame) with { Threads = threads };
+    RenderOptions options = parts.CreateOptions(frame, threads);
     return FrameRendering.Render(workerScene, function, synthesizer, options, progress, cancel).Image;
   }
 }

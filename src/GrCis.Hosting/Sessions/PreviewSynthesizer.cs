@@ -28,7 +28,7 @@ internal sealed class PreviewSynthesizer : ImageSynthesizer
     Height = inner.Height;
     Gamma = inner.Gamma;
     Adaptive = inner.Adaptive;
-    innerRectangles = Overrides(inner.GetType(), nameof(RenderRectangle), [typeof(FloatImage), typeof(int), typeof(int), typeof(int), typeof(int)]);
+    innerRectangles = Rendering.Accel.LibraryTypes.RendersOwnRectangles(inner.GetType());
   }
 
   /// <summary>The inner renderer renders its rectangles its own way (a subclass overrides RenderRectangle).</summary>

@@ -4,6 +4,7 @@ using System.Diagnostics;
 using System.Threading;
 using System.Threading.Tasks;
 using Rendering;
+using Rendering.Accel;
 using Rendering.Execution;
 using Rendering.Imaging;
 
@@ -124,8 +125,8 @@ public sealed class RenderSession : IDisposable
     try
     {
       // Only the library's own n×n grid takes its samples in passes; a subclass (adaptive, a student's) renders its own way.
-      if (Progressive && inner is SupersamplingImageSynthesizer { SuperXY: > 1 } grid && inner.GetType() == typeof(SupersamplingImageSynthesizer))
-        image = RenderPasses(job, grid, options, context, clock, token);
+      if (Progressive && LibraryTypes.TakesSamplesInPasses(inner))
+        image = RenderPasses(job, (SupersamplingImageSynthesizer)inner, options, context, clock, token);
       else
         image = RenderTiles(job, options, context, clock, token, out ticker);
     }

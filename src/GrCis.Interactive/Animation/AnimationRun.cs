@@ -27,9 +27,8 @@ public sealed partial class AnimationRun
   {
     Job = job ?? throw new ArgumentNullException(nameof(job));
     Timeline = timeline ?? throw new ArgumentNullException(nameof(timeline));
-    // The script's own function and renderer (copied per frame as grcis animate copies them), else the settings'.
-    var parts = new FrameParts(job.Settings, job.Prepared?.ImageFunction, job.Prepared?.Synthesizer);
-    frames = new FrameRenderer(job.Scene, job.Settings, timeline, 0.0, parts);
+    // The job's plan: the script's own function and renderer (copied per frame as grcis animate copies them), else the settings'.
+    frames = new FrameRenderer(job.Scene, job.Plan, timeline);
   }
 
   public RenderJob Job { get; }

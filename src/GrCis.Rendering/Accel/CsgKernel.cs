@@ -91,8 +91,7 @@ internal sealed class CsgKernel
     return new CsgKernel(nodes.ToArray(), steps.ToArray(), leaves);
   }
 
-  static bool IsLibraryCsg(ISceneNode node) =>
-    SubclassCheck.OverridesNothing(node, typeof(CSGInnerNode)) && ((CSGInnerNode)node).BoundingVolume == null;
+  static bool IsLibraryCsg(ISceneNode node) => LibraryTypes.IsKernelCsg(node);
 
   /// <summary>Appends <paramref name="node"/>'s subtree in depth-first order; its index, or -1 when it cannot be compiled.</summary>
   static int Add(ISceneNode node, int step, List<Node> nodes, List<Matrix4d> steps, List<IRecordSolid> solids)

@@ -51,6 +51,9 @@ internal struct PreparedMember
   public System.Collections.Generic.LinkedList<ITexture>? Textures;
   public object? Recursion;
 
+  /// <summary>Shaded by the library's Phong model and material, no recursion function (<see cref="LibraryTypes.IsLibraryPhong"/>).</summary>
+  public bool LibraryPhong;
+
   /// <summary>What a surface-only completion may leave out for this member (when the caller allows it).</summary>
   public HitCompletion Completion;
 

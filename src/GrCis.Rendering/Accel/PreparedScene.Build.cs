@@ -16,14 +16,13 @@ public sealed partial class PreparedScene
     bool union = false;
     if (root != null)
       union = Classify(root, path, members, chain);
-    return new PreparedScene(root, union, members.ToArray(), chain.ToArray());
+    PreparedMember[] prepared = members.ToArray();
+    return new PreparedScene(root, union, prepared, chain.ToArray(), SceneCapabilities.Of(union, prepared));
   }
 
   // ---------------------------------------------------------------- preparation
 
-  static bool IsPureUnion(ISceneNode node) =>
-    SubclassCheck.OverridesNothing(node, typeof(CSGInnerNode)) &&
-    node is CSGInnerNode c && c.Operation == SetOperation.Union && c.BoundingVolume == null;
+  static bool IsPureUnion(ISceneNode node) => LibraryTypes.IsFlattenedUnion(node);
 
   /// <summary>Top level: returns true for union semantics, false for a single member's raw list.</summary>
   static bool Classify(IIntersectable node, List<Matrix4d> path, List<PreparedMember> members, List<Matrix4d> chain)
@@ -172,7 +171,8 @@ public sealed partial class PreparedScene
       m.Color = f.GetAttribute(PropertyName.COLOR) as double[] ?? material.Color;
       m.Textures = f.GetTextures();
       m.Recursion = f.GetAttribute(PropertyName.RECURSION);
-      m.Completion = CompletionFor(f, model, material, m.Textures, m.Recursion);
+      m.LibraryPhong = m.Recursion == null && LibraryTypes.IsLibraryPhong(model, material);
+      m.Completion = CompletionFor(f, m.LibraryPhong, m.Textures);
     }
   }
 
@@ -196,7 +196,7 @@ public sealed partial class PreparedScene
       box = new Aabb(c1, c2);
       return true;
     }
-    if (!SubclassCheck.OverridesNothing(node, typeof(CSGInnerNode)))
+    if (!LibraryTypes.CombinesChildBoxes(node))
       return false;
 
     var csg = (CSGInnerNode)node;
@@ -227,28 +227,22 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>
-  /// The surface-only completion a member allows: an exact library Sphere, Plane or Cube, shaded by the library's Phong
-  /// model and material, with no RECURSION function and no texture but checkers and image textures (which read only
-  /// TextureCoord and the surface colour).
+  /// The surface-only completion a member allows: a library Sphere, Plane or Cube (<see cref="LibraryTypes.SurfaceShape"/>),
+  /// shaded by the library's Phong model and material with no RECURSION function, and no texture but checkers and image
+  /// textures (which read only TextureCoord and the surface colour).
   /// </summary>
-  static HitCompletion CompletionFor(IRecordSolid f, IReflectanceModel model, IMaterial material, LinkedList<ITexture>? textures, object? recursion)
+  static HitCompletion CompletionFor(IRecordSolid f, bool libraryPhong, LinkedList<ITexture>? textures)
   {
-    if (recursion != null || !SubclassCheck.OverridesNothing(model, typeof(PhongModel)) || !SubclassCheck.OverridesNothing(material, typeof(PhongMaterial)))
+    if (!libraryPhong)
       return HitCompletion.Full;
     bool textured = false;
     if (textures != null)
       foreach (ITexture t in textures)
       {
-        if (!SubclassCheck.OverridesNothing(t, typeof(CheckerTexture)) && !SubclassCheck.OverridesNothing(t, typeof(ImageTexture)))
+        if (!LibraryTypes.ReadsOnlyTextureCoord(t))
           return HitCompletion.Full;
         textured = true;
       }
-    if (SubclassCheck.OverridesNothing(f, typeof(Sphere)))
-      return textured ? HitCompletion.SphereTextured : HitCompletion.Sphere;
-    if (SubclassCheck.OverridesNothing(f, typeof(Plane)))
-      return HitCompletion.Plane;
-    if (SubclassCheck.OverridesNothing(f, typeof(Cube)))
-      return HitCompletion.Cube;
-    return HitCompletion.Full;
+    return LibraryTypes.SurfaceShape(f, textured);
   }
 }

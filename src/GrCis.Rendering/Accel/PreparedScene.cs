@@ -53,17 +53,20 @@ public sealed partial class PreparedScene : ISceneQuery
   /// <summary>Number of flattened members (leaves).</summary>
   public int MemberCount => members.Length;
 
+  /// <summary>What the preparation decided per member (kernels, completion, shading), decided once here.</summary>
+  internal SceneCapabilities Capabilities { get; }
+
   /// <summary>Members in the BVH.</summary>
-  public int BoundedCount { get; }
+  public int BoundedCount => Capabilities.BoundedCount;
 
   /// <summary>Members tested for every ray (open or unknown solids; bounded planes only where the ray's line meets their box).</summary>
   public int UnboundedCount => always.Length;
 
   /// <summary>Members answered through the LinkedList API.</summary>
-  public int ListMemberCount { get; }
+  public int ListMemberCount => Capabilities.ListCount;
 
   /// <summary>Non-union CSG subtrees answered by their allocation-free kernel (<see cref="CsgKernel"/>).</summary>
-  public int CsgMemberCount { get; }
+  public int CsgMemberCount => Capabilities.CsgKernelCount;
 
   /// <summary>Queries of this snapshot answered by the faithful path because the fast rule did not apply.</summary>
   public long FallbackCount => Interlocked.Read(ref fallbacks);
@@ -81,23 +84,19 @@ public sealed partial class PreparedScene : ISceneQuery
     return boxes;
   }
 
-  PreparedScene(IIntersectable? source, bool union, PreparedMember[] members, Matrix4d[] chain)
+  PreparedScene(IIntersectable? source, bool union, PreparedMember[] members, Matrix4d[] chain, SceneCapabilities capabilities)
   {
     Source = source;
     this.union = union;
     this.members = members;
     this.chain = chain;
+    Capabilities = capabilities;
 
     var bounded = new List<int>();
     var open = new List<int>();
     var boxes = new Aabb[members.Length];
-    int listMembers = 0, csgMembers = 0;
     for (int i = 0; i < members.Length; i++)
     {
-      if (members[i].Csg != null)
-        csgMembers++;
-      else if (members[i].RecordSolid == null)
-        listMembers++;
       boxes[i] = members[i].WorldBox;
       if (!members[i].Closed)
         open.Add(i);
@@ -105,9 +104,6 @@ public sealed partial class PreparedScene : ISceneQuery
         bounded.Add(i);
       // A closed member with an empty box has no records: it can be left out.
     }
-    ListMemberCount = listMembers;
-    CsgMemberCount = csgMembers;
-    BoundedCount = bounded.Count;
     always = open.ToArray();
     if (union && bounded.Count > 0)
     {

@@ -13,7 +13,8 @@ namespace Rendering.Accel;
 /// allocation-free code may answer for it. Decided by reflection once per class and cached: a subclass
 /// that overrides nothing relevant keeps every shortcut, one that overrides a relevant member gets
 /// GrCis's general path for that part only. The scene preparation (<see cref="PreparedScene"/>) and the
-/// image functions ask here; nothing else looks at concrete types.
+/// image functions ask here, through the named predicates of <see cref="LibraryTypes"/> (what each fast path
+/// needs); nothing else looks at concrete types.
 /// </summary>
 internal static class SubclassCheck
 {
@@ -22,6 +23,7 @@ internal static class SubclassCheck
   static readonly ConcurrentDictionary<(Type Actual, Type Library), bool> overridesNothing = new();
   static readonly ConcurrentDictionary<(Type Actual, Type Library), bool> keepsGeometry = new();
   static readonly ConcurrentDictionary<(Type Actual, string Names), bool> overridesAny = new();
+  static readonly ConcurrentDictionary<(Type Actual, Type Library, string Name), bool> overridesMethod = new();
 
   /// <summary>
   /// True when <paramref name="o"/> is a <paramref name="library"/> whose class overrides none of the
@@ -61,7 +63,19 @@ internal static class SubclassCheck
   public static bool OverridesAny(Type actual, IReadOnlyCollection<string> names) =>
     actual.Assembly != Library && overridesAny.GetOrAdd((actual, string.Join(",", names)), k => Overrides(k.Actual, typeof(object), names));
 
-  static readonly Assembly Library = typeof(SubclassCheck).Assembly;
+  /// <summary>
+  /// True when <paramref name="actual"/> overrides (not merely hides) <paramref name="library"/>'s virtual method
+  /// <paramref name="name"/> with exactly <paramref name="parameters"/>, in any class below <paramref name="library"/>.
+  /// </summary>
+  public static bool OverridesMethod(Type actual, Type library, string name, Type[] parameters) =>
+    overridesMethod.GetOrAdd((actual, library, name + "(" + string.Join<Type>(",", parameters) + ")"), k =>
+    {
+      MethodInfo? m = k.Actual.GetMethod(name, parameters);
+      return m != null && m.DeclaringType != k.Library && m.GetBaseDefinition().DeclaringType == k.Library;
+    });
+
+  /// <summary>The library's own assembly: a type declared here is not a script's or a module's.</summary>
+  public static readonly Assembly Library = typeof(SubclassCheck).Assembly;
 
   static bool Overrides(Type actual, Type library, IReadOnlyCollection<string>? names)
   {

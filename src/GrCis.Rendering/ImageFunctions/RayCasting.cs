@@ -37,7 +37,7 @@ public class RayCasting : IImageFunction
   public RayCasting(IRayScene? sc = null)
   {
     scene = sc;
-    firstHitOverridden = SubclassCheck.OverridesAny(GetType(), new[] { nameof(FirstHit) });
+    firstHitOverridden = LibraryTypes.OverridesFirstHit(GetType());
   }
 
   /// <summary>
@@ -81,11 +81,13 @@ public class RayCasting : IImageFunction
   /// (<see cref="HitReaders"/>); <see cref="HitData.All"/> for one that does. A subclass that overrides them
   /// but reads only the surface may say so here and keep the cheaper hits.
   /// </summary>
-  protected virtual HitData HitDataRead => SubclassCheck.OverridesAny(GetType(), HitReaders) ? HitData.All : HitData.Surface;
+  protected virtual HitData HitDataRead => LibraryTypes.ReadsWholeHits(GetType()) ? HitData.All : HitData.Surface;
 
   /// <summary>The virtual methods of RayCasting and RayTracing that see a hit: a subclass overriding one may read anything.</summary>
   public static readonly System.Collections.Generic.IReadOnlyList<string> HitReaders =
-    new[] { nameof(GetSample), nameof(FirstHit), RayTracing.ShadeName, RayTracing.OccludedName, RayTracing.ShadowTransmittanceName };
+    new[] { nameof(GetSample), FirstHitName, RayTracing.ShadeName, RayTracing.OccludedName, RayTracing.ShadowTransmittanceName };
+
+  internal const string FirstHitName = nameof(FirstHit);
 
   /// <summary>
   /// True when nothing but the library's own code reads a shaded hit, decided once per prepared scene: the
@@ -99,11 +101,8 @@ public class RayCasting : IImageFunction
       return false;
     if (sc.Sources != null)
       foreach (ILightSource light in sc.Sources)
-      {
-        if (!SubclassCheck.OverridesNothing(light, typeof(PointLightSource)) && !SubclassCheck.OverridesNothing(light, typeof(AmbientLightSource)) &&
-            !SubclassCheck.OverridesNothing(light, typeof(RectangleLightSource)) && !SubclassCheck.OverridesNothing(light, typeof(SphereLightSource)))
+        if (!LibraryTypes.IsLibraryLight(light))
           return false;
-      }
     return true;
   }
 

@@ -46,7 +46,7 @@ public class RayTracing : RayCasting
   public bool FresnelRefraction;
 
   public RayTracing(IRayScene? sc = null) : base(sc) =>
-    occludedOverridden = SubclassCheck.OverridesAny(GetType(), new[] { nameof(Occluded) });
+    occludedOverridden = LibraryTypes.OverridesOccluded(GetType());
 
   /// <inheritdoc/>
   public override void CopySettingsFrom(RayCasting source)
@@ -159,7 +159,7 @@ public class RayTracing : RayCasting
     {
       i.Material = scratch.Material(i.Material!, surface, depth);
       // The library's Phong model writes into a stack buffer instead of a new array per light.
-      bool phong = SubclassCheck.OverridesNothing(i.ReflectanceModel, typeof(PhongModel)) && i.Material is PhongMaterial && surface.Length <= 16;
+      bool phong = LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial && surface.Length <= 16;
       Span<double> buffer = stackalloc double[16];
 
       // A LinkedList (GrCis's type) is walked by nodes: no boxed enumerator per hit.
@@ -185,7 +185,7 @@ public class RayTracing : RayCasting
       Span<double> ksBuffer = stackalloc double[16];
       scoped ReadOnlySpan<double> ks = default;
       bool have;
-      if (SubclassCheck.OverridesNothing(i.ReflectanceModel, typeof(PhongModel)) && i.Material is PhongMaterial pm && pm.Color.Length is > 0 and <= 16)
+      if (LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial pm && pm.Color.Length is > 0 and <= 16)
       {
         Span<double> k = ksBuffer[..pm.Color.Length];
         PhongModel.ColorReflection(pm, i.Normal, viewer, r, ReflectionComponent.SPECULAR_REFLECTION, k);

@@ -73,7 +73,7 @@ internal sealed class ShadingScratch
   /// </summary>
   public IMaterial Material(IMaterial m, double[] surface, int depth)
   {
-    if (m.GetType() != typeof(PhongMaterial) || depth < 0)
+    if (!Accel.LibraryTypes.CopiesIntoScratch(m) || depth < 0)
     {
       var clone = (IMaterial)m.Clone();
       clone.Color = surface;

@@ -43,14 +43,13 @@ public abstract class ImageSynthesizer : IRenderer
   /// <summary>Whether this class overrides <see cref="RenderPixel"/> (a renderer written against GrCis).</summary>
   readonly bool displayPixels;
 
-  protected ImageSynthesizer() => displayPixels = Overrides(GetType(), nameof(RenderPixel), [typeof(int), typeof(int), typeof(double[])]);
+  protected ImageSynthesizer() => displayPixels = Accel.LibraryTypes.ReturnsDisplayPixels(GetType());
 
   /// <summary>Whether <paramref name="type"/> overrides this class's virtual method <paramref name="name"/> (not merely hides it).</summary>
   protected static bool Overrides(Type type, string name, Type[] parameters)
   {
     ArgumentNullException.ThrowIfNull(type);
-    System.Reflection.MethodInfo? m = type.GetMethod(name, parameters);
-    return m != null && m.DeclaringType != typeof(ImageSynthesizer) && m.GetBaseDefinition().DeclaringType == typeof(ImageSynthesizer);
+    return Accel.SubclassCheck.OverridesMethod(type, typeof(ImageSynthesizer), name, parameters);
   }
 
   /// <summary>

@@ -14,7 +14,7 @@ namespace GrCis.Scripting.Caching;
 internal static class CacheEntries
 {
   /// <summary>Changes when the layout of an entry (or of what it holds) changes; part of every key too.</summary>
-  public const int FormatVersion = 1;
+  public const int FormatVersion = 2;
 
   static readonly byte[] magic = "GRCIS-COMPILED\n"u8.ToArray();
 
@@ -37,6 +37,7 @@ internal static class CacheEntries
     w.Write(image.AssemblyName);
     WriteBytes(w, image.Assembly);
     WriteBytes(w, image.Pdb);
+    WriteBytes(w, image.Documentation);
     WriteStrings(w, image.Files);
     WriteStrings(w, image.SkippedScripts);
     WriteDiagnostics(w, image.Warnings);
@@ -72,6 +73,7 @@ internal static class CacheEntries
     string name = r.ReadString();
     byte[] assembly = ReadBytes(r);
     byte[] pdb = ReadBytes(r);
+    byte[] documentation = ReadBytes(r);
     string[] files = ReadStrings(r);
     string[] skipped = ReadStrings(r);
     ScriptDiagnostic[] warnings = ReadDiagnostics(r);
@@ -82,7 +84,7 @@ internal static class CacheEntries
     var renamed = new ShadowedLibraryTypes.Renamed[ReadCount(r)];
     for (int i = 0; i < renamed.Length; i++)
       renamed[i] = new ShadowedLibraryTypes.Renamed(r.ReadString(), r.ReadInt32(), r.ReadInt32(), r.ReadString());
-    return new ModuleImage(name, assembly, pdb, files, skipped, warnings, maps, renamed);
+    return new ModuleImage(name, assembly, pdb, documentation, files, skipped, warnings, maps, renamed);
   });
 
   static byte[] Write(string key, byte kind, Action<BinaryWriter> body)

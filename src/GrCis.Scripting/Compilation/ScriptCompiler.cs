@@ -40,10 +40,11 @@ internal static class ScriptCompiler
   /// <summary>
   /// How module files are parsed: regular C# (not the script dialect) with <c>DEBUG</c> and <c>TRACE</c>
   /// defined, as the Debug build of a student's GrCis project defined them (<c>#if DEBUG</c> blocks and
-  /// <c>Debug.Assert</c> calls are compiled, see <see cref="Assertions"/>).
+  /// <c>Debug.Assert</c> calls are compiled, see <see cref="Assertions"/>). Doc comments are parsed (not checked), so a
+  /// module's XML documentation is emitted for the editor's hover and completion.
   /// </summary>
   public static readonly CSharpParseOptions ModuleParseOptions =
-    new CSharpParseOptions(LanguageVersion.Latest, DocumentationMode.None, SourceCodeKind.Regular).WithPreprocessorSymbols("DEBUG", "TRACE");
+    new CSharpParseOptions(LanguageVersion.Latest, DocumentationMode.Parse, SourceCodeKind.Regular).WithPreprocessorSymbols("DEBUG", "TRACE");
 
   // Roslyn keys its metadata cache by reference object: one reference per module, made when a script first needs it.
   static readonly ConditionalWeakTable<ScriptModule, MetadataReference> moduleReferences = new();
@@ -186,9 +187,10 @@ internal static class ScriptCompiler
     var shadowed = new List<ShadowedLibraryTypes.Renamed>();
     var partials = new List<ScriptDiagnostic>();
     compilation = ShadowedLibraryTypes.Rename(compilation, instrumented, ModuleParseOptions, shadowed, partials);
-    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides, partials);
+    var xml = new MemoryStream();
+    (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides, partials, xml);
     warnings.AddRange(ShadowedLibraryTypes.Report(shadowed));
-    return new ModuleImage(assemblyName, pe.ToArray(), pdb.ToArray(), files, scripts, warnings,
+    return new ModuleImage(assemblyName, pe.ToArray(), pdb.ToArray(), xml.ToArray(), files, scripts, warnings,
       instrumented.ToDictionary(kv => kv.Key.FilePath, kv => kv.Value.ToMap(), StringComparer.Ordinal), shadowed);
   }
 
@@ -223,11 +225,11 @@ internal static class ScriptCompiler
   static (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) Emit(
     CSharpCompilation compilation, string path, IReadOnlyDictionary<SyntaxTree, InstrumentedSource> sources,
     IReadOnlyList<MissingNamespaces.Removed> removed, IReadOnlyList<OverrideAccess.Changed> overrides,
-    IReadOnlyList<ScriptDiagnostic>? causes = null)
+    IReadOnlyList<ScriptDiagnostic>? causes = null, MemoryStream? documentation = null)
   {
     var pe = new MemoryStream();
     var pdb = new MemoryStream();
-    EmitResult result = compilation.Emit(pe, pdb, options: emitOptions);
+    EmitResult result = compilation.Emit(pe, pdb, xmlDocumentationStream: documentation, options: emitOptions);
     List<ScriptDiagnostic> diagnostics = DiagnosticFormatter.Convert(result.Diagnostics, path, sources);
     if (!result.Success)
     {

@@ -45,6 +45,7 @@ internal static class ScriptLoader
       {
         Renamed = image.Renamed,
         SkippedScripts = image.SkippedScripts,
+        Documentation = image.Documentation,
       };
     }
     catch

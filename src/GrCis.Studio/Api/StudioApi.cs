@@ -198,7 +198,7 @@ internal static class StudioApi
     }
     catch (SceneEvaluationException e)
     {
-      return Problems.BadRequest(e.Message, new Dictionary<string, object?> { ["diagnostics"] = ScriptErrors.Parse(e.Message) });
+      return Problems.BadRequest(e.Message, new Dictionary<string, object?> { ["diagnostics"] = ScriptErrors.In(DemoErrorEventArgs.DiagnosticsOf(e), entry.Path) });
     }
     catch (OperationCanceledException)
     {

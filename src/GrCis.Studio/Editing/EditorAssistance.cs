@@ -30,9 +30,7 @@ public sealed class EditorAssistance(StudioSession session) : IDisposable
     try
     {
       IReadOnlyList<ScriptDiagnostic> found = await Task.Run(() => scripts.Check(text, path), cancel).ConfigureAwait(false);
-      string full = System.IO.Path.GetFullPath(path);
-      return found.Where(d => d.Path == full)
-        .Select(d => new ScriptError(d.Line, d.Column, d.Severity, d.Id, d.Message)).ToList();
+      return ScriptErrors.In(found, path);
     }
     finally
     {

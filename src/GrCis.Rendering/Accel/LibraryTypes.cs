@@ -1,0 +1,134 @@
+using System;
+using System.Runtime.CompilerServices;
+using Rendering.Imaging;
+
+namespace Rendering.Accel;
+
+/// <summary>
+/// What each shortcut needs from the objects it meets, named once: every "is this the library's class, or a
+/// subclass that changes nothing the shortcut relies on" decision of the renderer and of the front ends is a
+/// predicate here, answered by <see cref="SubclassCheck"/> (reflection once per class, cached). The scene
+/// preparation records its answers in the prepared scene's <see cref="SceneCapabilities"/>; the shading and the
+/// front ends ask the rest once per function, renderer or render, and the per-hit shading only the inline
+/// exact-type tests.
+/// </summary>
+internal static class LibraryTypes
+{
+  // ---------------------------------------------------------------- the scene graph (decided when a scene is prepared)
+
+  /// <summary>A library union without a bounding volume: a pure container, whose members the prepared scene flattens.</summary>
+  public static bool IsFlattenedUnion(ISceneNode node) =>
+    SubclassCheck.OverridesNothing(node, typeof(CSGInnerNode)) &&
+    node is CSGInnerNode c && c.Operation == SetOperation.Union && c.BoundingVolume == null;
+
+  /// <summary>
+  /// A library CSG node (any operation) without a bounding volume: the CSG kernel may evaluate it. A script's
+  /// subclass or an <see cref="AnimatedCSGInnerNode"/> (it adds <see cref="ITimeDependent"/>) merges its own way.
+  /// </summary>
+  public static bool IsKernelCsg(ISceneNode node) =>
+    SubclassCheck.OverridesNothing(node, typeof(CSGInnerNode)) && ((CSGInnerNode)node).BoundingVolume == null;
+
+  /// <summary>A library CSG node: its records lie within the box combined from its children's (with its operation).</summary>
+  public static bool CombinesChildBoxes(ISceneNode node) => SubclassCheck.OverridesNothing(node, typeof(CSGInnerNode));
+
+  /// <summary>
+  /// Hits shaded by the library's Phong model and material, which read only the world point, normal, colour
+  /// and material of a hit (never its local frame): the condition of a surface-only completion.
+  /// </summary>
+  public static bool IsLibraryPhong(IReflectanceModel? model, IMaterial? material) =>
+    SubclassCheck.OverridesNothing(model, typeof(PhongModel)) && SubclassCheck.OverridesNothing(material, typeof(PhongMaterial));
+
+  /// <summary>A texture that reads only a hit's texture coordinate and surface colour (the library's checker and image textures).</summary>
+  public static bool ReadsOnlyTextureCoord(ITexture texture) =>
+    SubclassCheck.OverridesNothing(texture, typeof(CheckerTexture)) || SubclassCheck.OverridesNothing(texture, typeof(ImageTexture));
+
+  /// <summary>
+  /// The surface-only completion of a solid's hit: <see cref="HitCompletion.Sphere"/> (or
+  /// <see cref="HitCompletion.SphereTextured"/>), <see cref="HitCompletion.Plane"/> or <see cref="HitCompletion.Cube"/>
+  /// for the library's own solids and subclasses that override nothing; <see cref="HitCompletion.Full"/> otherwise.
+  /// </summary>
+  public static HitCompletion SurfaceShape(IRecordSolid solid, bool textured)
+  {
+    if (SubclassCheck.OverridesNothing(solid, typeof(Sphere)))
+      return textured ? HitCompletion.SphereTextured : HitCompletion.Sphere;
+    if (SubclassCheck.OverridesNothing(solid, typeof(Plane)))
+      return HitCompletion.Plane;
+    if (SubclassCheck.OverridesNothing(solid, typeof(Cube)))
+      return HitCompletion.Cube;
+    return HitCompletion.Full;
+  }
+
+  /// <summary>A sphere whose records are the library sphere's (an emitter the light model may sample as a sphere).</summary>
+  public static bool HasSphereGeometry(Sphere sphere) => SubclassCheck.KeepsGeometry(sphere, typeof(Sphere));
+
+  /// <summary>A plane whose records are the library plane's (an emitter the light model may sample as a rectangle).</summary>
+  public static bool HasPlaneGeometry(Plane plane) => SubclassCheck.KeepsGeometry(plane, typeof(Plane));
+
+  // ---------------------------------------------------------------- shading
+
+  /// <summary>A library light: it reads only the world point and normal of a hit.</summary>
+  public static bool IsLibraryLight(ILightSource light) =>
+    SubclassCheck.OverridesNothing(light, typeof(PointLightSource)) || SubclassCheck.OverridesNothing(light, typeof(AmbientLightSource)) ||
+    SubclassCheck.OverridesNothing(light, typeof(RectangleLightSource)) || SubclassCheck.OverridesNothing(light, typeof(SphereLightSource));
+
+  /// <summary>
+  /// The library's Phong model (or a subclass overriding nothing): the shading may evaluate it for a
+  /// <see cref="PhongMaterial"/> into stack buffers instead of a new array per light. Asked per hit (hits of list members carry no prepared decision): the exact
+  /// type is answered inline.
+  /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  public static bool IsLibraryPhongModel(IReflectanceModel? model) => SubclassCheck.OverridesNothing(model, typeof(PhongModel));
+
+  /// <summary>
+  /// Exactly a <see cref="PhongMaterial"/>: its values may be copied into a pooled scratch material instead of a clone
+  /// per hit. Exact, not "overrides nothing": the copy is a <see cref="PhongMaterial"/>, and a subclass's own type
+  /// (and fields) must reach the lights and models that look at it.
+  /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  public static bool CopiesIntoScratch(IMaterial material) => material.GetType() == typeof(PhongMaterial);
+
+  // ---------------------------------------------------------------- image functions (decided once per function)
+
+  /// <summary>An image function class overriding a method that sees hits (<see cref="RayCasting.HitReaders"/>): it may read anything of a hit.</summary>
+  public static bool ReadsWholeHits(Type function) => SubclassCheck.OverridesAny(function, RayCasting.HitReaders);
+
+  /// <summary>An image function class with its own first-hit query: every ray must go through it.</summary>
+  public static bool OverridesFirstHit(Type function) => SubclassCheck.OverridesAny(function, FirstHitName);
+
+  /// <summary>An image function class with its own shadow query: every shadow ray must go through it.</summary>
+  public static bool OverridesOccluded(Type function) => SubclassCheck.OverridesAny(function, OccludedName);
+
+  static readonly string[] FirstHitName = [RayCasting.FirstHitName];
+  static readonly string[] OccludedName = [RayTracing.OccludedName];
+
+  /// <summary>
+  /// Exactly the library's <see cref="RayTracing"/> or <see cref="RayCasting"/>: a new one with
+  /// <see cref="RayCasting.CopySettingsFrom"/> is the same function (a subclass may hold settings of its own).
+  /// </summary>
+  public static bool IsCopyableRayCaster(IImageFunction function) =>
+    function.GetType() == typeof(RayTracing) || function.GetType() == typeof(RayCasting);
+
+  /// <summary>A class declared in this library, not in a script or a module (whose objects may hold anything).</summary>
+  public static bool IsLibraryClass(object o) => o.GetType().Assembly == SubclassCheck.Library;
+
+  // ---------------------------------------------------------------- renderers (decided once per renderer)
+
+  /// <summary>A renderer class overriding <see cref="ImageSynthesizer.RenderPixel"/> (written against GrCis): its pixels are display colours.</summary>
+  public static bool ReturnsDisplayPixels(Type synthesizer) =>
+    SubclassCheck.OverridesMethod(synthesizer, typeof(ImageSynthesizer), nameof(ImageSynthesizer.RenderPixel), RenderPixelParameters);
+
+  /// <summary>A renderer class overriding <see cref="ImageSynthesizer.RenderRectangle"/>: it renders its rectangles its own way.</summary>
+  public static bool RendersOwnRectangles(Type synthesizer) =>
+    SubclassCheck.OverridesMethod(synthesizer, typeof(ImageSynthesizer), nameof(ImageSynthesizer.RenderRectangle), RenderRectangleParameters);
+
+  static readonly Type[] RenderPixelParameters = [typeof(int), typeof(int), typeof(double[])];
+  static readonly Type[] RenderRectangleParameters = [typeof(FloatImage), typeof(int), typeof(int), typeof(int), typeof(int)];
+
+  /// <summary>
+  /// Exactly the library's n×n grid with more than one sample: its samples may be taken in passes over the image
+  /// that together give the image of one pass. A subclass (adaptive, a
+  /// student's) renders its own way.
+  /// </summary>
+  public static bool TakesSamplesInPasses(ImageSynthesizer renderer) =>
+    renderer.GetType() == typeof(SupersamplingImageSynthesizer) && ((SupersamplingImageSynthesizer)renderer).SuperXY > 1;
+}
