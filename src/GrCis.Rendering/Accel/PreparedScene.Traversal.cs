@@ -46,8 +46,9 @@ public sealed partial class PreparedScene
     // chosen by T, then member index, whatever the visiting order). Stack entries: an inner node (≥ 0) or a leaf lane
     // (~(node·4 + lane)), with the entry t of its box, re-checked against the shrinking best when popped.
     int size = bvh.StackSize;
-    Span<int> stack = size <= 256 ? stackalloc int[size] : new int[size];
-    Span<double> stackT = size <= 256 ? stackalloc double[size] : new double[size];
+    // On the stack (not zeroed) up to a tree depth of about 340, far beyond any SAH tree of scene members.
+    Span<int> stack = size <= 1024 ? stackalloc int[size] : new int[size];
+    Span<double> stackT = size <= 1024 ? stackalloc double[size] : new double[size];
     int sp = 0;
     int code = 0;
     while (true)

@@ -168,7 +168,8 @@ internal sealed class MeshBvh
     // Each entry: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)) and the line's parameter interval in its box,
     // re-checked against the best when popped; the root's interval is that of the whole mesh's box.
     int size = wide.StackSize;
-    Span<NodeSpan> stack = size <= 256 ? stackalloc NodeSpan[size] : new NodeSpan[size];
+    // On the stack (not zeroed) up to a tree depth of about 170; only a degenerate mesh's tree is deeper.
+    Span<NodeSpan> stack = size <= 512 ? stackalloc NodeSpan[size] : new NodeSpan[size];
     int sp = 0;
     stack[sp++] = new NodeSpan(0, rootNear, rootFar);
     while (sp > 0)
