@@ -90,7 +90,7 @@ public class PathTracing : MonteCarloRayTracing
     ShadingScratch scratch = context.Scratch;
     Sampler sampler = context.Sampler;
     IRayScene sc = Scene;
-    SceneLights lights = NextEventEstimation ? LightsOf(context, sc, color.Length) : SceneLights.Empty;
+    SceneLights lights = LightsOf(context, sc, color.Length);
 
     Rgb radiance = Rgb.Zero, throughput = Rgb.One;
     Vector3d origin = p0, direction = p1.Normalized();
@@ -125,7 +125,7 @@ public class PathTracing : MonteCarloRayTracing
       {
         Rgb env = Environment(sc, direction, scratch.Buffer(depth + 1, color.Length));
         double w = 1.0;
-        if (!afterDelta && !env.IsBlack)
+        if (!afterDelta && NextEventEstimation && !env.IsBlack)
         {
           double lightPdf = lights.EnvironmentPdf(new LightContext(origin, lastNormal, null), direction);
           if (lightPdf > 0.0)
@@ -141,18 +141,19 @@ public class PathTracing : MonteCarloRayTracing
       Vector3d x = i.CoordWorld;
       Vector3d normal = i.Normal;
 
-      // Light leaving an emitter towards the ray, weighed against the light sample that could have found it.
-      if (i.Material is PhongMaterial { Emission: double[] emission } && Vector3d.Dot(normal, direction) < 0.0)
+      // Light leaving an emitter towards the ray (from the light model), weighed against the light sample that could have found it.
+      Rgb le = lights.Emitted(i, direction, out ILight? emitter);
+      if (!le.IsBlack)
       {
         double w = 1.0;
         // A light sample could not have found it when its density is 0 (not a sampled light, a sphere seen from inside or on it).
-        if (!afterDelta)
+        if (!afterDelta && NextEventEstimation)
         {
-          double lightPdf = lights.SurfacePdf(i.Solid, new LightContext(origin, lastNormal, null), direction, x, normal);
+          double lightPdf = lights.Pdf(emitter!, new LightContext(origin, lastNormal, null), direction, x, normal);
           if (lightPdf > 0.0)
             w = MultipleImportanceSampling ? PowerHeuristic(lastPdf, lightPdf) : 0.0;
         }
-        radiance += throughput * Rgb.From(emission) * w;
+        radiance += throughput * le * w;
       }
       if (bounce >= MaxLevel)
         break;

@@ -85,9 +85,9 @@ public class LightModelTests
   public void Environment_samples_are_cosine_weighted_and_a_uniform_background_gives_pi_L()
   {
     var scene = new DefaultRayScene { BackgroundColor = new[] { 0.5, 2.0, 1.0 } };
-    var light = new EnvironmentLight(scene, 3);
+    var light = new EnvironmentLight(scene, 3, 1.0);
     Assert.Equal(LightKind.Infinite, light.Kind);
-    Assert.Equal(Math.PI * (0.5 + 2.0 + 1.0) / 3.0, light.Power, 12);
+    Assert.Equal(Math.PI * Math.PI * (0.5 + 2.0 + 1.0) / 3.0, light.Power, 12);
     Vector3d n = new Vector3d(1.0, 2.0, -0.5).Normalized();
     double estimate = Irradiance(light, n, 16, s => s.Wi, _ => default);
     Assert.Equal(Math.PI * 2.0, estimate, 1e-9);
@@ -188,5 +188,75 @@ public class LightModelTests
     for (int k = 0; k < lights.Length; k++)
       Assert.Equal(expected[k], counts.GetValueOrDefault(lights[k]) / (double)n, 3);
     Assert.Null(new LightSampler(new ILight[] { new FixedPower(0.0) }).Sample(0.5, out _));
+  }
+
+  /// <summary>A union holding an emissive rectangle (2×1, facing +z, radiance 4), a sphere of radius <paramref name="r"/> at x = 3 and an infinite plane below.</summary>
+  static (DefaultRayScene Scene, Plane Lamp, Sphere Ball) LitScene(double r)
+  {
+    var root = new CSGInnerNode(SetOperation.Union);
+    var lamp = new Plane(-1.0, 1.0, -0.5, 0.5);
+    var glow = new PhongMaterial(new double[] { 0.0, 0.0, 0.0 }, 0.0, 0.0, 0.0, 1) { Emission = new[] { 4.0, 4.0, 4.0 } };
+    lamp.SetAttribute(PropertyName.MATERIAL, glow);
+    root.InsertChild(lamp, Matrix4d.Identity);
+    var ball = new Sphere();
+    root.InsertChild(ball, Matrix4d.Scale(r) * Matrix4d.CreateTranslation(3.0, 0.0, 0.0));
+    root.InsertChild(new Plane(), Matrix4d.CreateTranslation(0.0, 0.0, -5.0));   // unbounded: not part of the size
+    var scene = new DefaultRayScene { Intersectable = root, BackgroundColor = new[] { 1.0, 1.0, 1.0 } };
+    return (scene, lamp, ball);
+  }
+
+  [Fact]
+  public void Environment_power_is_the_flux_through_the_scenes_bounding_disk_and_grows_with_its_size()
+  {
+    // Bounded solids: the lamp's box [-1,1]×[-0.5,0.5]×0 and the ball's [3-r,3+r]×[-r,r]×[-r,r].
+    double Expected(double r)
+    {
+      Vector3d min = new(-1.0, Math.Min(-0.5, -r), -r), max = new(3.0 + r, Math.Max(0.5, r), r);
+      double radius = 0.5 * (max - min).Length;
+      return Math.PI * radius * radius * Math.PI * 1.0;
+    }
+    foreach (double r in new[] { 1.0, 4.0 })
+    {
+      var (scene, _, _) = LitScene(r);
+      SceneLights lights = SceneLights.Of(scene, scene.Intersectable, 3, sampleEnvironment: true);
+      Assert.Equal(Expected(r), lights.Environment!.Power, 9);
+    }
+    // The bigger scene's background is the likelier choice against the same lamp.
+    var (small, smallLamp, _) = LitScene(1.0);
+    var (big, bigLamp, _) = LitScene(4.0);
+    SceneLights s = SceneLights.Of(small, small.Intersectable, 3, true), b = SceneLights.Of(big, big.Intersectable, 3, true);
+    Assert.True(b.Sampler.Probability(b.Environment!) > s.Sampler.Probability(s.Environment!));
+    Assert.Equal(0.0, SceneBounds.Radius(new Plane()));
+  }
+
+  [Fact]
+  public void A_ray_hitting_an_emitter_gets_its_radiance_from_the_light_model_on_the_emitting_side_only()
+  {
+    var (scene, lamp, ball) = LitScene(1.0);
+    SceneLights lights = SceneLights.Of(scene, scene.Intersectable, 3, false);
+    Vector3d down = -Vector3d.UnitZ;
+
+    // The lamp is a sampled light: its own adapter answers, with the emission, and its density is that of its samples.
+    var hit = new Intersection(lamp) { CoordWorld = new Vector3d(0.2, 0.1, 0.0), Normal = Vector3d.UnitZ, Material = lamp.GetAttribute(PropertyName.MATERIAL) as IMaterial };
+    Rgb le = lights.Emitted(hit, down, out ILight? light);
+    Assert.Equal(4.0, le.G);
+    Assert.IsType<EmissiveRectangle>(light);
+    Assert.Equal(le.R, light!.Le(hit.Normal, down).R);
+    var from = new LightContext(new Vector3d(0.2, 0.1, 2.0), -Vector3d.UnitZ, null);
+    Assert.Equal(light.PdfLi(from, down, hit.CoordWorld, hit.Normal), lights.Pdf(light, from, down, hit.CoordWorld, hit.Normal), 12);
+    Assert.True(lights.Emitted(hit, -down, out _).IsBlack);   // from behind
+
+    // An emissive material on a solid light sampling does not reach (here the ball): found by rays only, no density.
+    var glow = new PhongMaterial(new double[] { 0.0, 0.0, 0.0 }, 0.0, 0.0, 0.0, 1) { Emission = new[] { 2.0, 3.0, 5.0 } };
+    var other = new Intersection(ball) { Normal = Vector3d.UnitX, Material = glow };
+    le = lights.Emitted(other, -Vector3d.UnitX, out light);
+    Assert.Equal((2.0, 3.0, 5.0), (le.R, le.G, le.B));
+    Assert.IsType<EmissiveSurface>(light);
+    Assert.Equal(0.0, lights.Pdf(light!, from, -Vector3d.UnitX, default, Vector3d.UnitX));
+
+    // A surface that emits nothing: no light.
+    var plain = new Intersection(ball) { Normal = Vector3d.UnitX, Material = new PhongMaterial() };
+    Assert.True(lights.Emitted(plain, -Vector3d.UnitX, out light).IsBlack);
+    Assert.Null(light);
   }
 }
