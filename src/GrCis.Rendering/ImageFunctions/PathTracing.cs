@@ -167,7 +167,9 @@ public class PathTracing : MonteCarloRayTracing
 
       // Continue the path in a direction sampled from the surface's lobes.
       sampler.Get2D(SampleDimension.PathDirection, bounce, out double u, out double v);
-      if (!bsdf.Sample(sampler.Get1D(SampleDimension.PathLobe, bounce), u, v, out Vector3d wi, out Rgb weight, out double pdf, out bool delta))
+      // A surface of one lobe needs no lobe choice (any value picks it; the other dimensions do not depend on asking).
+      double lobe = bsdf.SingleLobe ? 0.0 : sampler.Get1D(SampleDimension.PathLobe, bounce);
+      if (!bsdf.Sample(lobe, u, v, out Vector3d wi, out Rgb weight, out double pdf, out bool delta))
         break;
       throughput *= weight;
       if (throughput.IsBlack)
@@ -214,7 +216,9 @@ public class PathTracing : MonteCarloRayTracing
       sampler.Get2D(SampleDimension.PathDeltaLight, bounce * deltas.Length + k, out double du, out double dv);
       sum += Direct(scratch, deltas[k], ctx, bsdf, du, dv, 1.0, slot);
     }
-    ILight? light = lights.Sampler.Sample(sampler.Get1D(SampleDimension.PathLightPick, bounce), out double pick);
+    // One light to choose from needs no choice.
+    LightSampler choose = lights.Sampler;
+    ILight? light = choose.Sample(choose.Count > 1 ? sampler.Get1D(SampleDimension.PathLightPick, bounce) : 0.0, out double pick);
     if (light == null)
       return sum;
     sampler.Get2D(SampleDimension.PathLightPoint, bounce, out double u, out double v);

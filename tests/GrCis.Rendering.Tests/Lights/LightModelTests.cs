@@ -69,6 +69,68 @@ public class LightModelTests
     Assert.Equal(0.0, behind.PdfLi(new LightContext(Vector3d.Zero, n, null), Up, corner, -normal));
   }
 
+  /// <summary>Solid angle of the triangle (a, b, c) seen from the origin (Van Oosterom and Strackee).</summary>
+  static double TriangleSolidAngle(Vector3d a, Vector3d b, Vector3d c)
+  {
+    double la = a.Length, lb = b.Length, lc = c.Length;
+    double num = Vector3d.Dot(a, Vector3d.Cross(b, c));
+    double den = la * lb * lc + Vector3d.Dot(a, b) * lc + Vector3d.Dot(a, c) * lb + Vector3d.Dot(b, c) * la;
+    return Math.Abs(2.0 * Math.Atan2(num, den));
+  }
+
+  [Theory]
+  [InlineData(1.5, 0.0)]    // well above
+  [InlineData(0.05, 0.3)]   // close beside its edge: the 1/d² varies a lot over it
+  public void Rectangle_light_is_sampled_uniformly_by_solid_angle_its_density_integrates_to_one_and_gives_Lamberts_irradiance(double height, double shift)
+  {
+    // A true rectangle (perpendicular edges), 0.5×0.4, tilted, facing down towards the origin; radiance 15.
+    Vector3d e1 = new Vector3d(0.5, 0.0, 0.0), e2 = new Vector3d(0.0, 0.4 * Math.Sin(0.3), 0.4 * Math.Cos(0.3));
+    Vector3d corner = new(-0.25 + shift, height, -0.2);
+    Vector3d normal = Vector3d.Cross(e1, e2).Normalized();
+    if (Vector3d.Dot(normal, -corner) < 0.0)
+      normal = -normal;
+    var light = new EmissiveRectangle(corner, e1, e2, normal, new Rgb(15.0));
+    Vector3d[] quad = { corner, corner + e1, corner + e1 + e2, corner + e2 };
+    double omega = TriangleSolidAngle(quad[0], quad[1], quad[2]) + TriangleSolidAngle(quad[0], quad[2], quad[3]);
+
+    // Every sample lies on the rectangle, its density is 1/Ω (so it integrates to 1 over the rectangle) and is PdfLi's.
+    var ctx = new LightContext(Vector3d.Zero, Up, null);
+    var rnd = new Random(3);
+    for (int k = 0; k < 2000; k++)
+    {
+      Assert.True(light.SampleLi(ctx, rnd.NextDouble(), rnd.NextDouble(), out LightSample s));
+      Vector3d local = s.ToLight - corner;
+      Assert.InRange(Vector3d.Dot(local, e1) / e1.LengthSquared, -1e-9, 1.0 + 1e-9);
+      Assert.InRange(Vector3d.Dot(local, e2) / e2.LengthSquared, -1e-9, 1.0 + 1e-9);
+      Assert.Equal(0.0, Vector3d.Dot(local, normal), 9);
+      Assert.Equal(1.0 / omega, s.Pdf, 1e-9 / omega);
+    }
+
+    // Uniform by solid angle: the fraction of samples in each quarter of the rectangle is that quarter's solid angle over Ω.
+    const int n = 64;
+    var counts = new int[4];
+    for (int i = 0; i < n; i++)
+      for (int j = 0; j < n; j++)
+      {
+        light.SampleLi(ctx, (i + 0.5) / n, (j + 0.5) / n, out LightSample s);
+        Vector3d local = s.ToLight - corner;
+        int q = (Vector3d.Dot(local, e1) / e1.LengthSquared < 0.5 ? 0 : 1) + (Vector3d.Dot(local, e2) / e2.LengthSquared < 0.5 ? 0 : 2);
+        counts[q]++;
+      }
+    for (int q = 0; q < 4; q++)
+    {
+      Vector3d c = corner + (q & 1) * 0.5 * e1 + (q >> 1) * 0.5 * e2, h1 = 0.5 * e1, h2 = 0.5 * e2;
+      double part = TriangleSolidAngle(c, c + h1, c + h1 + h2) + TriangleSolidAngle(c, c + h1 + h2, c + h2);
+      Assert.Equal(part / omega, counts[q] / (double)(n * n), 0.005);
+    }
+
+    // The estimator of the irradiance is Lambert's polygon formula.
+    Vector3d up = Up;
+    double exact = PolygonIrradiance(quad, up, 15.0);
+    double estimate = Irradiance(light, up, 64, s => s.ToLight, _ => normal);
+    Assert.Equal(exact, estimate, 0.003 * exact);
+  }
+
   [Fact]
   public void Emissive_sphere_samples_give_pi_L_sin2_theta_max_and_their_density_is_PdfLi()
   {
