@@ -79,7 +79,7 @@ public class LightModelTests
   }
 
   [Theory]
-  [InlineData(1.5, 0.0)]    // well above
+  [InlineData(0.4, 0.0)]    // above its centre
   [InlineData(0.05, 0.3)]   // close beside its edge: the 1/d² varies a lot over it
   public void Rectangle_light_is_sampled_uniformly_by_solid_angle_its_density_integrates_to_one_and_gives_Lamberts_irradiance(double height, double shift)
   {
@@ -129,6 +129,39 @@ public class LightModelTests
     double exact = PolygonIrradiance(quad, up, 15.0);
     double estimate = Irradiance(light, up, 64, s => s.ToLight, _ => normal);
     Assert.Equal(exact, estimate, 0.003 * exact);
+  }
+
+  [Fact]
+  public void Near_a_rectangle_light_its_solid_angle_samples_estimate_irradiance_with_less_variance_than_area_samples()
+  {
+    // A 1×1 light 0.2 above the point, off to one side: 1/d² and the cosines vary a lot over it.
+    Vector3d corner = new(-0.2, 0.2, -0.5), e1 = new(1.0, 0.0, 0.0), e2 = new(0.0, 0.0, 1.0);
+    var light = new EmissiveRectangle(corner, e1, e2, -Up, new Rgb(1.0));
+    var ctx = new LightContext(Vector3d.Zero, Up, null);
+    var rnd = new Random(11);
+    double sumA = 0.0, sumA2 = 0.0, sumS = 0.0, sumS2 = 0.0;
+    const int n = 20000;
+    for (int k = 0; k < n; k++)
+    {
+      double u = rnd.NextDouble(), v = rnd.NextDouble();
+      // By area: the point corner + u e1 + v e2, density d²/(area cos θ_light).
+      Vector3d p = corner + u * e1 + v * e2;
+      double d2 = p.LengthSquared, d = Math.Sqrt(d2);
+      double area = (p.Y / d) * (p.Y / d) / d2;   // L cos θ cos θ_light / (d²/area), area 1
+      sumA += area;
+      sumA2 += area * area;
+      Assert.True(light.SampleLi(ctx, u, v, out LightSample s));
+      double f = Math.Max(0.0, Vector3d.Dot(s.Wi, Up)) / s.Pdf;
+      sumS += f;
+      sumS2 += f * f;
+    }
+    double meanA = sumA / n, meanS = sumS / n;
+    double varA = sumA2 / n - meanA * meanA, varS = sumS2 / n - meanS * meanS;
+    // Both estimate Lambert's irradiance (within 4 standard errors), the solid-angle one with far less variance.
+    double exact = PolygonIrradiance(new[] { corner, corner + e1, corner + e1 + e2, corner + e2 }, Up, 1.0);
+    Assert.True(Math.Abs(meanA - exact) < 4.0 * Math.Sqrt(varA / n), $"by area {meanA}, exact {exact}");
+    Assert.True(Math.Abs(meanS - exact) < 4.0 * Math.Sqrt(varS / n), $"by solid angle {meanS}, exact {exact}");
+    Assert.True(varS < 0.1 * varA, $"variance by solid angle {varS}, by area {varA}");
   }
 
   [Fact]

@@ -17,7 +17,7 @@ internal sealed class EmissiveRectangle : ILight
   const double SmallestSolidAngle = 1e-5;
 
   /// <summary>Points closer to the centre than this many diagonals are sampled by solid angle.</summary>
-  public const double NearDiagonals = 2.0;
+  public const double NearDiagonals = 1.0;
 
   readonly Vector3d centre;
   readonly double nearSquared;

@@ -65,14 +65,15 @@ internal sealed class SceneLights
   /// <summary>
   /// Radiance a ray of unit <paramref name="direction"/> gets from the emitter it hit at <paramref name="i"/> (completed),
   /// and the <paramref name="light"/> that answered: the sampled light of that solid, else the hit material's own
-  /// <see cref="EmissiveSurface"/>; zero and null when the surface emits nothing.
+  /// <see cref="EmissiveSurface"/>; zero and null when the hit's material has no emission.
   /// </summary>
   public Rgb Emitted(Intersection i, in Vector3d direction, out ILight? light)
   {
-    if (i.Solid != null && surfaces.TryGetValue(i.Solid, out light))
-      return light.Le(i.Normal, direction);
+    // Only an emissive material emits (a type test first: most hits are not on an emitter).
     if (i.Material is PhongMaterial { Emission: not null } material)
     {
+      if (i.Solid != null && surfaces.TryGetValue(i.Solid, out light))
+        return light.Le(i.Normal, direction);
       if (!unsampled.TryGetValue(material, out EmissiveSurface? surface))
         unsampled[material] = surface = new EmissiveSurface(material);
       light = surface;
