@@ -166,7 +166,9 @@ public class PathTracing : MonteCarloRayTracing
         radiance += throughput * SampleLight(scratch, sampler, lights, i, bsdf, bounce, depth + (observer != null ? bounce : 0) + 1);
 
       // Continue the path in a direction sampled from the surface's lobes.
-      sampler.Get2D(SampleDimension.PathDirection, bounce, out double u, out double v);
+      double u = 0.0, v = 0.0;
+      if (bsdf.SamplesDirection)
+        sampler.Get2D(SampleDimension.PathDirection, bounce, out u, out v);
       // A surface of one lobe needs no lobe choice (any value picks it; the other dimensions do not depend on asking).
       double lobe = bsdf.SingleLobe ? 0.0 : sampler.Get1D(SampleDimension.PathLobe, bounce);
       if (!bsdf.Sample(lobe, u, v, out Vector3d wi, out Rgb weight, out double pdf, out bool delta))

@@ -33,6 +33,9 @@ internal struct PathBsdf
   /// <summary>True when one Phong lobe carries all the scattering: <see cref="Sample"/> takes it whatever its choice value.</summary>
   public readonly bool SingleLobe => own == null && (pD == 1.0 || pS == 1.0 || pT == 1.0);
 
+  /// <summary>False for an ideal mirror alone: its one direction needs no (u, v).</summary>
+  public readonly bool SamplesDirection => !(own == null && pS == 1.0 && glossyIsMirror);
+
   /// <summary>The facing normal (on the side of the outgoing direction).</summary>
   public readonly Vector3d FacingNormal => nf;
 
