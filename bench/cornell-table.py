@@ -5,7 +5,8 @@
 
 Prints the mean radiance against the reference, error and time per sample count, and the time each
 renderer needs to reach the error levels below (log-log interpolation between the two measured sample
-counts around the level; "–" where the series does not reach it). Several files are read as one table
+counts around the level; "–" where the series does not reach it), and the Monte Carlo efficiency
+1/(time × RMSE²) of ours over Cycles' at each sample count both rendered. Several files are read as one table
 (e.g. one run per variant with different reference sample counts).
 """
 import csv
@@ -74,6 +75,18 @@ def main(paths):
             t[renderer] = time_to(pts, level)
         ratio = t["ours"] / t["cycles"] if t["ours"] and t["cycles"] else None
         print(f"| {v} | {level} | {PIXELS[column]} | {fmt(t['cycles'], 1)} | {fmt(t['ours'], 1)} | {fmt(ratio, 2)} |")
+
+    print("\n## Monte Carlo efficiency 1/(time × RMSE²), ours ÷ Cycles, at equal sample counts\n")
+    print("| variant | spp | all pixels | pixels with ref ≤ 1 |\n|---|---|---|---|")
+    for v in variants:
+        cycles = {r["spp"]: r for r in series(v, "cycles")}
+        for o in series(v, "ours"):
+            c = cycles.get(o["spp"])
+            if not c or c["render_s"] in ("", "-") or o["render_s"] in ("", "-"):
+                continue
+            def eff(column):
+                return (float(c["render_s"]) * float(c[column]) ** 2) / (float(o["render_s"]) * float(o[column]) ** 2)
+            print(f"| {v} | {o['spp']} | {eff('rmse'):.2f} | {eff('rmse_le1'):.2f} |")
 
 
 if __name__ == "__main__":

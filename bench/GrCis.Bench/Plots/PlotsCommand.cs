@@ -13,7 +13,7 @@ namespace GrCis.Bench.Plots;
 public static class PlotsCommand
 {
   /// <summary>The recorded inputs of the current figures, relative to the results folder.</summary>
-  const string CornellDefault = "2026-11-26-cornell-cycles-final.tsv",
+  const string CornellDefault = "2026-11-26-cornell-cycles-mc.tsv",
     ScalingDefault = "2026-11-24-thread-scaling.json",
     MeshDefault = "2026-11-26-mesh-scaling.json",
     PovRayDefault = "2026-11-24-povray.tsv";

@@ -32,7 +32,9 @@ public abstract class MonteCarloRayTracing : RayTracing
   /// </summary>
   private protected static bool Roulette(Sampler sampler, int vertex, ref Rgb throughput)
   {
-    double survive = Math.Min(1.0, Math.Sqrt(throughput.Max));
+    double survive = Math.Sqrt(throughput.Max);
+    if (survive >= 1.0)
+      return true;   // sure to survive: no value needed (asking would not change the other dimensions' values)
     if (sampler.Get1D(SampleDimension.PathRoulette, vertex) >= survive)
       return false;
     throughput *= 1.0 / survive;

@@ -90,7 +90,7 @@ public class PathTracing : MonteCarloRayTracing
     ShadingScratch scratch = context.Scratch;
     Sampler sampler = context.Sampler;
     IRayScene sc = Scene;
-    SceneLights lights = NextEventEstimation ? LightsOf(context, sc, color.Length) : SceneLights.Empty;
+    SceneLights lights = LightsOf(context, sc, color.Length);
 
     Rgb radiance = Rgb.Zero, throughput = Rgb.One;
     Vector3d origin = p0, direction = p1.Normalized();
@@ -125,7 +125,7 @@ public class PathTracing : MonteCarloRayTracing
       {
         Rgb env = Environment(sc, direction, scratch.Buffer(depth + 1, color.Length));
         double w = 1.0;
-        if (!afterDelta && !env.IsBlack)
+        if (!afterDelta && NextEventEstimation && !env.IsBlack)
         {
           double lightPdf = lights.EnvironmentPdf(new LightContext(origin, lastNormal, null), direction);
           if (lightPdf > 0.0)
@@ -141,18 +141,19 @@ public class PathTracing : MonteCarloRayTracing
       Vector3d x = i.CoordWorld;
       Vector3d normal = i.Normal;
 
-      // Light leaving an emitter towards the ray, weighed against the light sample that could have found it.
-      if (i.Material is PhongMaterial { Emission: double[] emission } && Vector3d.Dot(normal, direction) < 0.0)
+      // Light leaving an emitter towards the ray (from the light model), weighed against the light sample that could have found it.
+      Rgb le = lights.Emitted(i, direction, out ILight? emitter);
+      if (!le.IsBlack)
       {
         double w = 1.0;
         // A light sample could not have found it when its density is 0 (not a sampled light, a sphere seen from inside or on it).
-        if (!afterDelta)
+        if (!afterDelta && NextEventEstimation)
         {
-          double lightPdf = lights.SurfacePdf(i.Solid, new LightContext(origin, lastNormal, null), direction, x, normal);
+          double lightPdf = lights.Pdf(emitter!, new LightContext(origin, lastNormal, null), direction, x, normal);
           if (lightPdf > 0.0)
             w = MultipleImportanceSampling ? PowerHeuristic(lastPdf, lightPdf) : 0.0;
         }
-        radiance += throughput * Rgb.From(emission) * w;
+        radiance += throughput * le * w;
       }
       if (bounce >= MaxLevel)
         break;
@@ -165,8 +166,12 @@ public class PathTracing : MonteCarloRayTracing
         radiance += throughput * SampleLight(scratch, sampler, lights, i, bsdf, bounce, depth + (observer != null ? bounce : 0) + 1);
 
       // Continue the path in a direction sampled from the surface's lobes.
-      sampler.Get2D(SampleDimension.PathDirection, bounce, out double u, out double v);
-      if (!bsdf.Sample(sampler.Get1D(SampleDimension.PathLobe, bounce), u, v, out Vector3d wi, out Rgb weight, out double pdf, out bool delta))
+      double u = 0.0, v = 0.0;
+      if (bsdf.SamplesDirection)
+        sampler.Get2D(SampleDimension.PathDirection, bounce, out u, out v);
+      // A surface of one lobe needs no lobe choice (any value picks it; the other dimensions do not depend on asking).
+      double lobe = bsdf.SingleLobe ? 0.0 : sampler.Get1D(SampleDimension.PathLobe, bounce);
+      if (!bsdf.Sample(lobe, u, v, out Vector3d wi, out Rgb weight, out double pdf, out bool delta))
         break;
       throughput *= weight;
       if (throughput.IsBlack)
@@ -213,7 +218,9 @@ public class PathTracing : MonteCarloRayTracing
       sampler.Get2D(SampleDimension.PathDeltaLight, bounce * deltas.Length + k, out double du, out double dv);
       sum += Direct(scratch, deltas[k], ctx, bsdf, du, dv, 1.0, slot);
     }
-    ILight? light = lights.Sampler.Sample(sampler.Get1D(SampleDimension.PathLightPick, bounce), out double pick);
+    // One light to choose from needs no choice.
+    LightSampler choose = lights.Sampler;
+    ILight? light = choose.Sample(choose.Count > 1 ? sampler.Get1D(SampleDimension.PathLightPick, bounce) : 0.0, out double pick);
     if (light == null)
       return sum;
     sampler.Get2D(SampleDimension.PathLightPoint, bounce, out double u, out double v);

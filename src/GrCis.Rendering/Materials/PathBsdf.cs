@@ -30,6 +30,12 @@ internal struct PathBsdf
   /// <summary>True when some lobe is not a delta (so light sampling can reach it).</summary>
   public readonly bool HasSmooth => own != null || pD > 0.0 || (pS > 0.0 && !glossyIsMirror);
 
+  /// <summary>True when one Phong lobe carries all the scattering: <see cref="Sample"/> takes it whatever its choice value.</summary>
+  public readonly bool SingleLobe => own == null && (pD == 1.0 || pS == 1.0 || pT == 1.0);
+
+  /// <summary>False for an ideal mirror alone: its one direction needs no (u, v).</summary>
+  public readonly bool SamplesDirection => !(own == null && pS == 1.0 && glossyIsMirror);
+
   /// <summary>The facing normal (on the side of the outgoing direction).</summary>
   public readonly Vector3d FacingNormal => nf;
 

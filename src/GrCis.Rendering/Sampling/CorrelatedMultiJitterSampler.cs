@@ -15,7 +15,18 @@ public sealed class CorrelatedMultiJitterSampler : Sampler
   public override void Get2D(SampleDimension dimension, int instance, out double u, out double v) =>
     Strata.Sample2D(Index, Count, Pattern(dimension, instance), out u, out v);
 
+  long hashedSeed;
+  ulong seedHash = Strata.SeedHash(0);
+
   /// <summary>The pattern of a dimension in the current pixel (the hash <see cref="Strata"/> has always used).</summary>
-  public uint Pattern(SampleDimension dimension, int instance = 0) =>
-    Strata.Pattern(Seed, Frame, X, Y, Strata.Dimension((uint)dimension, instance));
+  public uint Pattern(SampleDimension dimension, int instance = 0)
+  {
+    // The seed's part of the hash is kept while the seed stays (the same values, one hash less per call).
+    if (Seed != hashedSeed)
+    {
+      seedHash = Strata.SeedHash(Seed);
+      hashedSeed = Seed;
+    }
+    return Strata.Pattern(seedHash, Frame, X, Y, Strata.Dimension((uint)dimension, instance));
+  }
 }

@@ -71,10 +71,15 @@ public static class Strata
   }
 
   /// <summary>The pattern of a dimension in pixel (x, y) of a frame: a hash of seed, frame, pixel and dimension.</summary>
-  internal static uint Pattern(long seed, int frame, int x, int y, uint dimension)
+  internal static uint Pattern(long seed, int frame, int x, int y, uint dimension) => Pattern(SeedHash(seed), frame, x, y, dimension);
+
+  /// <summary>The first step of <see cref="Pattern(long, int, int, int, uint)"/>, which depends on the seed alone (a sampler keeps it).</summary>
+  internal static ulong SeedHash(long seed) => RandomStatic.Mix64((ulong)seed ^ 0xD1B54A32D192ED03UL);
+
+  /// <summary><see cref="Pattern(long, int, int, int, uint)"/> from the seed's <see cref="SeedHash"/>.</summary>
+  internal static uint Pattern(ulong seedHash, int frame, int x, int y, uint dimension)
   {
-    ulong h = RandomStatic.Mix64((ulong)seed ^ 0xD1B54A32D192ED03UL);
-    h = RandomStatic.Mix64(h ^ ((ulong)(uint)frame << 32 | dimension));
+    ulong h = RandomStatic.Mix64(seedHash ^ ((ulong)(uint)frame << 32 | dimension));
     h = RandomStatic.Mix64(h ^ ((ulong)(uint)y << 32 | (uint)x));
     return (uint)(h ^ (h >> 32));
   }

@@ -16,6 +16,37 @@ public class PathBsdfTests
     return PathBsdf.For(m, m.Color, Up, d, 100000);
   }
 
+  [Theory]
+  [InlineData(0.8, 0.0, 1, 0.0)]        // Lambertian alone
+  [InlineData(0.0, 0.6, 20, 0.0)]       // glossy alone
+  [InlineData(0.0, 1.0, 1000000, 0.0)]  // ideal mirror alone
+  [InlineData(0.0, 0.0, 1, 1.0)]        // dielectric alone
+  public void A_one_lobe_surface_samples_the_same_whatever_its_lobe_choice_so_the_path_needs_none(double kd, double ks, int h, double kt)
+  {
+    PathBsdf b = Bsdf(kd, ks, h, kt);
+    Assert.True(b.SingleLobe);
+    foreach (double choice in new[] { 0.3, 0.999999 })
+    {
+      Assert.Equal(b.Sample(0.0, 0.37, 0.61, out Vector3d w0, out Rgb f0, out double p0, out bool d0),
+                   b.Sample(choice, 0.37, 0.61, out Vector3d w1, out Rgb f1, out double p1, out bool d1));
+      Assert.Equal((w0, f0.R, p0, d0), (w1, f1.R, p1, d1));
+    }
+    Assert.False(Bsdf(0.5, 0.3, 20).SingleLobe);
+  }
+
+  [Fact]
+  public void An_ideal_mirror_alone_needs_no_direction_sample_and_other_surfaces_do()
+  {
+    PathBsdf mirror = Bsdf(0.0, 1.0, 1000000);
+    Assert.False(mirror.SamplesDirection);
+    mirror.Sample(0.0, 0.1, 0.9, out Vector3d a, out _, out _, out _);
+    mirror.Sample(0.0, 0.8, 0.2, out Vector3d b, out _, out _, out _);
+    Assert.Equal(a, b);
+    Assert.True(Bsdf(0.8, 0.0, 1).SamplesDirection);
+    Assert.True(Bsdf(0.0, 0.0, 1, kt: 1.0).SamplesDirection);   // its u chooses reflection or refraction
+    Assert.True(Bsdf(0.3, 0.7, 1000000).SamplesDirection);
+  }
+
   /// <summary>∫ f cos dω over the hemisphere by quadrature in (cos θ, φ), independent of the sampling code.</summary>
   static double Albedo(PathBsdf b)
   {

@@ -6,6 +6,7 @@ namespace Rendering;
 /// <summary>
 /// The background (<see cref="IRayScene.Background"/>, else <see cref="IRayScene.BackgroundColor"/>) as an infinite
 /// light: sampled cosine-weighted around the shading normal (density cos θ/π), found too by rays that leave the scene.
+/// Its power is what the background sends through the disk of the scene's bounding sphere (as pbrt): π·r²·π·mean radiance.
 /// </summary>
 internal sealed class EnvironmentLight : ILight
 {
@@ -14,17 +15,19 @@ internal sealed class EnvironmentLight : ILight
   readonly double[] buffer;
   readonly double power;
 
-  public EnvironmentLight(IRayScene scene, int bands)
+  /// <param name="sceneRadius">Radius of a sphere bounding the scene (<see cref="SceneBounds.Radius"/>).</param>
+  public EnvironmentLight(IRayScene scene, int bands, double sceneRadius)
   {
     background = scene.Background;
     colour = scene.BackgroundColor is double[] bg ? Rgb.From(bg) : Rgb.Zero;
     buffer = new double[Math.Max(bands, 3)];
-    power = Math.PI * MeanRadiance();
+    double r = sceneRadius > 0.0 && double.IsFinite(sceneRadius) ? sceneRadius : 1.0;
+    power = Math.PI * r * r * Math.PI * MeanRadiance();
   }
 
   public LightKind Kind => LightKind.Infinite;
 
-  /// <summary>Irradiance π·mean radiance on a unit area (the scene's size is not known here); the mean from 26 fixed directions.</summary>
+  /// <summary>Flux through the scene's bounding disk, π·r²·π·mean radiance; the mean from 26 fixed directions.</summary>
   public double Power => power;
 
   public bool SampleLi(in LightContext ctx, double u, double v, out LightSample sample)
