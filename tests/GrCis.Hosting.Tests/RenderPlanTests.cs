@@ -52,16 +52,28 @@ public sealed class RenderPlanTests : IDisposable
     Assert.Same(prepared.Plan, job.Plan);
   }
 
-  [Fact]
-  public void A_scripts_own_sampler_is_what_request_and_job_render_with()
+  /// <summary>A Five balls script that sets its own renderer (CTX_SYNTHESIZER).</summary>
+  ScriptSceneSource ScriptWithOwnSampler(string file)
   {
-    string path = Path.Combine(dir, "Scene.cs");
+    string path = Path.Combine(dir, file);
     File.WriteAllText(path, """
       Rendering.Scenes.FiveBalls(scene);
       context[PropertyName.CTX_SYNTHESIZER] = new SimpleImageSynthesizer();
       """);
-    using var source = new ScriptSceneSource(path, "", Array.Empty<string>());
-    PreparedRender prepared = new RenderRequest(source, Odd with { Algorithm = RenderAlgorithm.RayTracing }).Prepare();
+    return new ScriptSceneSource(path, "", Array.Empty<string>());
+  }
+
+  static PreparedRender PrepareRayTracing(ScriptSceneSource source) =>
+    new RenderRequest(source, Odd with { Algorithm = RenderAlgorithm.RayTracing }).Prepare();
+
+  /// <summary>Four frames of <paramref name="prepared"/>'s scene, through its plan.</summary>
+  static FrameRenderer Frames(PreparedRender prepared) => new(prepared.Scene, prepared.Plan, new AnimationTimeline(0, 1, 4));
+
+  [Fact]
+  public void A_scripts_own_sampler_is_what_request_and_job_render_with()
+  {
+    using ScriptSceneSource source = ScriptWithOwnSampler("Scene.cs");
+    PreparedRender prepared = PrepareRayTracing(source);
     Assert.IsType<SimpleImageSynthesizer>(prepared.Plan.CreateSynthesizer());
     Assert.Same(prepared.Synthesizer, RenderJob.From(prepared).Renderer);
   }
@@ -70,7 +82,7 @@ public sealed class RenderPlanTests : IDisposable
   public void An_animation_frame_gets_the_options_of_a_still_with_the_same_settings()
   {
     PreparedRender prepared = new RenderRequest(new BuiltInSceneSource("Two spheres"), Odd).Prepare();
-    var frames = new FrameRenderer(prepared.Scene, prepared.Plan, new AnimationTimeline(0, 1, 4));
+    FrameRenderer frames = Frames(prepared);
 
     Assert.Equal(prepared.Plan.CreateOptions(), frames.Parts.CreateOptions(0, Odd.Threads));
     Assert.Equal(prepared.Plan.CreateOptions(frame: 3), frames.Parts.CreateOptions(3, Odd.Threads));
@@ -83,7 +95,7 @@ public sealed class RenderPlanTests : IDisposable
   public void An_animation_frame_builds_the_function_and_sampler_a_still_builds()
   {
     PreparedRender prepared = new RenderRequest(new BuiltInSceneSource("Two spheres"), Odd).Prepare();
-    var frames = new FrameRenderer(prepared.Scene, prepared.Plan, new AnimationTimeline(0, 1, 4));
+    FrameRenderer frames = Frames(prepared);
     IImageFunction still = prepared.Plan.CreateImageFunction(), frame = frames.Parts.CreateFunction(null);
     Assert.IsType<PathTracing>(frame);
     Assert.Equal(((RayCasting)still).Accel, ((RayCasting)frame).Accel);
@@ -96,14 +108,9 @@ public sealed class RenderPlanTests : IDisposable
   [Fact]
   public void An_animation_frame_renders_with_a_scripts_own_sampler_as_a_still_does()
   {
-    string path = Path.Combine(dir, "Frames.cs");
-    File.WriteAllText(path, """
-      Rendering.Scenes.FiveBalls(scene);
-      context[PropertyName.CTX_SYNTHESIZER] = new SimpleImageSynthesizer();
-      """);
-    using var source = new ScriptSceneSource(path, "", Array.Empty<string>());
-    PreparedRender prepared = new RenderRequest(source, Odd with { Algorithm = RenderAlgorithm.RayTracing }).Prepare();
-    var frames = new FrameRenderer(prepared.Scene, prepared.Plan, new AnimationTimeline(0, 1, 4));
+    using ScriptSceneSource source = ScriptWithOwnSampler("Frames.cs");
+    PreparedRender prepared = PrepareRayTracing(source);
+    FrameRenderer frames = Frames(prepared);
     Assert.IsType<SimpleImageSynthesizer>(frames.Parts.CreateSynthesizer());
     Assert.False(frames.Sequential);
   }
