@@ -117,21 +117,29 @@ public class PreparedSceneTests
         : new Vector3d(r.NextDouble() - 0.5, r.NextDouble() - 0.5, r.NextDouble() - 0.5);
       if (n % 7 == 0)
         p1.Y = 0.0;   // a zero component: the line test steps aside
-      Intersection? a = lists.FirstHit(p0, p1);
-      Intersection? b = ps.FirstHit(p0, p1);
-      Assert.Equal(a == null, b == null);
-      if (a != null && b != null)
-      {
-        hits++;
-        Assert.Same(a.Solid, b.Solid);
-        Assert.Equal(a.T, b.T);
-      }
-      bool blocks = lists.AnyHit(p0, p1);
-      Assert.Equal(blocks, ps.AnyHit(p0, p1));
-      if (blocks)
-        blocked++;
+      (bool hit, bool blocks) = AssertSameAnswers(lists, ps, p0, p1, compareEnter: false);
+      hits += hit ? 1 : 0;
+      blocked += blocks ? 1 : 0;
     }
     Assert.True(hits > 2000 && blocked > 1000, $"{hits} hits, {blocked} blocked");
+  }
+
+  /// <summary>The prepared scene's first hit (solid, T, and the side when asked) and shadow answer equal GrCis's lists' for one ray; whether it hit and was blocked.</summary>
+  static (bool Hit, bool Blocked) AssertSameAnswers(SceneLists lists, PreparedScene ps, Vector3d p0, Vector3d p1, bool compareEnter)
+  {
+    Intersection? a = lists.FirstHit(p0, p1);
+    Intersection? b = ps.FirstHit(p0, p1);
+    Assert.Equal(a == null, b == null);
+    if (a != null && b != null)
+    {
+      Assert.Same(a.Solid, b.Solid);
+      Assert.Equal(a.T, b.T);
+      if (compareEnter)
+        Assert.Equal(a.Enter, b.Enter);
+    }
+    bool blocks = lists.AnyHit(p0, p1);
+    Assert.Equal(blocks, ps.AnyHit(p0, p1));
+    return (a != null && b != null, blocks);
   }
 
   [Fact]
@@ -171,20 +179,9 @@ public class PreparedSceneTests
         p0 = start.CoordWorld;
         p1 = new Vector3d(r.NextDouble() - 0.5, r.NextDouble() - 0.5, r.NextDouble() - 0.5);
       }
-      Intersection? a = lists.FirstHit(p0, p1);
-      Intersection? b = ps.FirstHit(p0, p1);
-      Assert.Equal(a == null, b == null);
-      if (a != null && b != null)
-      {
-        hits++;
-        Assert.Same(a.Solid, b.Solid);
-        Assert.Equal(a.T, b.T);
-        Assert.Equal(a.Enter, b.Enter);
-      }
-      bool blocks = lists.AnyHit(p0, p1);
-      Assert.Equal(blocks, ps.AnyHit(p0, p1));
-      if (blocks)
-        blocked++;
+      (bool hit, bool blocks) = AssertSameAnswers(lists, ps, p0, p1, compareEnter: true);
+      hits += hit ? 1 : 0;
+      blocked += blocks ? 1 : 0;
     }
     Assert.True(hits > 5000 && blocked > 2000, $"{hits} hits, {blocked} blocked");
   }
