@@ -43,6 +43,10 @@ internal struct PreparedMember
 
   public Aabb WorldBox;
 
+  /// <summary>Closed with a non-empty world box: a member of the scene's BVH (a closed member with an empty box has no
+  /// records and is left out of every query; an open one is tested for every ray).</summary>
+  public readonly bool Bounded => Closed && !WorldBox.IsEmpty;
+
   /// <summary>Attributes resolved at prepare time (reflectance model and material found; else per hit).</summary>
   public bool AttributesCached;
   public IReflectanceModel? Model;

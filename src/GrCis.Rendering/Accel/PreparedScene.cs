@@ -100,9 +100,8 @@ public sealed partial class PreparedScene : ISceneQuery
       boxes[i] = members[i].WorldBox;
       if (!members[i].Closed)
         open.Add(i);
-      else if (!members[i].WorldBox.IsEmpty)
+      else if (members[i].Bounded)
         bounded.Add(i);
-      // A closed member with an empty box has no records: it can be left out.
     }
     always = open.ToArray();
     if (union && bounded.Count > 0)

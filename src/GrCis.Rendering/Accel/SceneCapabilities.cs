@@ -50,8 +50,7 @@ internal sealed class SceneCapabilities
     for (int i = 0; i < members.Length; i++)
     {
       decided[i] = Of(members[i]);
-      // A closed member with an empty box has no records: it is left out of the BVH and of every query.
-      if (members[i].Closed && !members[i].WorldBox.IsEmpty)
+      if (members[i].Bounded)
         bounded++;
     }
     return new SceneCapabilities(union, decided, bounded);
