@@ -1,6 +1,7 @@
 using System;
 using System.Diagnostics;
 using System.IO;
+using System.Text.Json.Nodes;
 using Rendering.Imaging;
 
 namespace GrCis.Cli.Tests;
@@ -54,5 +55,20 @@ public class ExecutableTests
     Assert.Equal("", stdout);
     Assert.Equal("grcis: error: invalid --size '0x10': width and height must be positive", stderr.Trim());
     Assert.Empty(dir.AllFiles());
+  }
+
+  [Fact]
+  public void Grcis_asks_the_runtime_for_optimised_code_as_soon_as_a_method_is_hot()
+  {
+    // The runtime's default delay (100 ms without a newly compiled method) kept a short render in unoptimised code.
+    Assert.Equal(0, CallCountingDelayMs(Path.Combine(AppContext.BaseDirectory, "grcis.runtimeconfig.json")));
+  }
+
+  /// <summary>The tiering delay a <c>runtimeconfig.json</c> sets, or null when it leaves the runtime's default.</summary>
+  internal static int? CallCountingDelayMs(string runtimeConfig)
+  {
+    Assert.True(File.Exists(runtimeConfig), $"{runtimeConfig} not found");
+    JsonNode? value = JsonNode.Parse(File.ReadAllText(runtimeConfig))?["runtimeOptions"]?["configProperties"]?["System.Runtime.TieredCompilation.CallCountingDelayMs"];
+    return value?.GetValue<int>();
   }
 }

@@ -50,6 +50,9 @@ public class PackagesTests
     Dictionary<string, string?> env = FreshHome(home);
 
     Run(work, env, "tool", "install", "--global", "--add-source", feed, "GrCis.Cli");
+    // The installed tool keeps grcis's runtime settings (hot methods optimised at once).
+    string[] configs = Directory.GetFiles(Path.Combine(home, ".dotnet", "tools", ".store"), "grcis.runtimeconfig.json", SearchOption.AllDirectories);
+    Assert.Equal(0, ExecutableTests.CallCountingDelayMs(Assert.Single(configs)));
     Run(work, env, "new", "install", Path.Combine(feed, $"GrCis.Templates.{version}.nupkg"));
     Run(work, env, "new", "grcis-scene", "-o", "MyScene");
     string folder = Path.Combine(work, "MyScene");
