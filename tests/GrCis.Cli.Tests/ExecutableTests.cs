@@ -61,7 +61,7 @@ public class ExecutableTests
   public void Grcis_asks_the_runtime_for_optimised_code_as_soon_as_a_method_is_hot()
   {
     // The runtime's default delay (100 ms without a newly compiled method) kept a short render in unoptimised code.
-    Assert.Equal(0, CallCountingDelayMs(Path.Combine(AppContext.BaseDirectory, "grcis.runtimeconfig.json")));
+    Assert.InRange(CallCountingDelayMs(Path.Combine(AppContext.BaseDirectory, "grcis.runtimeconfig.json")) ?? 100, 0, 10);
   }
 
   /// <summary>The tiering delay a <c>runtimeconfig.json</c> sets, or null when it leaves the runtime's default.</summary>
