@@ -126,7 +126,7 @@ public sealed class AnimateCommand
     MemoryBudget.Check(settings.Size);
     foreach (string note in setup.Notes)
       env.Error.WriteLine("grcis: note: " + note);
-        AnimationPlan plan = AnimationPlan.Create(parse.GetValue(from), parse.GetValue(to), parse.GetValue(fps), setup.Timing, setup.Scene, range, part);
+    AnimationPlan plan = AnimationPlan.Create(parse.GetValue(from), parse.GetValue(to), parse.GetValue(fps), setup.Timing, setup.Scene, range, part);
 
     if (setup.Synthesizer == null && settings.SamplesPerPixel > 1 && settings.EffectiveSamplesPerPixel != settings.SamplesPerPixel)
       env.Error.WriteLine($"grcis: note: --spp {settings.SamplesPerPixel} rounded up to {settings.EffectiveSamplesPerPixel} (a square grid)");
