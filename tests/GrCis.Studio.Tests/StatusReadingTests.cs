@@ -17,7 +17,7 @@ public sealed class StatusReadingTests
   const int Renders = 40;
 
   [Fact]
-  public void Renders_run_to_the_end_or_replaced_all_finish_while_the_status_is_read_without_pause()
+  public async Task Renders_run_to_the_end_or_replaced_all_finish_while_the_status_is_read_without_pause()
   {
     var catalog = SceneCatalog.WithBuiltInScenes();
     var session = new StudioSession(new DemoController(catalog));
@@ -62,9 +62,10 @@ public sealed class StatusReadingTests
       }
     }, TaskCreationOptions.LongRunning);
 
-    bool ended = renders.Wait(TimeSpan.FromMinutes(2));
+    bool ended = await Task.WhenAny(renders, Task.Delay(TimeSpan.FromMinutes(2))) == renders;
     Assert.True(ended, $"stuck after {Volatile.Read(ref finished)} finished renders, {Interlocked.Read(ref reads)} status reads; " +
                        StudioState.Describe(session));
+    await renders;
     stop.Cancel();
     foreach (Thread reader in readers)
       reader.Join();
