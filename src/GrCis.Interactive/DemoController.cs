@@ -166,6 +166,10 @@ public sealed partial class DemoController : IDisposable
     }
   }
 
+  /// <summary>
+  /// The scene of the render asked for last was built and its render has started (its first previews may come before this).
+  /// Like every event of the controller, raised with none of its locks held, so a handler may read its state.
+  /// </summary>
   public event EventHandler<BuiltScene>? SceneEvaluated;
 
   public event EventHandler<RenderPreviewEventArgs>? PreviewReady;
@@ -277,7 +281,6 @@ public sealed partial class DemoController : IDisposable
       if (building.IsCancellationRequested)
         return null;
       this.building = false;
-      Raise(SceneEvaluated, built);
       LastJob = job;
       s = session = new RenderSession(job)
       {
@@ -315,6 +318,10 @@ public sealed partial class DemoController : IDisposable
       };
       s.Start();
     }
+    // Raised with no lock held, as every event here: a front end that reads the state (IsBusy) under a lock of its own,
+    // a lock its handler takes too, would otherwise deadlock with us (the studio's status and its event handlers).
+    if (id == RenderId)
+      Raise(SceneEvaluated, built);
     return await s.Task.ConfigureAwait(false);
   }
 

@@ -202,8 +202,8 @@ public sealed class StudioSession : IDisposable
   }
 
   /// <summary>What the studio does now: <c>compiling</c> (a script being built: compiled and run), <c>rendering</c> or <c>idle</c>.</summary>
-  string Phase() =>
-    Controller.IsBuilding || checking ? "compiling" : Controller.IsBusy ? "rendering" : "idle";
+  string Phase(bool building, bool busy) =>
+    building || checking ? "compiling" : busy ? "rendering" : "idle";
 
   // A render is starting (asked by the page, or a watched script changed): its state starts afresh.
   void Started()
@@ -238,12 +238,15 @@ public sealed class StudioSession : IDisposable
   /// <summary>What the page shows about the render now.</summary>
   public StudioStatus Status()
   {
+    // The controller's state is read outside this session's lock, so its locks are never taken under ours and the two can't
+    // wait for each other; read first, so a render that ends in between is seen ending in the next status (its end is a change).
+    bool building = Controller.IsBuilding, busy = Controller.IsBusy;
     lock (sync)
-      return new StudioStatus(Controller.IsBusy, version, fraction, elapsed.TotalSeconds, statistics, error,
+      return new StudioStatus(busy, version, fraction, elapsed.TotalSeconds, statistics, error,
                               Controller.LastJob?.Notes ?? Array.Empty<string>(), diagnostics,
                               Controller.Algorithm is RenderAlgorithm a ? RenderAlgorithmNames.Name(a) : null)
       {
-        Phase = Phase(),
+        Phase = Phase(building, busy),
         Tab = Tab,
         Progressive = Controller.Progressive,
         Samples = samples,

@@ -33,6 +33,28 @@ public class RenderStateTests
   }
 
   [Fact]
+  public async Task The_state_can_be_read_from_another_thread_while_the_built_scene_is_announced()
+  {
+    var catalog = SceneCatalog.WithBuiltInScenes();
+    using var demo = new DemoController(catalog)
+    {
+      Settings = new RenderSettings { Width = 16, Height = 12, Threads = 2 },
+      Selected = catalog.Find("Five balls"),
+    };
+    bool? answered = null;
+    demo.SceneEvaluated += (_, _) =>
+    {
+      // A front end's status reader (the studio's event stream) reads the state at any moment; here while the event is
+      // raised. Raised under the controller's lock, the read would wait for this handler, which waits for the read.
+      Task<(bool, bool)> read = Task.Run(() => (demo.IsBuilding, demo.IsBusy));
+      answered = read.Wait(TimeSpan.FromSeconds(30));
+    };
+    RenderResult? result = await demo.RenderAsync();
+    Assert.NotNull(result);
+    Assert.True(answered, "the controller's state could not be read from another thread while SceneEvaluated was being raised");
+  }
+
+  [Fact]
   public async Task A_second_render_replaces_the_first_and_only_its_events_arrive()
   {
     var catalog = SceneCatalog.WithBuiltInScenes();

@@ -72,8 +72,8 @@ public sealed class BrowserLayoutTests(StudioFixture studio) : IClassFixture<Stu
 
   static double HeaderHeight(IWebDriver browser) => Convert.ToDouble(Js(browser, "return document.querySelector('header').getBoundingClientRect().height;"));
 
-  static void WaitIdle(IWebDriver browser, string what) =>
-    Until(browser, () => browser.FindElement(By.Id("stats")).Text.Length > 0 && !browser.FindElement(By.Id("stop")).Enabled, what);
+  void WaitIdle(IWebDriver browser, string what) =>
+    Until(browser, () => browser.FindElement(By.Id("stats")).Text.Length > 0 && !browser.FindElement(By.Id("stop")).Enabled, what, studio.Server.Session);
 
   /// <summary>Every visible control of the header whole inside the header and the window (none cut off or under another), the parameters wide enough to type in.</summary>
   static void AssertHeaderWhole(IWebDriver browser, int width, string state)
@@ -109,7 +109,7 @@ public sealed class BrowserLayoutTests(StudioFixture studio) : IClassFixture<Stu
 
     // A script shows Edit too, the header's widest state.
     File.WriteAllText(Path.Combine(studio.ScriptsFolder, "Balls.cs"), "Rendering.Scenes.FiveBalls(scene);\n");
-    RenderIn(browser, "Balls", 320, 240);
+    RenderIn(browser, studio.Server.Session, "Balls", 320, 240);
     Until(browser, () => browser.FindElement(By.Id("edit")).Displayed, "the Edit button");
     AssertHeaderWhole(browser, width, "a script");
     Assert.Equal(header, HeaderHeight(browser));
@@ -133,7 +133,7 @@ public sealed class BrowserLayoutTests(StudioFixture studio) : IClassFixture<Stu
     double header = HeaderHeight(browser);
 
     // A finished render: fitted and centred by default; the header as high as before.
-    RenderIn(browser, "Five balls", 320, 240);
+    RenderIn(browser, studio.Server.Session, "Five balls", 320, 240);
     Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 320, "the image");
     AssertImageFittedAndVisible(browser, width, height);
     Assert.Equal(header, HeaderHeight(browser));
@@ -154,7 +154,7 @@ public sealed class BrowserLayoutTests(StudioFixture studio) : IClassFixture<Stu
 
     // The editor with an error: beside the image, not over it; the error stays above the image until dismissed.
     File.WriteAllText(Path.Combine(studio.ScriptsFolder, "Balls.cs"), "// Five balls\nRendering.Scenes.FiveBalls(scene);\n");
-    RenderIn(browser, "Balls", 320, 240);
+    RenderIn(browser, studio.Server.Session, "Balls", 320, 240);
     AssertHeaderWhole(browser, width, "a script");
     browser.FindElement(By.Id("edit")).Click();
     Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
@@ -197,7 +197,7 @@ public sealed class BrowserLayoutTests(StudioFixture studio) : IClassFixture<Stu
 
     // A short full render and its noise view, in the light theme.
     Js(browser, "document.getElementById('spp').value = 16; document.getElementById('width').value = 320; document.getElementById('height').value = 240;");
-    RenderIn(browser, "Five balls", 320, 240);
+    RenderIn(browser, studio.Server.Session, "Five balls", 320, 240);
     Js(browser, "const k = document.getElementById('view-kind'); k.value = 'Noise'; k.dispatchEvent(new Event('change'));");
     Until(browser, () => (string?)Js(browser, "return document.getElementById('viewPng').getAttribute('href');") == "api/views/Noise.png" &&
                          !browser.FindElement(By.Id("messageBox")).Displayed, "the noise view");

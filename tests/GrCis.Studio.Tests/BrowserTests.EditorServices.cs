@@ -20,7 +20,7 @@ public sealed partial class BrowserTests
     Until(browser, () => browser.FindElement(By.Id("edit")).Displayed, "the Edit button of the added script");
     // The script's own picture beside the editor, as a student sees it (and the screenshots in docs/studio.md show).
     Js(browser, "document.getElementById('algorithm').value = '';");
-    RenderIn(browser, "Assisted", 320, 240);
+    RenderIn(browser, studio.Server.Session, "Assisted", 320, 240);
     browser.FindElement(By.Id("edit")).Click();
     Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
     IWebElement input = browser.FindElement(By.CssSelector("#editor .CodeMirror textarea"));

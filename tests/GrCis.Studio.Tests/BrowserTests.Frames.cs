@@ -86,10 +86,10 @@ public sealed partial class BrowserTests
     using ChromeDriver browser = Browser();
     browser.Navigate().GoToUrl(studio.Server.Url);
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
-    RenderIn(browser, "Five balls", 64, 48);
+    RenderIn(browser, studio.Server.Session, "Five balls", 64, 48);
     Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 64, "the first image");
     byte[] first = CanvasPixels(browser, "canvas");
-    RenderIn(browser, "Flags", 64, 48);
+    RenderIn(browser, studio.Server.Session, "Flags", 64, 48);
     Until(browser, () => browser.FindElement(By.Id("historyLabel")).Text.Contains("Flags", StringComparison.Ordinal) &&
                          CanvasPixels(browser, "canvas") is var shown && !shown.SequenceEqual(first), "the second image");
     byte[] second = CanvasPixels(browser, "canvas");

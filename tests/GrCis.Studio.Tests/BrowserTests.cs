@@ -48,13 +48,15 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     return browser;
   }
 
-  internal static void Until(IWebDriver browser, Func<bool> condition, string what)
+  /// <param name="server">What the studio's own state says, added to the message on time-out (<see cref="StudioState.Describe"/>); null = nothing.</param>
+  internal static void Until(IWebDriver browser, Func<bool> condition, string what, StudioSession? server = null)
   {
     var deadline = DateTime.UtcNow + TimeSpan.FromSeconds(60);
     while (!condition())
     {
       if (DateTime.UtcNow > deadline)
-        throw new TimeoutException($"waited 60 s for {what}; page messages: {Js(browser, "return document.getElementById('messages').textContent;")}");
+        throw new TimeoutException($"waited 60 s for {what}; page messages: {Js(browser, "return document.getElementById('messages').textContent;")}" +
+                                   (server == null ? "" : $"; {StudioState.Describe(server)}"));
       System.Threading.Thread.Sleep(50);
     }
   }
@@ -103,14 +105,16 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     browser.FindElement(By.Id("add")).Click();
   }
 
-  internal static void RenderIn(ChromeDriver browser, string scene, int width, int height)
+  /// <summary>Renders <paramref name="scene"/> at the size given and waits for its statistics and the Stop button disabled;
+  /// on time-out the message has the state of <paramref name="server"/>, the studio the page talks to.</summary>
+  internal static void RenderIn(ChromeDriver browser, StudioSession server, string scene, int width, int height)
   {
     Js(browser, "const s = document.getElementById('scene'); s.value = arguments[0]; s.dispatchEvent(new Event('change'));", scene);
     Js(browser, "document.getElementById('width').value = arguments[0]; document.getElementById('height').value = arguments[1];", width, height);
     Js(browser, "document.getElementById('stats').textContent = '';");
     browser.FindElement(By.Id("render")).Click();
     Until(browser, () => browser.FindElement(By.Id("stats")).Text.StartsWith($"{width}x{height}", StringComparison.Ordinal) &&
-                         !browser.FindElement(By.Id("stop")).Enabled, $"the render of {scene}");
+                         !browser.FindElement(By.Id("stop")).Enabled, $"the render of {scene}", server);
   }
 
   [SkippableFact]
@@ -121,7 +125,7 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
 
     // 1. Five balls, shown exactly as grcis render saves it.
-    RenderIn(browser, "Five balls", 160, 120);
+    RenderIn(browser, studio.Server.Session, "Five balls", 160, 120);
     Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 160, "the image");
     var shown = ((IReadOnlyCollection<object>)Js(browser,
       "const c = document.getElementById('canvas'); return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);")!)
@@ -151,7 +155,7 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     browser.FindElement(By.Id("show3d")).Click();
 
     // 3. Edit the folder's script: a typo is marked at its line, the fix renders a new image.
-    RenderIn(browser, "Balls", 160, 120);
+    RenderIn(browser, studio.Server.Session, "Balls", 160, 120);
     browser.FindElement(By.Id("edit")).Click();
     Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
     Js(browser, "document.querySelector('#editor .CodeMirror').CodeMirror.setValue(arguments[0]);", "// Five balls\nRendering.Scenes.FiveBals(scene);\n");
@@ -174,7 +178,7 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
 
     // 4. Path tracing, shown in passes of samples, then where its noise is.
     Js(browser, "document.getElementById('algorithm').value = 'path'; document.getElementById('spp').value = 16;");
-    RenderIn(browser, "Five balls", 320, 240);
+    RenderIn(browser, studio.Server.Session, "Five balls", 320, 240);
     Assert.Contains("noise", browser.FindElement(By.Id("stats")).Text);
     Js(browser, "const k = document.getElementById('view-kind'); k.value = 'Noise'; k.dispatchEvent(new Event('change'));");
     Until(browser, () => (string?)Js(browser, "return document.getElementById('viewPng').getAttribute('href');") == "api/views/Noise.png" &&
@@ -243,20 +247,20 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     browser.Navigate().GoToUrl(studio.Server.Url);
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
     string first = browser.CurrentWindowHandle;
-    RenderIn(browser, "Five balls", 48, 36);
+    RenderIn(browser, studio.Server.Session, "Five balls", 48, 36);
     Assert.DoesNotContain("Another tab", Messages());
 
     browser.SwitchTo().NewWindow(WindowType.Tab);
     browser.Navigate().GoToUrl(studio.Server.Url);
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the second tab's scene list");
     string second = browser.CurrentWindowHandle;
-    RenderIn(browser, "Five balls", 40, 30);
+    RenderIn(browser, studio.Server.Session, "Five balls", 40, 30);
     Assert.DoesNotContain("Another tab", Messages());
 
     browser.SwitchTo().Window(first);
     Until(browser, () => Messages().Contains("Another tab or window of this studio started what is on show", StringComparison.Ordinal),
           "the first tab's notice");
-    RenderIn(browser, "Five balls", 48, 36);
+    RenderIn(browser, studio.Server.Session, "Five balls", 48, 36);
     Until(browser, () => !Messages().Contains("Another tab", StringComparison.Ordinal), "the first tab's own render again");
     browser.SwitchTo().Window(second);
     Until(browser, () => Messages().Contains("Another tab", StringComparison.Ordinal), "the second tab's notice");
@@ -290,7 +294,7 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     using ChromeDriver browser = Browser();
     browser.Navigate().GoToUrl(studio.Server.Url);
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
-    RenderIn(browser, "Five balls", 160, 120);
+    RenderIn(browser, studio.Server.Session, "Five balls", 160, 120);
     Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 160, "the image");
 
     // Zoomed and panned away first, so the fit has something to undo.
@@ -316,7 +320,7 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     using ChromeDriver browser = Browser();
     browser.Navigate().GoToUrl(studio.Server.Url);
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
-    RenderIn(browser, "Five balls", 160, 120);
+    RenderIn(browser, studio.Server.Session, "Five balls", 160, 120);
     Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 160, "the image");
     Js(browser, "window.dispatchEvent(new KeyboardEvent('keydown', { key: 'r' }));");
     IWebElement canvas = browser.FindElement(By.Id("canvas"));
@@ -344,7 +348,7 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
 
     // Path tracing in passes: previews and progress for a while, then the completion.
     Js(browser, "document.getElementById('algorithm').value = 'path'; document.getElementById('spp').value = 16;");
-    RenderIn(browser, "Five balls", 240, 180);
+    RenderIn(browser, studio.Server.Session, "Five balls", 240, 180);
     Until(browser, () => (long)Js(browser, "return document.getElementById('canvas').width;")! == 240, "the image");
     Assert.Contains("noise", browser.FindElement(By.Id("stats")).Text);
     Assert.True(Requests("/api/image.png") >= 1);
@@ -361,7 +365,7 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     using ChromeDriver browser = Browser();
     browser.Navigate().GoToUrl(studio.Server.Url);
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the scene list");
-    RenderIn(browser, "Five balls", 160, 120);
+    RenderIn(browser, studio.Server.Session, "Five balls", 160, 120);
     Js(browser, "window.dispatchEvent(new KeyboardEvent('keydown', { key: 'r' }));");
     IWebElement canvas = browser.FindElement(By.Id("canvas"));
     void ProbeAt(int x, int y)
