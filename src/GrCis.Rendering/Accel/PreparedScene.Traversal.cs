@@ -21,6 +21,24 @@ public sealed partial class PreparedScene
     double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
     double ox = p0.X, oy = p0.Y, oz = p0.Z;
 
+    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
+    if (rectangles != null)
+    {
+      // Rectangles four at a time in world space; only those the estimate cannot dismiss go through their chain.
+      Vector256<double> vdx = Vector256.Create(p1.X), vdy = Vector256.Create(p1.Y), vdz = Vector256.Create(p1.Z);
+      double scale = Math.Max(1.0, Math.Max(Math.Abs(ox), Math.Max(Math.Abs(oy), Math.Abs(oz))));
+      double dirScale = Math.Max(Math.Abs(p1.X), Math.Max(Math.Abs(p1.Y), Math.Abs(p1.Z)));
+      double accept = Intersection.RAY_EPSILON / Math.Sqrt(q.Len2);
+      ReadOnlySpan<RectangleCull.Group> groups = rectangles.Groups;
+      for (int g = 0; g < groups.Length; g++)
+      {
+        ref readonly RectangleCull.Group group = ref groups[g];
+        for (int mask = RectangleCull.MustTest(group, vox, voy, voz, vdx, vdy, vdz, scale, dirScale, accept, q.BestT); mask != 0; mask &= mask - 1)
+          if (!TestMember(group.Member[BitOperations.TrailingZeroCount(mask)], ref q, p0, p1))
+            return false;
+      }
+    }
+
     // The whole-line test of a bounded plane needs every slab: a zero component would turn one into a half-line.
     bool lineCull = p1.X != 0.0 && p1.Y != 0.0 && p1.Z != 0.0;
     for (int k = 0; k < always.Length; k++)
@@ -39,7 +57,6 @@ public sealed partial class PreparedScene
       return true;
     WideNode[] nodes = bvh.Nodes;
     int[] items = bvh.Items;
-    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
     Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
 
     // Visit boxes overlapping [0, best]; "≤ best" keeps equal-T ties for the depth-first order rule (the winner is
@@ -173,6 +190,13 @@ public sealed partial class PreparedScene
         q.BestList = null;
         if (h.T < q.BestT)
           q.BestT = h.T;
+      }
+      if (has && q.Any && NotFar(h.T, q.Len2))
+      {
+        // A blocker: from now on only members that may contain the origin matter.
+        q.Found = true;
+        if (q.AnyBound < q.BestT)
+          q.BestT = q.AnyBound;
       }
       return true;
     }

@@ -40,7 +40,11 @@ public sealed partial class PreparedScene : ISceneQuery
   readonly PreparedMember[] members;
   readonly Matrix4d[] chain;
   readonly int[] always;
+  readonly RectangleCull? rectangles;
   readonly WideBvh? bvh;
+
+  // Shadow queries may stop at the first blocker: union semantics, every member answered by a kernel, no NO_SHADOW solid.
+  readonly bool anyHit;
 
   // Union-merge semantics over all members; false: one member whose raw list the scene returns.
   readonly bool union;
@@ -60,7 +64,13 @@ public sealed partial class PreparedScene : ISceneQuery
   public int BoundedCount => Capabilities.BoundedCount;
 
   /// <summary>Members tested for every ray (open or unknown solids; bounded planes only where the ray's line meets their box).</summary>
-  public int UnboundedCount => always.Length;
+  public int UnboundedCount => always.Length + (rectangles?.Count ?? 0);
+
+  /// <summary>Bounded rectangles among the unbounded members, tested first by their conservative world-space cull (<see cref="RectangleCull"/>).</summary>
+  public int CulledRectangleCount => rectangles?.Count ?? 0;
+
+  /// <summary>True when shadow queries may stop at the first blocker they meet (<see cref="Occluded"/>).</summary>
+  public bool StopsAtFirstBlocker => anyHit;
 
   /// <summary>Members answered through the LinkedList API.</summary>
   public int ListMemberCount => Capabilities.ListCount;
@@ -111,6 +121,14 @@ public sealed partial class PreparedScene : ISceneQuery
     }
     else if (!union)
       always = members.Length > 0 ? new[] { 0 } : Array.Empty<int>();
+    if (union)
+    {
+      rectangles = RectangleCull.Build(members, chain, always, out int[] rest);
+      always = rest;
+      anyHit = true;
+      foreach (PreparedMember m in members)
+        anyHit &= (m.RecordSolid != null || m.Csg != null) && !m.NoShadow;
+    }
   }
 
 
@@ -136,6 +154,12 @@ public sealed partial class PreparedScene : ISceneQuery
     public int InsideLeaf;
     public double InsideT;
     public SolidRecord InsideHit;
+
+    // Shadow queries: stop at the first blocker (Found), then only members that may contain the origin are visited.
+    public bool Any;
+    public bool Found;
+    /// <summary>Just above the smallest accepted t: members whose boxes start beyond it cannot contain the origin.</summary>
+    public double AnyBound;
   }
 
   /// <summary>
@@ -233,8 +257,29 @@ public sealed partial class PreparedScene : ISceneQuery
     double bound = 1.0 + Intersection.RAY_EPSILON / Math.Sqrt(len2);
     bound += bound * 1.0e-12;
     var q = NewQuery(len2, bound);
+    if (anyHit)
+    {
+      // With no NO_SHADOW solid, a blocker that is not far decides, once no member is inside at the origin:
+      // every member's first record is then an entry, so the union's first record is no later than it.
+      q.Any = true;
+      q.AnyBound = 1.001 * Intersection.RAY_EPSILON / Math.Sqrt(len2);
+      if (!Closest(ref q, p0, dir))
+        return ListOccluded(p0, dir);
+      if (!q.Found)
+        return Decide(ref q, p0, dir, len2);
+      if (q.InsideIndex < 0)
+        return true;
+      // Inside a member: the closest-record rule decides, as without the shortcut.
+      q = NewQuery(len2, bound);
+    }
     if (!Closest(ref q, p0, dir))
       return ListOccluded(p0, dir);
+    return Decide(ref q, p0, dir, len2);
+  }
+
+  /// <summary>The shadow answer from a completed closest-record query.</summary>
+  bool Decide(ref Query q, Vector3d p0, Vector3d dir, double len2)
+  {
     if (q.InsideIndex >= 0)
     {
       if ((q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT) || Solid(q.InsideIndex, q.InsideLeaf).NoShadow)
