@@ -192,10 +192,13 @@ internal sealed class RectangleCull
     Vector256<double> beyond = Vector256.LessThan(vz, -ed) & Vector256.GreaterThan(z0 - e0, bound * (ed - vz));
 
     // The line misses the rectangle for sure (then Plane's test has no record at any t); needs |dz| well above its error.
+    // One division: with ed·|1/dz| < 1/2, 1/(|dz| − ed) ≤ |1/dz|·(1 + 2 ed |1/dz|); 1.01 covers the rounding of 1/dz.
     Vector256<double> avz = Vector256.Abs(vz);
-    Vector256<double> t = -z0 / vz;
+    Vector256<double> inv = Vector256<double>.One / vz;
+    Vector256<double> ainv = Vector256.Abs(inv);
+    Vector256<double> t = -z0 * inv;
     Vector256<double> at = Vector256.Abs(t);
-    Vector256<double> et = (e0 + at * ed) / (avz - ed) * Vector256.Create(1.01) + at * Vector256.Create(Gamma);
+    Vector256<double> et = (e0 + at * ed) * ainv * (Vector256<double>.One + (ed + ed) * ainv) * Vector256.Create(1.01) + at * Vector256.Create(Gamma);
     Vector256<double> x0 = g.Xx * ox + g.Xy * oy + g.Xz * oz + g.Xw;
     Vector256<double> vx = g.Xx * dx + g.Xy * dy + g.Xz * dz;
     Vector256<double> y0 = g.Yx * ox + g.Yy * oy + g.Yz * oz + g.Yw;
