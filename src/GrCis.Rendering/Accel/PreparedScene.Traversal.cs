@@ -22,7 +22,26 @@ public sealed partial class PreparedScene
       return false;
     if (bvh != null && !Bounded(ref q, p0, p1))
       return false;
+    if (spheres != null && !Balls(ref q, p0, p1))
+      return false;
     return rectangles == null || Rectangles(ref q, p0, p1);
+  }
+
+  /// <summary>The closed members of a small scene (balls), four at a time; only those the cull cannot dismiss are tested.</summary>
+  bool Balls(ref Query q, in Vector3d p0, in Vector3d p1)
+  {
+    Vector256<double> vox = Vector256.Create(p0.X), voy = Vector256.Create(p0.Y), voz = Vector256.Create(p0.Z);
+    Vector256<double> vdx = Vector256.Create(p1.X), vdy = Vector256.Create(p1.Y), vdz = Vector256.Create(p1.Z);
+    double low = 1.001 * Intersection.RAY_EPSILON / Math.Sqrt(q.Len2);
+    ReadOnlySpan<SphereCull.Group> groups = spheres!.Groups;
+    for (int g = 0; g < groups.Length; g++)
+    {
+      ref readonly SphereCull.Group group = ref groups[g];
+      for (int mask = SphereCull.MustTest(group, vox, voy, voz, vdx, vdy, vdz, q.Len2, Math.Max(q.BestT, low)); mask != 0; mask &= mask - 1)
+        if (!TestMember(group.Member[BitOperations.TrailingZeroCount(mask)], ref q, p0, p1))
+          return false;
+    }
+    return true;
   }
 
   /// <summary>The open members other than the culled rectangles, each tested unless its line box is missed.</summary>

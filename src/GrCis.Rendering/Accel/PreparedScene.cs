@@ -41,6 +41,7 @@ public sealed partial class PreparedScene : ISceneQuery
   readonly Matrix4d[] chain;
   readonly int[] always;
   readonly RectangleCull? rectangles;
+  readonly SphereCull? spheres;
   readonly WideBvh? bvh;
 
   // Shadow queries may stop at the first blocker: union semantics, every member answered by a kernel, no NO_SHADOW solid.
@@ -68,6 +69,9 @@ public sealed partial class PreparedScene : ISceneQuery
 
   /// <summary>Bounded rectangles among the unbounded members, tested first by their conservative world-space cull (<see cref="RectangleCull"/>).</summary>
   public int CulledRectangleCount => rectangles?.Count ?? 0;
+
+  /// <summary>Closed members tested side by side by their world balls (<see cref="SphereCull"/>) instead of a BVH.</summary>
+  public int CulledBallCount => spheres?.Count ?? 0;
 
   /// <summary>True when shadow queries may stop at the first blocker they meet (<see cref="Occluded"/>).</summary>
   public bool StopsAtFirstBlocker => anyHit;
@@ -115,7 +119,8 @@ public sealed partial class PreparedScene : ISceneQuery
       // A closed member with an empty box has no records: it can be left out.
     }
     always = open.ToArray();
-    if (union && bounded.Count > 0)
+    // A few balls are tested side by side; more closed members, or others, go into the BVH.
+    if (union && (spheres = SphereCull.Build(members, bounded)) == null && bounded.Count > 0)
     {
       bvh = WideBvh.Collapse(Bvh.Build(boxes, bounded.ToArray(), BvhShape.SceneMembers));
     }

@@ -43,6 +43,7 @@ public class ShadowQueryTests
   {
     PreparedScene ps = PreparedScene.Prepare(CornellBox());
     Assert.Equal(9, ps.CulledRectangleCount);
+    Assert.Equal(2, ps.CulledBallCount);
     Assert.Equal(9, ps.UnboundedCount);
     Assert.True(ps.StopsAtFirstBlocker);
   }
@@ -159,6 +160,57 @@ public class ShadowQueryTests
       }
       AssertSame(lists, ps, p0, p1);
     }
+  }
+
+  [Theory]
+  [InlineData(1)]
+  [InlineData(6)]
+  [InlineData(8)]
+  public void A_few_balls_tested_side_by_side_answer_as_the_lists(int count)
+  {
+    // Spheres under random similarities (some overlapping, one far from the origin) and a floor rectangle; rays from
+    // outside, from inside the spheres, from their surfaces, and grazing them.
+    var r = new Random(count);
+    var root = new CSGInnerNode(SetOperation.Union);
+    var centres = new List<(Vector3d C, double R)>();
+    for (int k = 0; k < count; k++)
+    {
+      double radius = 0.2 + r.NextDouble();
+      var c = k == count - 1 ? new Vector3d(1000.0, 1000.0, 1000.0) * (count > 1 ? 1.0 : 0.0) + new Vector3d(r.NextDouble(), 0.5, 0.0)
+                             : new Vector3d(4.0 * r.NextDouble() - 2.0, 4.0 * r.NextDouble() - 2.0, 4.0 * r.NextDouble() - 2.0);
+      root.InsertChild(new Sphere(), Matrix4d.Scale(radius) * Matrix4d.Rotate(new Vector3d(r.NextDouble(), 1.0, r.NextDouble()), 6.0 * r.NextDouble()) *
+                                     Matrix4d.CreateTranslation(c));
+      centres.Add((c, radius));
+    }
+    root.InsertChild(new Plane(-3, 3, -3, 3), Matrix4d.RotateX(-MathHelper.PiOver2) * Matrix4d.CreateTranslation(0, -2.5, 0));
+    PreparedScene ps = PreparedScene.Prepare(root);
+    Assert.Equal(count, ps.CulledBallCount);
+    var lists = new SceneLists(root);
+    int hits = 0;
+    for (int n = 0; n < 20000; n++)
+    {
+      var (c, radius) = centres[r.Next(centres.Count)];
+      Vector3d p0 = n % 3 == 0 ? c + RandomDirection(r) * radius : new Vector3d(8.0 * r.NextDouble() - 4.0, 8.0 * r.NextDouble() - 4.0, 8.0 * r.NextDouble() - 4.0);
+      Vector3d p1 = n % 4 == 0 ? c - p0 + RandomDirection(r) * (2.0 * radius) : RandomDirection(r) * (0.1 + 3.0 * r.NextDouble());
+      if (n % 5 == 1 && lists.FirstHit(p0, p1) is Intersection start)
+      {
+        p0 = start.CoordWorld;
+        p1 = n % 2 == 0 ? RandomDirection(r) : c - p0;
+      }
+      hits += AssertSame(lists, ps, p0, p1).Hit ? 1 : 0;
+    }
+    Assert.True(hits > 2000, $"{hits} hits");
+  }
+
+  [Fact]
+  public void Nine_balls_go_into_the_bvh()
+  {
+    var root = new CSGInnerNode(SetOperation.Union);
+    for (int k = 0; k < 9; k++)
+      root.InsertChild(new Sphere(), Matrix4d.CreateTranslation(3.0 * k, 0.0, 0.0));
+    PreparedScene ps = PreparedScene.Prepare(root);
+    Assert.Equal(0, ps.CulledBallCount);
+    Assert.Equal(9, ps.BoundedCount);
   }
 
   /// <summary>
