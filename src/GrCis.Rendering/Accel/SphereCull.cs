@@ -79,32 +79,33 @@ internal sealed class SphereCull
 
   /// <summary>
   /// The lanes of <paramref name="g"/> that must be tested exactly for the ray <c>p0 + t d</c> (|d|² =
-  /// <paramref name="dd"/>): <paramref name="bound"/> is max(best t so far, just above the smallest accepted t).
+  /// <paramref name="dd"/>, |d| = <paramref name="length"/>): <paramref name="bound"/> is max(best t so far, just above
+  /// the smallest accepted t).
   /// </summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static int MustTest(in Group g, Vector256<double> ox, Vector256<double> oy, Vector256<double> oz,
-                             Vector256<double> dx, Vector256<double> dy, Vector256<double> dz, double dd, double bound)
+                             Vector256<double> dx, Vector256<double> dy, Vector256<double> dz, double dd, double length, double bound)
   {
     Vector256<double> cx = g.Cx - ox, cy = g.Cy - oy, cz = g.Cz - oz;
     Vector256<double> b = cx * dx + cy * dy + cz * dz;
     Vector256<double> oo = cx * cx + cy * cy + cz * cz;
     Vector256<double> vdd = Vector256.Create(dd);
     Vector256<double> c = oo - g.R2;
-    // The line misses the padded ball (the test MissesSphere makes): no record at any t.
+    // The line misses the padded ball (the test MissesSphere makes): no record at any t. NaN compares false: tested.
     Vector256<double> bb = b * b;
-    Vector256<double> misses = Vector256.GreaterThan(c * vdd, bb);
+    int open = g.Valid & ~(int)Vector256.GreaterThan(c * vdd, bb).ExtractMostSignificantBits();
+    if (open == 0)
+      return 0;
 
     // Where the line crosses the ball, t ∈ [(b − s)/dd, (b + s)/dd]; the slack covers the rounding of both ends
-    // (relative to the magnitudes |oc|·|d| and r·|d| the terms carry) by a wide margin.
+    // (relative to the magnitudes |oc|·|d| ≤ |oc|₁·|d|, r·|d|, |b| and s the terms carry) by a wide margin.
     Vector256<double> s = Vector256.Sqrt(Vector256.Max(bb - vdd * c, Vector256<double>.Zero));
-    Vector256<double> inv = Vector256<double>.One / vdd;
-    Vector256<double> scale = Vector256.Sqrt(oo * vdd) + g.R * Vector256.Sqrt(vdd) + Vector256.Abs(b) + s;
+    Vector256<double> inv = Vector256.Create(1.0 / dd), len = Vector256.Create(length);
+    Vector256<double> scale = (Vector256.Abs(cx) + Vector256.Abs(cy) + Vector256.Abs(cz) + g.R) * len + Vector256.Abs(b) + s;
     Vector256<double> slack = scale * inv * Vector256.Create(1.0e-9);
     Vector256<double> tin = (b - s) * inv, tout = (b + s) * inv;
     Vector256<double> behind = Vector256.LessThan(tout + slack, Vector256<double>.Zero);
     Vector256<double> beyond = Vector256.GreaterThan(tin - slack, Vector256.Create(bound));
-
-    // NaN anywhere compares false: such lanes are tested.
-    return g.Valid & ~(int)(misses | behind | beyond).ExtractMostSignificantBits();
+    return open & ~(int)(behind | beyond).ExtractMostSignificantBits();
   }
 }
