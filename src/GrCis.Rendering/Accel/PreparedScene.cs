@@ -25,11 +25,14 @@ namespace Rendering.Accel;
 /// <para><b>Pruning.</b> A closed member (records only inside its box, list starting outside) whose box
 /// lies behind the origin or beyond the best hit so far can neither win nor be inside at the origin, so
 /// the BVH may skip it. Open members (planes, script solids) are tested for every ray, except a bounded plane
-/// whose padded world box the ray's whole line misses: it has no record at any t.</para>
+/// whose padded world box the ray's whole line misses: it has no record at any t. Bounded rectangles are culled four
+/// at a time in world space (<see cref="RectangleCull"/>), and at most eight closed balls likewise instead of a BVH
+/// (<see cref="SphereCull"/>); both skip only members whose exact test would change nothing.</para>
 /// <para>The ray is taken into each member's space through the same FromParent matrices, in the same
 /// order, as <see cref="CSGInnerNode.Intersect"/> does, so T and local coordinates are bit-identical.
 /// Shadow rays use the same query bounded by the light (<see cref="Intersection.Far"/>), and fall back to
-/// the faithful path when the closest blocker is marked NO_SHADOW.</para>
+/// the faithful path when the closest blocker is marked NO_SHADOW; in a scene without NO_SHADOW solids and list
+/// members they stop at the first blocker once no member can contain the origin (<see cref="Occluded"/>).</para>
 /// <para><b>Non-union CSG members.</b> A subtree of library CSG nodes over elementary solids is evaluated by
 /// its <see cref="CsgKernel"/> (the same merged list, in stack buffers) and reports the same pair as a solid
 /// (first valid record, inside state before it); its record is completed from its leaf's cached matrices.</para>
