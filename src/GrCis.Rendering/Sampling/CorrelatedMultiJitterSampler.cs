@@ -10,24 +10,10 @@ public sealed class CorrelatedMultiJitterSampler : Sampler
   public override SamplerKind Kind => SamplerKind.CorrelatedMultiJitter;
 
   public override double Get1D(SampleDimension dimension, int instance = 0) =>
-    Strata.Sample1D(Index, Grid(), Pattern(dimension, instance));
+    Strata.Sample1D(Index, Count, Pattern(dimension, instance));
 
   public override void Get2D(SampleDimension dimension, int instance, out double u, out double v) =>
-    Strata.Sample2D(Index, Grid(), Pattern(dimension, instance), out u, out v);
-
-  // The grid of the sample count, kept while the count stays.
-  StrataGrid grid = new(1);
-  int gridCount = 1;
-
-  StrataGrid Grid()
-  {
-    if (Count != gridCount)
-    {
-      grid = new StrataGrid(Count);
-      gridCount = Count;
-    }
-    return grid;
-  }
+    Strata.Sample2D(Index, Count, Pattern(dimension, instance), out u, out v);
 
   long hashedSeed;
   ulong seedHash = Strata.SeedHash(0);

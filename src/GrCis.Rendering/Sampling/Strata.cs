@@ -63,32 +63,6 @@ public static class Strata
     v = (row + (sx + jy) / m) / n;
   }
 
-  /// <summary>
-  /// <see cref="Sample2D(int, int, uint, out double, out double)"/> with the count's grid and divisors prepared
-  /// (<see cref="StrataGrid"/>): the same values, without a square root and hardware divisions per call.
-  /// </summary>
-  internal static void Sample2D(int rank, in StrataGrid grid, uint pattern, out double u, out double v)
-  {
-    uint total = grid.Total.Value, m = grid.M.Value, n = grid.N.Value;
-    rank = Math.Clamp(rank, 0, (int)total - 1);
-    uint s = Permute((uint)rank, grid.Total, pattern * 0x51633E2Du);
-    uint row = grid.M.Divide(s), column = s - row * m;
-    uint sx = Permute(column, grid.M, pattern * 0x68BC21EBu);
-    uint sy = Permute(row, grid.N, pattern * 0x02E5BE93u);
-    double jx = Jitter(s, pattern * 0x967A889Bu);
-    double jy = Jitter(s, pattern * 0x3C6EF372u);
-    u = (column + (sy + jx) / (int)n) / (int)m;
-    v = (row + (sx + jy) / (int)m) / (int)n;
-  }
-
-  /// <summary><see cref="Sample1D(int, int, uint)"/> with the count's divisor prepared (the same values).</summary>
-  internal static double Sample1D(int rank, in StrataGrid grid, uint pattern)
-  {
-    uint total = grid.Total.Value;
-    uint s = Permute((uint)Math.Clamp(rank, 0, (int)total - 1), grid.Total, pattern * 0x51633E2Du);
-    return (s + Jitter(s, pattern * 0x68BC21EBu)) / (int)total;
-  }
-
   /// <summary>The pattern of a dimension in the current pixel: a hash of seed, frame, pixel and dimension.</summary>
   internal static uint Pattern(uint dimension)
   {
@@ -118,20 +92,6 @@ public static class Strata
   {
     if (length <= 1)
       return 0;
-    return (Walk(i, length, p) + p) % length;
-  }
-
-  /// <summary><see cref="Permute(uint, uint, uint)"/> with the length's divisor prepared (the same values).</summary>
-  static uint Permute(uint i, in FastDivisor length, uint p)
-  {
-    if (length.Value <= 1)
-      return 0;
-    return length.Remainder(Walk(i, length.Value, p) + p);
-  }
-
-  /// <summary>The hash walk of <see cref="Permute(uint, uint, uint)"/>: its index in 0..<paramref name="length"/>−1 before the final offset.</summary>
-  static uint Walk(uint i, uint length, uint p)
-  {
     uint w = length - 1;
     w |= w >> 1;
     w |= w >> 2;
@@ -160,7 +120,7 @@ public static class Strata
       i &= w;
       i ^= i >> 5;
     } while (i >= length);
-    return i;
+    return (i + p) % length;
   }
 
   /// <summary>A number of [0,1) hashed from (i, p), with 53 bits.</summary>
