@@ -11,28 +11,87 @@ namespace Rendering.Accel;
 public sealed partial class PreparedScene
 {
   /// <summary>Closest first-valid record over all members; false when the fast rule does not apply.</summary>
+  /// <remarks>
+  /// The answer does not depend on the order members are tested in (T decides, then the member index; a member is
+  /// skipped only when it can neither win nor contain the origin). Bounded members go before the rectangles: a hit
+  /// on one of them lets the rectangle cull dismiss the walls behind it without their exact test.
+  /// </remarks>
+  bool Closest(ref Query q, in Vector3d p0, in Vector3d p1)
+  {
+    if (always.Length > 0 && !Open(ref q, p0, p1))
+      return false;
+    if (bvh != null && !Bounded(ref q, p0, p1))
+      return false;
+    if (spheres != null && !Balls(ref q, p0, p1))
+      return false;
+    return rectangles == null || Rectangles(ref q, p0, p1);
+  }
+
+  /// <summary>The closed members of a small scene (balls), four at a time; only those the cull cannot dismiss are tested.</summary>
+  bool Balls(ref Query q, in Vector3d p0, in Vector3d p1)
+  {
+    Vector256<double> vox = Vector256.Create(p0.X), voy = Vector256.Create(p0.Y), voz = Vector256.Create(p0.Z);
+    Vector256<double> vdx = Vector256.Create(p1.X), vdy = Vector256.Create(p1.Y), vdz = Vector256.Create(p1.Z);
+    double length = Math.Sqrt(q.Len2);
+    double low = 1.001 * Intersection.RAY_EPSILON / length;
+    ReadOnlySpan<SphereCull.Group> groups = spheres!.Groups;
+    for (int g = 0; g < groups.Length; g++)
+    {
+      ref readonly SphereCull.Group group = ref groups[g];
+      for (int mask = SphereCull.MustTest(group, vox, voy, voz, vdx, vdy, vdz, q.Len2, length, Math.Max(q.BestT, low)); mask != 0; mask &= mask - 1)
+        if (!TestMember(group.Member[BitOperations.TrailingZeroCount(mask)], ref q, p0, p1))
+          return false;
+    }
+    return true;
+  }
+
+  /// <summary>The open members other than the culled rectangles, each tested unless its line box is missed.</summary>
+  bool Open(ref Query q, in Vector3d p0, in Vector3d p1)
+  {
+    // The whole-line test of a bounded plane needs every slab: a zero component would turn one into a half-line.
+    bool lineCull = p1.X != 0.0 && p1.Y != 0.0 && p1.Z != 0.0;
+    double ix = 1.0 / p1.X, iy = 1.0 / p1.Y, iz = 1.0 / p1.Z;
+    for (int k = 0; k < always.Length; k++)
+    {
+      int item = always[k];
+      if (lineCull && members[item].HasLineBox && LineMisses(members[item].LineBox, p0.X, p0.Y, p0.Z, ix, iy, iz))
+        continue;
+      if (!TestMember(item, ref q, p0, p1))
+        return false;
+    }
+    return true;
+  }
+
+  /// <summary>The rectangles, four at a time in world space; only those the estimate cannot dismiss go through their chain.</summary>
+  bool Rectangles(ref Query q, in Vector3d p0, in Vector3d p1)
+  {
+    Vector256<double> vox = Vector256.Create(p0.X), voy = Vector256.Create(p0.Y), voz = Vector256.Create(p0.Z);
+    Vector256<double> vdx = Vector256.Create(p1.X), vdy = Vector256.Create(p1.Y), vdz = Vector256.Create(p1.Z);
+    double scale = Math.Max(1.0, Math.Max(Math.Abs(p0.X), Math.Max(Math.Abs(p0.Y), Math.Abs(p0.Z))));
+    double dirScale = Math.Max(Math.Abs(p1.X), Math.Max(Math.Abs(p1.Y), Math.Abs(p1.Z)));
+    double accept = Intersection.RAY_EPSILON / Math.Sqrt(q.Len2);
+    ReadOnlySpan<RectangleCull.Group> groups = rectangles!.Groups;
+    for (int g = 0; g < groups.Length; g++)
+    {
+      ref readonly RectangleCull.Group group = ref groups[g];
+      for (int mask = RectangleCull.MustTest(group, vox, voy, voz, vdx, vdy, vdz, scale, dirScale, accept, q.BestT); mask != 0; mask &= mask - 1)
+        if (!TestMember(group.Member[BitOperations.TrailingZeroCount(mask)], ref q, p0, p1))
+          return false;
+    }
+    return true;
+  }
+
+  /// <summary>The closed members, through the BVH.</summary>
   /// <remarks>The traversal stack is written before it is read: no zeroing of it per ray.</remarks>
   [SkipLocalsInit]
-  bool Closest(ref Query q, in Vector3d p0, in Vector3d p1)
+  bool Bounded(ref Query q, in Vector3d p0, in Vector3d p1)
   {
     // Zero direction components become tiny ones: no NaN from 0 · ∞ in the slab test, and the
     // padded boxes absorb the difference.
     double dx = p1.X == 0.0 ? 1e-300 : p1.X, dy = p1.Y == 0.0 ? 1e-300 : p1.Y, dz = p1.Z == 0.0 ? 1e-300 : p1.Z;
     double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
     double ox = p0.X, oy = p0.Y, oz = p0.Z;
-
-    // The whole-line test of a bounded plane needs every slab: a zero component would turn one into a half-line.
-    bool lineCull = p1.X != 0.0 && p1.Y != 0.0 && p1.Z != 0.0;
-    for (int k = 0; k < always.Length; k++)
-    {
-      int item = always[k];
-      if (lineCull && members[item].HasLineBox && LineMisses(members[item].LineBox, ox, oy, oz, ix, iy, iz))
-        continue;
-      if (!TestMember(item, ref q, p0, p1))
-        return false;
-    }
-    if (bvh == null)
-      return true;
+    WideBvh bvh = this.bvh!;
 
     // Most rays of a small scene miss all of its closed members: one scalar box test, before any set-up.
     if (!WideNode.Slab(bvh.Root, ox, oy, oz, ix, iy, iz, q.BestT, out _))
@@ -173,6 +232,13 @@ public sealed partial class PreparedScene
         q.BestList = null;
         if (h.T < q.BestT)
           q.BestT = h.T;
+      }
+      if (has && q.Any && NotFar(h.T, q.Len2))
+      {
+        // A blocker: from now on only members that may contain the origin matter.
+        q.Found = true;
+        if (q.AnyBound < q.BestT)
+          q.BestT = q.AnyBound;
       }
       return true;
     }

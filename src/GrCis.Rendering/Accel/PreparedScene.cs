@@ -25,11 +25,14 @@ namespace Rendering.Accel;
 /// <para><b>Pruning.</b> A closed member (records only inside its box, list starting outside) whose box
 /// lies behind the origin or beyond the best hit so far can neither win nor be inside at the origin, so
 /// the BVH may skip it. Open members (planes, script solids) are tested for every ray, except a bounded plane
-/// whose padded world box the ray's whole line misses: it has no record at any t.</para>
+/// whose padded world box the ray's whole line misses: it has no record at any t. Bounded rectangles are culled four
+/// at a time in world space (<see cref="RectangleCull"/>), and at most eight closed balls likewise instead of a BVH
+/// (<see cref="SphereCull"/>); both skip only members whose exact test would change nothing.</para>
 /// <para>The ray is taken into each member's space through the same FromParent matrices, in the same
 /// order, as <see cref="CSGInnerNode.Intersect"/> does, so T and local coordinates are bit-identical.
 /// Shadow rays use the same query bounded by the light (<see cref="Intersection.Far"/>), and fall back to
-/// the faithful path when the closest blocker is marked NO_SHADOW.</para>
+/// the faithful path when the closest blocker is marked NO_SHADOW; in a scene without NO_SHADOW solids and list
+/// members they stop at the first blocker once no member can contain the origin (<see cref="Occluded"/>).</para>
 /// <para><b>Non-union CSG members.</b> A subtree of library CSG nodes over elementary solids is evaluated by
 /// its <see cref="CsgKernel"/> (the same merged list, in stack buffers) and reports the same pair as a solid
 /// (first valid record, inside state before it); its record is completed from its leaf's cached matrices.</para>
@@ -40,7 +43,12 @@ public sealed partial class PreparedScene : ISceneQuery
   readonly PreparedMember[] members;
   readonly Matrix4d[] chain;
   readonly int[] always;
+  readonly RectangleCull? rectangles;
+  readonly SphereCull? spheres;
   readonly WideBvh? bvh;
+
+  // Shadow queries may stop at the first blocker: union semantics, every member answered by a kernel, no NO_SHADOW solid.
+  readonly bool anyHit;
 
   // Union-merge semantics over all members; false: one member whose raw list the scene returns.
   readonly bool union;
@@ -60,7 +68,16 @@ public sealed partial class PreparedScene : ISceneQuery
   public int BoundedCount => Capabilities.BoundedCount;
 
   /// <summary>Members tested for every ray (open or unknown solids; bounded planes only where the ray's line meets their box).</summary>
-  public int UnboundedCount => always.Length;
+  public int UnboundedCount => always.Length + (rectangles?.Count ?? 0);
+
+  /// <summary>Bounded rectangles among the unbounded members, tested first by their conservative world-space cull (<see cref="RectangleCull"/>).</summary>
+  public int CulledRectangleCount => rectangles?.Count ?? 0;
+
+  /// <summary>Closed members tested side by side by their world balls (<see cref="SphereCull"/>) instead of a BVH.</summary>
+  public int CulledBallCount => spheres?.Count ?? 0;
+
+  /// <summary>True when shadow queries may stop at the first blocker they meet (<see cref="Occluded"/>).</summary>
+  public bool StopsAtFirstBlocker => anyHit;
 
   /// <summary>Members answered through the LinkedList API.</summary>
   public int ListMemberCount => Capabilities.ListCount;
@@ -104,12 +121,21 @@ public sealed partial class PreparedScene : ISceneQuery
         bounded.Add(i);
     }
     always = open.ToArray();
-    if (union && bounded.Count > 0)
+    // A few balls are tested side by side; more closed members, or others, go into the BVH.
+    if (union && (spheres = SphereCull.Build(members, bounded)) == null && bounded.Count > 0)
     {
       bvh = WideBvh.Collapse(Bvh.Build(boxes, bounded.ToArray(), BvhShape.SceneMembers));
     }
     else if (!union)
       always = members.Length > 0 ? new[] { 0 } : Array.Empty<int>();
+    if (union)
+    {
+      rectangles = RectangleCull.Build(members, chain, always, out int[] rest);
+      always = rest;
+      anyHit = true;
+      foreach (PreparedMember m in members)
+        anyHit &= (m.RecordSolid != null || m.Csg != null) && !m.NoShadow;
+    }
   }
 
 
@@ -135,6 +161,12 @@ public sealed partial class PreparedScene : ISceneQuery
     public int InsideLeaf;
     public double InsideT;
     public SolidRecord InsideHit;
+
+    // Shadow queries: stop at the first blocker (Found), then only members that may contain the origin are visited.
+    public bool Any;
+    public bool Found;
+    /// <summary>Just above the smallest accepted t: members whose boxes start beyond it cannot contain the origin.</summary>
+    public double AnyBound;
   }
 
   /// <summary>
@@ -232,8 +264,29 @@ public sealed partial class PreparedScene : ISceneQuery
     double bound = 1.0 + Intersection.RAY_EPSILON / Math.Sqrt(len2);
     bound += bound * 1.0e-12;
     var q = NewQuery(len2, bound);
+    if (anyHit)
+    {
+      // With no NO_SHADOW solid, a blocker that is not far decides, once no member is inside at the origin:
+      // every member's first record is then an entry, so the union's first record is no later than it.
+      q.Any = true;
+      q.AnyBound = 1.001 * Intersection.RAY_EPSILON / Math.Sqrt(len2);
+      if (!Closest(ref q, p0, dir))
+        return ListOccluded(p0, dir);
+      if (!q.Found)
+        return Decide(ref q, p0, dir, len2);
+      if (q.InsideIndex < 0)
+        return true;
+      // Inside a member: the closest-record rule decides, as without the shortcut.
+      q = NewQuery(len2, bound);
+    }
     if (!Closest(ref q, p0, dir))
       return ListOccluded(p0, dir);
+    return Decide(ref q, p0, dir, len2);
+  }
+
+  /// <summary>The shadow answer from a completed closest-record query.</summary>
+  bool Decide(ref Query q, Vector3d p0, Vector3d dir, double len2)
+  {
     if (q.InsideIndex >= 0)
     {
       if ((q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT) || Solid(q.InsideIndex, q.InsideLeaf).NoShadow)
