@@ -164,18 +164,16 @@ public class RayTracing : RayCasting
       // The library's Phong model writes into a stack buffer instead of a new array per light.
       bool phong = LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial && surface.Length <= 16;
       Span<double> buffer = stackalloc double[16];
-      // Every shadow ray of this hit asks the same snapshot: looked up once, not per light.
-      PreparedScene? ps = occludedOverridden || TransparentShadows || !DoShadows ? null : PreparedFor(scratch);
 
       // A LinkedList (GrCis's type) is walked by nodes: no boxed enumerator per hit.
       if (sources is LinkedList<ILightSource> linked)
       {
         for (LinkedListNode<ILightSource>? n = linked.First; n != null; n = n.Next)
-          hash = AddLight(scratch, ps, n.Value, i, viewer, phong, surface, buffer, color, hash);
+          hash = AddLight(scratch, n.Value, i, viewer, phong, surface, buffer, color, hash);
       }
       else
         foreach (ILightSource source in sources)
-          hash = AddLight(scratch, ps, source, i, viewer, phong, surface, buffer, color, hash);
+          hash = AddLight(scratch, source, i, viewer, phong, surface, buffer, color, hash);
     }
 
     if (depth++ >= MaxLevel || (!DoReflections && !DoRefractions))
@@ -313,7 +311,7 @@ public class RayTracing : RayCasting
   }
 
   /// <summary>Adds one light's direct contribution (shadow ray included) to <paramref name="color"/>; returns the hash.</summary>
-  long AddLight(ShadingScratch scratch, PreparedScene? ps, ILightSource source, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
+  long AddLight(ShadingScratch scratch, ILightSource source, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
   {
     double[]? intensity = source.GetIntensity(i, out Vector3d dir);
     if (rayRegisterer != null && MT.singleRayTracing && source.position is Vector3d lightPosition)
@@ -328,14 +326,8 @@ public class RayTracing : RayCasting
         scratch.Rays++;
         transmit = ShadowTransmittance(i.CoordWorld, dir);
       }
-      else if (occludedOverridden)
-        transmit = Occluded(i.CoordWorld, dir) ? 0.0 : 1.0;
       else
-      {
-        // The scratch's own query (Occluded(scratch, …)) with the hit's snapshot at hand.
-        scratch.Rays++;
-        transmit = (ps != null ? ps.AnyHit(i.CoordWorld, dir) : Lists.AnyHit(i.CoordWorld, dir)) ? 0.0 : 1.0;
-      }
+        transmit = Blocked(scratch, i.CoordWorld, dir) ? 0.0 : 1.0;
       scratch.Observer?.ShadowRay(i.CoordWorld, dir, transmit <= 0.0);
       if (transmit <= 0.0)
       {
@@ -347,14 +339,16 @@ public class RayTracing : RayCasting
     {
       Span<double> r = buffer[..surface.Length];
       PhongModel.ColorReflection((PhongMaterial)i.Material!, i.Normal, dir, viewer, ReflectionComponent.ALL, r);
-      AddLit(color, transmit, intensity, r);
+      for (int b = 0; b < color.Length; b++)
+        color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * r[Math.Min(b, r.Length - 1)];
     }
     else
     {
       double[]? arr = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
       if (arr == null)
         return hash;
-      AddLit(color, transmit, intensity, arr);
+      for (int b = 0; b < color.Length; b++)
+        color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * arr[Math.Min(b, arr.Length - 1)];
     }
     return hash * HASH_LIGHT + source.GetHashCode();
   }
