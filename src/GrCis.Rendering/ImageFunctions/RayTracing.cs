@@ -353,23 +353,6 @@ public class RayTracing : RayCasting
     return hash * HASH_LIGHT + source.GetHashCode();
   }
 
-  /// <summary>
-  /// color += transmit · intensity · reflectance per band; a shorter intensity or reflectance repeats its last band.
-  /// Arrays that cover every band (the usual case) skip the index clamps.
-  /// </summary>
-  static void AddLit(double[] color, double transmit, double[] intensity, ReadOnlySpan<double> r)
-  {
-    int bands = color.Length;
-    if (intensity.Length >= bands && r.Length >= bands)
-    {
-      for (int b = 0; b < bands; b++)
-        color[b] += transmit * intensity[b] * r[b];
-      return;
-    }
-    for (int b = 0; b < bands; b++)
-      color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * r[Math.Min(b, r.Length - 1)];
-  }
-
   /// <summary>Custom shading by the solid's <see cref="RecursionFunction"/>: the function's <see cref="RayRecursion"/> does the rest.</summary>
   long ShadeRecursion(RecursionFunction recursion, Intersection i, int depth, double importance, ref Vector3d p1, double[] color, long hash)
   {
