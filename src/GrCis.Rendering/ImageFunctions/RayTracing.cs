@@ -70,9 +70,10 @@ public class RayTracing : RayCasting
 
   public override long GetSample(double x, double y, double[] color)
   {
-    MT.doubleX = x;
-    MT.doubleY = y;
-    Array.Clear(color);
+    WorkerContext context = WorkerContext.Current;
+    context.DoubleX = x;
+    context.DoubleY = y;
+    Zero(color);
     ICamera? camera = Scene.Camera;
     if (camera == null || !camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))
       return 11L;
@@ -107,6 +108,7 @@ public class RayTracing : RayCasting
   /// Colour seen along the ray <c>p0 + t p1</c>, written to <paramref name="color"/>; returns the path hash.
   /// The ray is reported to the render's observer, when one is attached (<see cref="RenderContext.Observer"/>).
   /// </summary>
+  [System.Runtime.CompilerServices.SkipLocalsInit]   // the stack buffers are written before they are read
   public virtual long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
   {
     ShadingScratch scratch = ShadingScratch.Current;
@@ -142,7 +144,7 @@ public class RayTracing : RayCasting
     hash = CompleteAndTexture(i);
     rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.unknown, depth, p0, i);
     int bands = color.Length;
-    Array.Clear(color);
+    Zero(color);
 
     if (DoRecursion && i.RecursionAttribute is RecursionFunction recursion)
     {
@@ -153,7 +155,8 @@ public class RayTracing : RayCasting
     Vector3d viewer = -p1.Normalized();
     double[] surface = i.SurfaceColor!;
 
-    if (sc.Sources == null || sc.Sources.Count == 0)
+    ICollection<ILightSource>? sources = sc.Sources;
+    if (sources == null || sources.Count == 0)
       AddScaled(color, surface, 1.0);
     else
     {
@@ -163,13 +166,13 @@ public class RayTracing : RayCasting
       Span<double> buffer = stackalloc double[16];
 
       // A LinkedList (GrCis's type) is walked by nodes: no boxed enumerator per hit.
-      if (sc.Sources is LinkedList<ILightSource> linked)
+      if (sources is LinkedList<ILightSource> linked)
       {
         for (LinkedListNode<ILightSource>? n = linked.First; n != null; n = n.Next)
           hash = AddLight(scratch, n.Value, i, viewer, phong, surface, buffer, color, hash);
       }
       else
-        foreach (ILightSource source in sc.Sources)
+        foreach (ILightSource source in sources)
           hash = AddLight(scratch, source, i, viewer, phong, surface, buffer, color, hash);
     }
 
@@ -212,8 +215,12 @@ public class RayTracing : RayCasting
             if (observer != null)
               scratch.NextKind = RayKind.Reflected;
             hash += HASH_REFLECT * shade(depth, newImportance, ref origin, ref reflected, comp);
-            for (int b = 0; b < bands; b++)
-              color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
+            if (ks.Length >= bands)
+              for (int b = 0; b < bands; b++)
+                color[b] += ks[b] * comp[b];
+            else
+              for (int b = 0; b < bands; b++)
+                color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
           }
         }
       }
@@ -328,12 +335,11 @@ public class RayTracing : RayCasting
         return hash;
       }
     }
-    int bands = color.Length;
     if (phong)
     {
       Span<double> r = buffer[..surface.Length];
       PhongModel.ColorReflection((PhongMaterial)i.Material!, i.Normal, dir, viewer, ReflectionComponent.ALL, r);
-      for (int b = 0; b < bands; b++)
+      for (int b = 0; b < color.Length; b++)
         color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * r[Math.Min(b, r.Length - 1)];
     }
     else
@@ -341,7 +347,7 @@ public class RayTracing : RayCasting
       double[]? arr = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
       if (arr == null)
         return hash;
-      for (int b = 0; b < bands; b++)
+      for (int b = 0; b < color.Length; b++)
         color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * arr[Math.Min(b, arr.Length - 1)];
     }
     return hash * HASH_LIGHT + source.GetHashCode();
@@ -364,6 +370,13 @@ public class RayTracing : RayCasting
     }
     for (int b = 0; b < color.Length; b++)
       color[b] = bg[Math.Min(b, bg.Length - 1)];
+  }
+
+  /// <summary>Zeroes a colour of a few bands inline (Array.Clear's call costs more than three stores).</summary>
+  internal static void Zero(double[] color)
+  {
+    for (int b = 0; b < color.Length; b++)
+      color[b] = 0.0;
   }
 
   /// <summary>color += k · src; a one-element src adds the same value to every band.</summary>

@@ -93,7 +93,7 @@ internal sealed class ShadingScratch
     if (b == null || b.Length != bands)
       pool[depth] = b = new double[bands];
     else
-      Array.Clear(b);
+      RayTracing.Zero(b);
     return b;
   }
 

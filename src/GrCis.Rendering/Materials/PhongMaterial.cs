@@ -97,7 +97,22 @@ public class PhongMaterial : IMaterial
     H = m.H;
     Kt = m.Kt;
     Sch = m.Sch;
-    n = m.n;
+    // cosTotal is a function of the index: remembered for the last index computed, so a copy per hit
+    // takes no square root.
+    if (m.refraction == memoIndex)
+    {
+      refraction = m.refraction;
+      cosTotal = memoCosTotal;
+    }
+    else
+    {
+      n = m.n;
+      memoIndex = refraction;
+      memoCosTotal = cosTotal;
+    }
     Emission = m.Emission;
   }
+
+  // CopyFrom's memo: an index and the cosTotal its setter computed (NaN never matches, so the first copy computes).
+  [NonSerialized] double memoIndex = double.NaN, memoCosTotal;
 }

@@ -46,10 +46,12 @@ public static partial class Geometry
   }
 
   /// <summary>x^e for a non-negative integer exponent by repeated squaring.</summary>
-  public static double IntPow(double x, int e)
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  public static double IntPow(double x, int e) => e < 0 ? 1.0 / PowerLoop(x, -e) : PowerLoop(x, e);
+
+  // Square-and-multiply for e >= 0; not recursive, so the JIT may inline it into the Phong model.
+  static double PowerLoop(double x, int e)
   {
-    if (e < 0)
-      return 1.0 / IntPow(x, -e);
     double result = 1.0;
     while (e > 0)
     {

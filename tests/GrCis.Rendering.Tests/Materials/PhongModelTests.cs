@@ -1,3 +1,4 @@
+using System;
 using OpenTK.Mathematics;
 using Rendering;
 
@@ -81,5 +82,29 @@ public class PhongModelTests
     Assert.Equal(1.33, c.n);
     Assert.Equal(0.5, c.Kt);
     Assert.Equal(System.Math.Sqrt(1.33 * 1.33 - 1) / 1.33, c.cosTotal, 12);
+  }
+
+  [Fact]
+  public void Scratch_copy_gives_each_index_its_own_critical_cosine_when_indices_alternate()
+  {
+    // The shading's scratch copy remembers the last index's cosTotal: switching glass, water, glass must not keep a stale one.
+    var glass = new PhongMaterial { n = 1.5 };
+    var water = new PhongMaterial { n = 1.33 };
+    var air = new PhongMaterial { n = 1.0 };
+    var scratch = new PhongMaterial();
+    foreach (PhongMaterial m in new[] { glass, water, glass, glass, air, water })
+    {
+      scratch.CopyFrom(m, m.Color);
+      Assert.Equal(m.n, scratch.n);
+      Assert.Equal(BitConverter.DoubleToInt64Bits(m.cosTotal), BitConverter.DoubleToInt64Bits(scratch.cosTotal));
+    }
+  }
+
+  [Fact]
+  public void Int_pow_of_a_negative_exponent_is_the_reciprocal_power()
+  {
+    Assert.Equal(1.0 / (1.5 * 1.5 * 1.5), MathSupport.Geometry.IntPow(1.5, -3));
+    Assert.Equal(1.0, MathSupport.Geometry.IntPow(0.3, 0));
+    Assert.Equal(0.3 * 0.3 * 0.3 * 0.3 * 0.3, MathSupport.Geometry.IntPow(0.3, 5), 15);
   }
 }
