@@ -125,7 +125,7 @@ public class PreparedSceneTests
   }
 
   /// <summary>The prepared scene's first hit (solid, T, and the side when asked) and shadow answer equal GrCis's lists' for one ray; whether it hit and was blocked.</summary>
-  static (bool Hit, bool Blocked) AssertSameAnswers(SceneLists lists, PreparedScene ps, Vector3d p0, Vector3d p1, bool compareEnter)
+  internal static (bool Hit, bool Blocked) AssertSameAnswers(SceneLists lists, PreparedScene ps, Vector3d p0, Vector3d p1, bool compareEnter)
   {
     Intersection? a = lists.FirstHit(p0, p1);
     Intersection? b = ps.FirstHit(p0, p1);
@@ -137,9 +137,15 @@ public class PreparedSceneTests
       if (compareEnter)
         Assert.Equal(a.Enter, b.Enter);
     }
-    bool blocks = lists.AnyHit(p0, p1);
-    Assert.Equal(blocks, ps.AnyHit(p0, p1));
-    return (a != null && b != null, blocks);
+    return (a != null && b != null, AssertSameShadow(lists, ps, p0, p1));
+  }
+
+  /// <summary>The prepared scene's shadow answer for <paramref name="p0"/> towards <c>p0 + dir</c> equals GrCis's lists'; whether it is blocked.</summary>
+  internal static bool AssertSameShadow(SceneLists lists, PreparedScene ps, Vector3d p0, Vector3d dir)
+  {
+    bool expected = lists.AnyHit(p0, dir);
+    Assert.Equal(expected, ps.AnyHit(p0, dir));
+    return expected;
   }
 
   [Fact]

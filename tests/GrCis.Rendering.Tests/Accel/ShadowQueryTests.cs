@@ -158,7 +158,7 @@ public class ShadowQueryTests
         p1 = RandomDirection(r) * (0.2 + 5.0 * r.NextDouble());
         p0 = inside[r.Next(inside.Count)] - p1 * ((0.3 + 2.7 * r.NextDouble()) * Intersection.RAY_EPSILON / p1.Length);
       }
-      AssertSame(lists, ps, p0, p1);
+      PreparedSceneTests.AssertSameAnswers(lists, ps, p0, p1, compareEnter: true);
     }
   }
 
@@ -197,7 +197,7 @@ public class ShadowQueryTests
         p0 = start.CoordWorld;
         p1 = n % 2 == 0 ? RandomDirection(r) : c - p0;
       }
-      hits += AssertSame(lists, ps, p0, p1).Hit ? 1 : 0;
+      hits += PreparedSceneTests.AssertSameAnswers(lists, ps, p0, p1, compareEnter: true).Hit ? 1 : 0;
     }
     Assert.True(hits > 2000, $"{hits} hits");
   }
@@ -230,7 +230,7 @@ public class ShadowQueryTests
         p1.X = 0.0;   // a zero component
       for (int bounce = 0; bounce < 3; bounce++)
       {
-        (bool hit, bool blocks) = AssertSame(lists, ps, p0, p1);
+        (bool hit, bool blocks) = PreparedSceneTests.AssertSameAnswers(lists, ps, p0, p1, compareEnter: true);
         hits += hit ? 1 : 0;
         blocked += blocks ? 1 : 0;
         Intersection? i = lists.FirstHit(p0, p1);
@@ -241,8 +241,8 @@ public class ShadowQueryTests
         Vector3d target = light + new Vector3d(spread * (r.NextDouble() - 0.5), 0.0, spread * (r.NextDouble() - 0.5));
         Vector3d toLight = target - x;
         double dist = toLight.Length;
-        blocked += AssertSameShadow(lists, ps, x, toLight * (1.0 - 4.0 * Intersection.RAY_EPSILON / dist)) ? 1 : 0;
-        blocked += AssertSameShadow(lists, ps, x, lo + (hi - lo) * r.NextDouble() - x) ? 1 : 0;
+        blocked += PreparedSceneTests.AssertSameShadow(lists, ps, x, toLight * (1.0 - 4.0 * Intersection.RAY_EPSILON / dist)) ? 1 : 0;
+        blocked += PreparedSceneTests.AssertSameShadow(lists, ps, x, lo + (hi - lo) * r.NextDouble() - x) ? 1 : 0;
         p0 = x;
         p1 = RandomDirection(r);
       }
@@ -251,27 +251,6 @@ public class ShadowQueryTests
   }
 
   static Vector3d RandomDirection(Random r) => new(r.NextDouble() - 0.5, r.NextDouble() - 0.5, r.NextDouble() - 0.5);
-
-  static (bool Hit, bool Blocked) AssertSame(SceneLists lists, PreparedScene ps, Vector3d p0, Vector3d p1)
-  {
-    Intersection? a = lists.FirstHit(p0, p1);
-    Intersection? b = ps.FirstHit(p0, p1);
-    Assert.Equal(a == null, b == null);
-    if (a != null && b != null)
-    {
-      Assert.Same(a.Solid, b.Solid);
-      Assert.Equal(a.T, b.T);
-      Assert.Equal(a.Enter, b.Enter);
-    }
-    return (a != null, AssertSameShadow(lists, ps, p0, p1));
-  }
-
-  static bool AssertSameShadow(SceneLists lists, PreparedScene ps, Vector3d p0, Vector3d dir)
-  {
-    bool expected = lists.AnyHit(p0, dir);
-    Assert.Equal(expected, ps.AnyHit(p0, dir));
-    return expected;
-  }
 
   static int IndexOf(string name)
   {
