@@ -132,9 +132,7 @@ public sealed partial class PreparedScene : ISceneQuery
     {
       rectangles = RectangleCull.Build(members, chain, always, out int[] rest);
       always = rest;
-      anyHit = true;
-      foreach (PreparedMember m in members)
-        anyHit &= (m.RecordSolid != null || m.Csg != null) && !m.NoShadow;
+      anyHit = capabilities.ListCount == 0 && !Array.Exists(members, m => m.NoShadow);
     }
   }
 
