@@ -201,14 +201,14 @@ internal sealed class RectangleCull
     Vector256<double> ainv = Vector256.Abs(inv);
     Vector256<double> t = -z0 * inv;
     Vector256<double> at = Vector256.Abs(t);
-    Vector256<double> et = (e0 + at * ed) * ainv * (Vector256<double>.One + (ed + ed) * ainv) * Vector256.Create(1.01) + at * Vector256.Create(Gamma);
+    Vector256<double> common = e0 + at * ed;
+    Vector256<double> et = common * ainv * (Vector256<double>.One + (ed + ed) * ainv) * Vector256.Create(1.01) + at * Vector256.Create(Gamma);
     Vector256<double> x0 = g.Xx * ox + g.Xy * oy + g.Xz * oz + g.Xw;
     Vector256<double> vx = g.Xx * dx + g.Xy * dy + g.Xz * dz;
     Vector256<double> y0 = g.Yx * ox + g.Yy * oy + g.Yz * oz + g.Yw;
     Vector256<double> vy = g.Yx * dx + g.Yy * dy + g.Yz * dz;
     Vector256<double> tvx = t * vx, tvy = t * vy;
     Vector256<double> x = x0 + tvx, y = y0 + tvy;
-    Vector256<double> common = e0 + at * ed;
     Vector256<double> ex = common + et * (Vector256.Abs(vx) + ed) + (Vector256.Abs(x0) + Vector256.Abs(tvx)) * Vector256.Create(Gamma);
     Vector256<double> ey = common + et * (Vector256.Abs(vy) + ed) + (Vector256.Abs(y0) + Vector256.Abs(tvy)) * Vector256.Create(Gamma);
     Vector256<double> outside = Vector256.LessThan(x + ex, g.XMin) | Vector256.GreaterThan(x - ex, g.XMax) |
