@@ -47,6 +47,11 @@ def main(paths):
     def series(variant, renderer):
         return sorted((r for r in rows if r["variant"] == variant and r["renderer"] == renderer), key=lambda r: int(r["spp"]))
 
+    def with_cycles(variant):
+        """Each of our rows of the variant with Cycles' row of the same sample count (None when Cycles has none)."""
+        cycles = {r["spp"]: r for r in series(variant, "cycles")}
+        return [(o, cycles.get(o["spp"])) for o in series(variant, "ours")]
+
     print("## Mean radiance (Rec.709 luminance, all pixels)\n")
     print("| variant | Cycles reference | ours, most samples | difference |\n|---|---|---|---|")
     for v in variants:
@@ -58,9 +63,7 @@ def main(paths):
     print("\n## Error and time per sample count\n")
     print("| variant | spp | Cycles s | ours s | Cycles RMSE | ours RMSE | Cycles RMSE ref ≤ 1 | ours RMSE ref ≤ 1 |\n|---|---|---|---|---|---|---|---|")
     for v in variants:
-        cycles = {r["spp"]: r for r in series(v, "cycles")}
-        for o in series(v, "ours"):
-            c = cycles.get(o["spp"])
+        for o, c in with_cycles(v):
             cs = lambda k: c[k] if c else "–"
             print(f"| {v} | {o['spp']} | {cs('render_s')} | {o['render_s']} | {cs('rmse')} | {o['rmse']} | {cs('rmse_le1')} | {o['rmse_le1']} |")
 
@@ -79,9 +82,7 @@ def main(paths):
     print("\n## Monte Carlo efficiency 1/(time × RMSE²), ours ÷ Cycles, at equal sample counts\n")
     print("| variant | spp | all pixels | pixels with ref ≤ 1 |\n|---|---|---|---|")
     for v in variants:
-        cycles = {r["spp"]: r for r in series(v, "cycles")}
-        for o in series(v, "ours"):
-            c = cycles.get(o["spp"])
+        for o, c in with_cycles(v):
             if not c or c["render_s"] in ("", "-") or o["render_s"] in ("", "-"):
                 continue
             def eff(column):
