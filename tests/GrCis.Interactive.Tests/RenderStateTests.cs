@@ -19,12 +19,7 @@ public class RenderStateTests
   [Fact]
   public async Task Each_render_asked_for_is_announced_with_its_number_while_busy_building()
   {
-    var catalog = SceneCatalog.WithBuiltInScenes();
-    using var demo = new DemoController(catalog)
-    {
-      Settings = new RenderSettings { Width = 16, Height = 12, Threads = 2 },
-      Selected = catalog.Find("Five balls"),
-    };
+    using DemoController demo = FiveBalls(new RenderSettings { Width = 16, Height = 12, Threads = 2 });
     var started = new List<(long Id, bool Building)>();
     demo.RenderStarted += (_, id) => started.Add((id, demo.IsBuilding));
     await demo.RenderAsync();
@@ -35,12 +30,7 @@ public class RenderStateTests
   [Fact]
   public async Task The_state_can_be_read_from_another_thread_while_the_built_scene_is_announced()
   {
-    var catalog = SceneCatalog.WithBuiltInScenes();
-    using var demo = new DemoController(catalog)
-    {
-      Settings = new RenderSettings { Width = 16, Height = 12, Threads = 2 },
-      Selected = catalog.Find("Five balls"),
-    };
+    using DemoController demo = FiveBalls(new RenderSettings { Width = 16, Height = 12, Threads = 2 });
     bool? answered = null;
     demo.SceneEvaluated += (_, _) =>
     {
@@ -57,14 +47,9 @@ public class RenderStateTests
   [Fact]
   public async Task A_second_render_replaces_the_first_and_only_its_events_arrive()
   {
-    var catalog = SceneCatalog.WithBuiltInScenes();
-    using var demo = new DemoController(catalog)
-    {
-      // Big enough to be still running when the second render is asked for.
-      Settings = new RenderSettings { Width = 1600, Height = 1200, SamplesPerPixel = 16, Threads = 2 },
-      Selected = catalog.Find("Five balls"),
-      PreviewInterval = TimeSpan.FromMilliseconds(50),
-    };
+    // Big enough to be still running when the second render is asked for.
+    using DemoController demo = FiveBalls(new RenderSettings { Width = 1600, Height = 1200, SamplesPerPixel = 16, Threads = 2 });
+    demo.PreviewInterval = TimeSpan.FromMilliseconds(50);
     var completed = new List<RenderResult>();
     var previewed = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
     int secondPreviews = 0;
@@ -125,13 +110,8 @@ public class RenderStateTests
   [Fact]
   public async Task A_size_that_does_not_fit_in_memory_is_refused_before_any_work()
   {
-    var catalog = SceneCatalog.WithBuiltInScenes();
-    using var demo = new DemoController(catalog)
-    {
-      Settings = new RenderSettings { Width = 16384, Height = 16384 },
-      Selected = catalog.Find("Five balls"),
-      MemoryLimit = 1L << 30,
-    };
+    using DemoController demo = FiveBalls(new RenderSettings { Width = 16384, Height = 16384 });
+    demo.MemoryLimit = 1L << 30;
     string? error = null;
     demo.Error += (_, e) => error = e.Message;
 
@@ -145,5 +125,12 @@ public class RenderStateTests
     // What fits renders.
     demo.Settings = new RenderSettings { Width = 64, Height = 48 };
     Assert.True((await demo.RenderAsync())!.Succeeded);
+  }
+
+  /// <summary>A controller over the built-in scenes with Five balls selected and <paramref name="settings"/>.</summary>
+  static DemoController FiveBalls(RenderSettings settings)
+  {
+    var catalog = SceneCatalog.WithBuiltInScenes();
+    return new DemoController(catalog) { Settings = settings, Selected = catalog.Find("Five balls") };
   }
 }
