@@ -56,6 +56,9 @@ public sealed partial class PreparedScene
       int item = always[k];
       if (lineCull && members[item].HasLineBox && LineMisses(members[item].LineBox, p0.X, p0.Y, p0.Z, ix, iy, iz))
         continue;
+      // A plane the ray leaves upwards (from above it, or from on it) has nothing to report (exact: conservative).
+      if (members[item].HasPlaneZ && PlaneCull.Leaves(members[item], p0, p1, q.Len2))
+        continue;
       if (!TestMember(item, ref q, p0, p1))
         return false;
     }
