@@ -32,13 +32,11 @@ public sealed partial class PreparedScene
   {
     Vector256<double> vox = Vector256.Create(p0.X), voy = Vector256.Create(p0.Y), voz = Vector256.Create(p0.Z);
     Vector256<double> vdx = Vector256.Create(p1.X), vdy = Vector256.Create(p1.Y), vdz = Vector256.Create(p1.Z);
-    double length = Math.Sqrt(q.Len2);
-    double low = 1.001 * Intersection.RAY_EPSILON / length;
     ReadOnlySpan<SphereCull.Group> groups = spheres!.Groups;
     for (int g = 0; g < groups.Length; g++)
     {
       ref readonly SphereCull.Group group = ref groups[g];
-      for (int mask = SphereCull.MustTest(group, vox, voy, voz, vdx, vdy, vdz, q.Len2, length, Math.Max(q.BestT, low)); mask != 0; mask &= mask - 1)
+      for (int mask = SphereCull.MustTest(group, vox, voy, voz, vdx, vdy, vdz, q.Len2, q.BestT); mask != 0; mask &= mask - 1)
         if (!TestMember(group.Member[BitOperations.TrailingZeroCount(mask)], ref q, p0, p1))
           return false;
     }

@@ -79,12 +79,11 @@ internal sealed class SphereCull
 
   /// <summary>
   /// The lanes of <paramref name="g"/> that must be tested exactly for the ray <c>p0 + t d</c> (|d|² =
-  /// <paramref name="dd"/>, |d| = <paramref name="length"/>): <paramref name="bound"/> is max(best t so far, just above
-  /// the smallest accepted t).
+  /// <paramref name="dd"/>) when the best t so far is <paramref name="bestT"/>.
   /// </summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static int MustTest(in Group g, Vector256<double> ox, Vector256<double> oy, Vector256<double> oz,
-                             Vector256<double> dx, Vector256<double> dy, Vector256<double> dz, double dd, double length, double bound)
+                             Vector256<double> dx, Vector256<double> dy, Vector256<double> dz, double dd, double bestT)
   {
     Vector256<double> cx = g.Cx - ox, cy = g.Cy - oy, cz = g.Cz - oz;
     Vector256<double> b = cx * dx + cy * dy + cz * dz;
@@ -96,6 +95,10 @@ internal sealed class SphereCull
     int open = g.Valid & ~(int)Vector256.GreaterThan(c * vdd, bb).ExtractMostSignificantBits();
     if (open == 0)
       return 0;
+    // Only for a line near some ball (most rays of a small scene miss them all): |d|, and the bound
+    // max(best t so far, just above the smallest accepted t).
+    double length = Math.Sqrt(dd);
+    double bound = Math.Max(bestT, 1.001 * Intersection.RAY_EPSILON / length);
 
     // Where the line crosses the ball, t ∈ [(b − s)/dd, (b + s)/dd]; the slack covers the rounding of both ends
     // (relative to the magnitudes |oc|·|d| ≤ |oc|₁·|d|, r·|d|, |b| and s the terms carry) by a wide margin.
