@@ -47,8 +47,15 @@ public sealed partial class PreparedScene
   bool Open(ref Query q, in Vector3d p0, in Vector3d p1)
   {
     // The whole-line test of a bounded plane needs every slab: a zero component would turn one into a half-line.
-    bool lineCull = p1.X != 0.0 && p1.Y != 0.0 && p1.Z != 0.0;
-    double ix = 1.0 / p1.X, iy = 1.0 / p1.Y, iz = 1.0 / p1.Z;
+    // The reciprocals only when some member has a line box (an infinite plane has none).
+    bool lineCull = lineBoxes && p1.X != 0.0 && p1.Y != 0.0 && p1.Z != 0.0;
+    double ix = 0.0, iy = 0.0, iz = 0.0;
+    if (lineCull)
+    {
+      ix = 1.0 / p1.X;
+      iy = 1.0 / p1.Y;
+      iz = 1.0 / p1.Z;
+    }
     for (int k = 0; k < always.Length; k++)
     {
       int item = always[k];
