@@ -38,6 +38,13 @@ internal struct PreparedMember
   public Aabb LineBox;
   public bool HasLineBox;
 
+  /// <summary>
+  /// For a plane member: its local z as an affine function of the world point (x, y, z, offset), and the same over the
+  /// chain's absolute values (<see cref="PlaneCull"/>); valid when <see cref="HasPlaneZ"/>.
+  /// </summary>
+  public Vector4d PlaneZ, PlaneZAbs;
+  public bool HasPlaneZ;
+
   /// <summary>The solid's local NO_SHADOW attribute was set at prepare time.</summary>
   public bool NoShadow;
 

@@ -100,6 +100,9 @@ public sealed partial class PreparedScene
       m.CullRadius2 = r * r;
     }
 
+    if (node is Plane && m.RecordSolid != null)
+      PlaneCull.Build(ref m, path);
+
     if (node is Plane plane && m.RecordSolid != null && BoundedPlaneBox(plane, out Aabb flat))
     {
       Aabb world = flat.Transformed(LocalToWorldOf(path));

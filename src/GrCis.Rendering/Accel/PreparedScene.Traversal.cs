@@ -32,13 +32,11 @@ public sealed partial class PreparedScene
   {
     Vector256<double> vox = Vector256.Create(p0.X), voy = Vector256.Create(p0.Y), voz = Vector256.Create(p0.Z);
     Vector256<double> vdx = Vector256.Create(p1.X), vdy = Vector256.Create(p1.Y), vdz = Vector256.Create(p1.Z);
-    double length = Math.Sqrt(q.Len2);
-    double low = 1.001 * Intersection.RAY_EPSILON / length;
     ReadOnlySpan<SphereCull.Group> groups = spheres!.Groups;
     for (int g = 0; g < groups.Length; g++)
     {
       ref readonly SphereCull.Group group = ref groups[g];
-      for (int mask = SphereCull.MustTest(group, vox, voy, voz, vdx, vdy, vdz, q.Len2, length, Math.Max(q.BestT, low)); mask != 0; mask &= mask - 1)
+      for (int mask = SphereCull.MustTest(group, vox, voy, voz, vdx, vdy, vdz, q.Len2, q.BestT); mask != 0; mask &= mask - 1)
         if (!TestMember(group.Member[BitOperations.TrailingZeroCount(mask)], ref q, p0, p1))
           return false;
     }
@@ -49,12 +47,22 @@ public sealed partial class PreparedScene
   bool Open(ref Query q, in Vector3d p0, in Vector3d p1)
   {
     // The whole-line test of a bounded plane needs every slab: a zero component would turn one into a half-line.
-    bool lineCull = p1.X != 0.0 && p1.Y != 0.0 && p1.Z != 0.0;
-    double ix = 1.0 / p1.X, iy = 1.0 / p1.Y, iz = 1.0 / p1.Z;
+    // The reciprocals only when some member has a line box (an infinite plane has none).
+    bool lineCull = lineBoxes && p1.X != 0.0 && p1.Y != 0.0 && p1.Z != 0.0;
+    double ix = 0.0, iy = 0.0, iz = 0.0;
+    if (lineCull)
+    {
+      ix = 1.0 / p1.X;
+      iy = 1.0 / p1.Y;
+      iz = 1.0 / p1.Z;
+    }
     for (int k = 0; k < always.Length; k++)
     {
       int item = always[k];
       if (lineCull && members[item].HasLineBox && LineMisses(members[item].LineBox, p0.X, p0.Y, p0.Z, ix, iy, iz))
+        continue;
+      // A plane the ray leaves upwards (from above it, or from on it) has nothing to report (exact: conservative).
+      if (members[item].HasPlaneZ && PlaneCull.Leaves(members[item], p0, p1, q.Len2))
         continue;
       if (!TestMember(item, ref q, p0, p1))
         return false;

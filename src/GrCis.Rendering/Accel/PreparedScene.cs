@@ -43,6 +43,8 @@ public sealed partial class PreparedScene : ISceneQuery
   readonly PreparedMember[] members;
   readonly Matrix4d[] chain;
   readonly int[] always;
+  // Some member of always has a line box (LineMisses); else Open needs no reciprocals of the direction.
+  readonly bool lineBoxes;
   readonly RectangleCull? rectangles;
   readonly SphereCull? spheres;
   readonly WideBvh? bvh;
@@ -134,6 +136,7 @@ public sealed partial class PreparedScene : ISceneQuery
       always = rest;
       anyHit = capabilities.ListCount == 0 && !Array.Exists(members, m => m.NoShadow);
     }
+    lineBoxes = Array.Exists(always, k => members[k].HasLineBox);
   }
 
 

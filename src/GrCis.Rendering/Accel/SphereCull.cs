@@ -9,8 +9,9 @@ namespace Rendering.Accel;
 /// <summary>
 /// The closed members of a small scene, when all of them are spheres under a similarity (their conservative world
 /// bounding spheres, <see cref="PreparedMember.CullRadius2"/>), four at a time instead of a BVH: a member is skipped
-/// when the ray's line misses its padded ball, the ball lies wholly behind the origin, or it starts beyond the best t
-/// so far, each for sure after allowing for rounding. Such a member has no record the query could take, and it cannot
+/// when the ray's line misses its padded ball, the ball lies wholly behind the origin or within half the smallest accepted
+/// t of it (a ray leaving the ball it starts on), or it starts beyond the best t so far, each for sure after allowing for
+/// rounding. Such a member has no record the query could take, and it cannot
 /// contain the origin, so (as for the BVH's pruning) the answer is that of testing every member exactly.
 /// </summary>
 internal sealed class SphereCull
@@ -79,12 +80,11 @@ internal sealed class SphereCull
 
   /// <summary>
   /// The lanes of <paramref name="g"/> that must be tested exactly for the ray <c>p0 + t d</c> (|d|² =
-  /// <paramref name="dd"/>, |d| = <paramref name="length"/>): <paramref name="bound"/> is max(best t so far, just above
-  /// the smallest accepted t).
+  /// <paramref name="dd"/>) when the best t so far is <paramref name="bestT"/>.
   /// </summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static int MustTest(in Group g, Vector256<double> ox, Vector256<double> oy, Vector256<double> oz,
-                             Vector256<double> dx, Vector256<double> dy, Vector256<double> dz, double dd, double length, double bound)
+                             Vector256<double> dx, Vector256<double> dy, Vector256<double> dz, double dd, double bestT)
   {
     Vector256<double> cx = g.Cx - ox, cy = g.Cy - oy, cz = g.Cz - oz;
     Vector256<double> b = cx * dx + cy * dy + cz * dz;
@@ -96,6 +96,10 @@ internal sealed class SphereCull
     int open = g.Valid & ~(int)Vector256.GreaterThan(c * vdd, bb).ExtractMostSignificantBits();
     if (open == 0)
       return 0;
+    // Only for a line near some ball (most rays of a small scene miss them all): |d|, and the bound
+    // max(best t so far, just above the smallest accepted t).
+    double length = Math.Sqrt(dd);
+    double bound = Math.Max(bestT, 1.001 * Intersection.RAY_EPSILON / length);
 
     // Where the line crosses the ball, t ∈ [(b − s)/dd, (b + s)/dd]; the slack covers the rounding of both ends
     // (relative to the magnitudes |oc|·|d| ≤ |oc|₁·|d|, r·|d|, |b| and s the terms carry) by a wide margin.
@@ -104,7 +108,11 @@ internal sealed class SphereCull
     Vector256<double> scale = (Vector256.Abs(cx) + Vector256.Abs(cy) + Vector256.Abs(cz) + g.R) * len + Vector256.Abs(b) + s;
     Vector256<double> slack = scale * inv * Vector256.Create(1.0e-9);
     Vector256<double> tin = (b - s) * inv, tout = (b + s) * inv;
-    Vector256<double> behind = Vector256.LessThan(tout + slack, Vector256<double>.Zero);
+    // Behind: every t of the ball below half the smallest accepted t (|t|·|d| < RAY_EPSILON / 2): its roots are not
+    // accepted, so the kernel reports neither a record nor an inside state. This takes in the rays that leave the ball
+    // they start on (shadow, reflected and outgoing refracted rays), not only balls wholly behind the origin.
+    Vector256<double> near = Vector256.Create(0.5 * Intersection.RAY_EPSILON / length);
+    Vector256<double> behind = Vector256.LessThan(tout + slack, near);
     Vector256<double> beyond = Vector256.GreaterThan(tin - slack, Vector256.Create(bound));
     return open & ~(int)(behind | beyond).ExtractMostSignificantBits();
   }

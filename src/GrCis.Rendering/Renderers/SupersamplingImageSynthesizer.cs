@@ -83,7 +83,8 @@ public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
     {
       if (s > 0)
       {
-        if (IsStreamStart(s, n))
+        // IsStreamStart(s, n) without its division: s % n == 0 is k == 0 here.
+        if (s == 1 || k == 0)
           MT.StartStream(s);
         else
           MT.StartSample(s);

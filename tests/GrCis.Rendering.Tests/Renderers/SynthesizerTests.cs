@@ -169,4 +169,27 @@ public class SynthesizerTests
     Assert.True(SupersamplingImageSynthesizer.IsStreamStart(1, 4) && SupersamplingImageSynthesizer.IsStreamStart(12, 4));
     Assert.Throws<ArgumentOutOfRangeException>(() => s.AccumulateSamples(1, 2, 5, 8, color, parts, partsOdd));
   }
+
+  [Theory]
+  [InlineData(4)]
+  [InlineData(9)]
+  [InlineData(25)]
+  public void Every_stream_start_of_a_grid_begins_the_same_stream_in_one_call_as_in_a_pass_of_its_own(int samples)
+  {
+    // The loop tells stream starts by the sample's place on its diagonal; a pass beginning at each of them (IsStreamStart)
+    // must see the numbers the one call saw from there on.
+    var s = new SupersamplingImageSynthesizer { ImageFunction = new RandomFunction(), Supersampling = samples };
+    MT.InitThreadData();
+    double[] color = new double[3];
+    double[] whole = new double[3], wholeOdd = new double[3];
+    s.AccumulateSamples(3, 1, 0, samples, color, whole, wholeOdd);
+
+    var starts = Enumerable.Range(0, samples).Where(k => SupersamplingImageSynthesizer.IsStreamStart(k, s.SuperXY)).ToList();
+    Assert.Equal(s.SuperXY + 1, starts.Count);   // 0, 1 and each later diagonal's first
+    double[] parts = new double[3], partsOdd = new double[3];
+    for (int k = 0; k < starts.Count; k++)
+      s.AccumulateSamples(3, 1, starts[k], k + 1 < starts.Count ? starts[k + 1] : samples, color, parts, partsOdd);
+    Assert.Equal(whole, parts);
+    Assert.Equal(wholeOdd, partsOdd);
+  }
 }
