@@ -10,13 +10,22 @@ public sealed class CorrelatedMultiJitterSampler : Sampler
   public override SamplerKind Kind => SamplerKind.CorrelatedMultiJitter;
 
   public override double Get1D(SampleDimension dimension, int instance = 0) =>
-    Strata.Sample1D(Index, Count, Pattern(dimension, instance));
+    Grid().Sample1D(Index, Pattern(dimension, instance));
 
   public override void Get2D(SampleDimension dimension, int instance, out double u, out double v) =>
-    Strata.Sample2D(Index, Count, Pattern(dimension, instance), out u, out v);
+    Grid().Sample2D(Index, Pattern(dimension, instance), out u, out v);
 
   long hashedSeed;
   ulong seedHash = Strata.SeedHash(0);
+  StrataGrid grid = new(1);
+
+  /// <summary>The pattern constants of the current sample count, worked out again only when the count changes.</summary>
+  ref readonly StrataGrid Grid()
+  {
+    if (grid.Total != System.Math.Max(Count, 1))
+      grid = new StrataGrid(Count);
+    return ref grid;
+  }
 
   /// <summary>The pattern of a dimension in the current pixel (the hash <see cref="Strata"/> has always used).</summary>
   public uint Pattern(SampleDimension dimension, int instance = 0)

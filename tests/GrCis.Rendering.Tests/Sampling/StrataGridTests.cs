@@ -1,0 +1,83 @@
+using System;
+using Rendering;
+
+namespace GrCis.Rendering.Tests.Sampling;
+
+public class StrataGridTests
+{
+  [Theory]
+  [InlineData(1)]
+  [InlineData(2)]
+  [InlineData(3)]
+  [InlineData(7)]
+  [InlineData(16)]
+  [InlineData(36)]
+  [InlineData(64)]
+  [InlineData(100)]
+  [InlineData(256)]
+  [InlineData(1000)]
+  [InlineData(65536)]
+  public void Grid_gives_the_bits_of_Strata_for_every_rank_and_random_patterns(int total)
+  {
+    var grid = new StrataGrid(total);
+    var random = new Random(total);
+    for (int trial = 0; trial < 40; trial++)
+    {
+      uint pattern = (uint)random.NextInt64(0, 1L << 32);
+      // Ranks past the ends are clamped by both.
+      for (int rank = -2; rank < Math.Min(total, 300) + 2; rank++)
+      {
+        Strata.Sample2D(rank, total, pattern, out double u, out double v);
+        grid.Sample2D(rank, pattern, out double gu, out double gv);
+        Assert.Equal(BitConverter.DoubleToInt64Bits(u), BitConverter.DoubleToInt64Bits(gu));
+        Assert.Equal(BitConverter.DoubleToInt64Bits(v), BitConverter.DoubleToInt64Bits(gv));
+        Assert.Equal(BitConverter.DoubleToInt64Bits(Strata.Sample1D(rank, total, pattern)), BitConverter.DoubleToInt64Bits(grid.Sample1D(rank, pattern)));
+      }
+    }
+  }
+
+  [Fact]
+  public void A_count_of_zero_samples_like_one()
+  {
+    new StrataGrid(0).Sample2D(0, 12345u, out double u, out double v);
+    Strata.Sample2D(0, 0, 12345u, out double su, out double sv);
+    Assert.Equal((su, sv), (u, v));
+  }
+
+  [Fact]
+  public void Divisor_divides_exactly_at_the_edges_of_the_32_bit_range()
+  {
+    uint[] divisors = { 1, 2, 3, 5, 6, 7, 10, 12, 36, 100, 255, 1000, 65535, 65536, 0x7FFFFFFF, 0x80000001, 0xFFFFFFFE, 0xFFFFFFFF };
+    var random = new Random(7);
+    foreach (uint d in divisors)
+    {
+      var divisor = new StrataGrid.Divisor(d);
+      uint[] edges = { 0, 1, d - 1, d, d + 1, 2 * d - 1, 0x7FFFFFFF, 0x80000000, 0xFFFFFFFE, 0xFFFFFFFF };
+      foreach (uint a in edges)
+        AssertDivides(divisor, a);
+      for (int k = 0; k < 2000; k++)
+        AssertDivides(divisor, (uint)random.NextInt64(0, 1L << 32));
+    }
+  }
+
+  static void AssertDivides(StrataGrid.Divisor divisor, uint a)
+  {
+    Assert.Equal(a / divisor.Value, divisor.Div(a));
+    Assert.Equal(a % divisor.Value, divisor.Mod(a));
+  }
+
+  [Fact]
+  public void The_sampler_follows_a_changed_count()
+  {
+    var sampler = (CorrelatedMultiJitterSampler)Sampler.Create(SamplerKind.CorrelatedMultiJitter, seed: 5);
+    foreach (int count in new[] { 16, 9, 16, 1, 256 })
+    {
+      sampler.StartPixel(3, 4, count);
+      sampler.StartPixelSample(3, 4, count - 1);
+      sampler.Get2D(SampleDimension.PathDirection, 2, out double u, out double v);
+      Strata.Sample2D(count - 1, count, sampler.Pattern(SampleDimension.PathDirection, 2), out double su, out double sv);
+      Assert.Equal((su, sv), (u, v));
+      Assert.Equal(Strata.Sample1D(count - 1, count, sampler.Pattern(SampleDimension.PathRoulette, 1)), sampler.Get1D(SampleDimension.PathRoulette, 1));
+    }
+  }
+}
