@@ -6,7 +6,8 @@ namespace Rendering;
 /// <summary>
 /// <see cref="Strata"/>'s patterns for one sample count, with what depends on the count alone worked out once: the
 /// m×n grid, the masks of the permutations' power-of-two ranges and the divisions by the count, m and n (a shift or
-/// mask for powers of two, else a multiply by a precomputed reciprocal). <see cref="Sample1D"/> and
+/// mask for powers of two, else a multiply by a precomputed reciprocal; the final scalings to [0,1) a product when the
+/// count is a power of two, exact then). <see cref="Sample1D"/> and
 /// <see cref="Sample2D"/> give the same bits as <see cref="Strata.Sample1D(int, int, uint)"/> and
 /// <see cref="Strata.Sample2D(int, int, uint, out double, out double)"/>; a sampler keeps one while the count stays.
 /// </summary>
@@ -16,6 +17,10 @@ internal readonly struct StrataGrid
   public readonly int Total;
 
   readonly Divisor total, m, n;
+
+  // 1/count, 1/m and 1/n when all three are powers of two: a product by them is then the quotient's exact bits.
+  readonly double inverseTotal, inverseM, inverseN;
+  readonly bool powers;
 
   public StrataGrid(int count)
   {
@@ -27,13 +32,18 @@ internal readonly struct StrataGrid
     total = new Divisor((uint)Total);
     m = new Divisor((uint)rows);
     n = new Divisor((uint)(Total / rows));
+    powers = m.IsPowerOfTwo && n.IsPowerOfTwo;
+    inverseTotal = 1.0 / Total;
+    inverseM = 1.0 / m.Value;
+    inverseN = 1.0 / n.Value;
   }
 
   /// <summary><see cref="Strata.Sample1D(int, int, uint)"/> for this count.</summary>
   public double Sample1D(int rank, uint pattern)
   {
     uint s = Permute((uint)Math.Clamp(rank, 0, Total - 1), total, pattern * 0x51633E2Du);
-    return (s + Jitter(s, pattern * 0x68BC21EBu)) / Total;
+    double x = s + Jitter(s, pattern * 0x68BC21EBu);
+    return powers ? x * inverseTotal : x / Total;
   }
 
   /// <summary><see cref="Strata.Sample2D(int, int, uint, out double, out double)"/> for this count.</summary>
@@ -45,6 +55,12 @@ internal readonly struct StrataGrid
     uint sy = Permute(row, n, pattern * 0x02E5BE93u);
     double jx = Jitter(s, pattern * 0x967A889Bu);
     double jy = Jitter(s, pattern * 0x3C6EF372u);
+    if (powers)
+    {
+      u = (column + (sy + jx) * inverseN) * inverseM;
+      v = (row + (sx + jy) * inverseM) * inverseN;
+      return;
+    }
     int mi = (int)m.Value, ni = (int)n.Value;
     u = (column + (sy + jx) / ni) / mi;
     v = (row + (sx + jy) / mi) / ni;
@@ -101,6 +117,8 @@ internal readonly struct StrataGrid
     readonly ulong reciprocal;
     readonly int shift;
     readonly bool power;
+
+    public bool IsPowerOfTwo => power;
 
     public Divisor(uint d)
     {

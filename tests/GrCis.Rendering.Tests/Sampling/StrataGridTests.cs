@@ -80,4 +80,26 @@ public class StrataGridTests
       Assert.Equal(Strata.Sample1D(count - 1, count, sampler.Pattern(SampleDimension.PathRoulette, 1)), sampler.Get1D(SampleDimension.PathRoulette, 1));
     }
   }
+
+  [Fact]
+  public void The_sampler_kept_patterns_are_those_of_the_pixel_seed_and_frame_it_is_at()
+  {
+    var sampler = (CorrelatedMultiJitterSampler)Sampler.Create(SamplerKind.CorrelatedMultiJitter);
+    var random = new Random(11);
+    // Pixels, seeds and frames change between and within the same few (dimension, instance) pairs, instances past the kept ones too.
+    for (int k = 0; k < 3000; k++)
+    {
+      switch (random.Next(6))
+      {
+        case 0: sampler.Seed = random.Next(3); break;
+        case 1: sampler.Frame = random.Next(3); break;
+        case 2: sampler.StartPixel(random.Next(3), random.Next(3), 16); break;
+        default: break;
+      }
+      var dimension = (SampleDimension)random.Next(12);
+      int instance = random.Next(4) == 0 ? random.Next(60, 200) : random.Next(4);
+      uint expected = Strata.Pattern(sampler.Seed, sampler.Frame, sampler.X, sampler.Y, Strata.Dimension(dimension, instance));
+      Assert.Equal(expected, sampler.Pattern(dimension, instance));
+    }
+  }
 }
