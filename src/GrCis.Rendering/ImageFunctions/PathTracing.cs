@@ -135,9 +135,11 @@ public class PathTracing : MonteCarloRayTracing
         break;
       }
       scratch.Hits++;
-      long h = CompleteAndTexture(i);
+      // Only the first hit's hash is returned: later hits are completed and textured without hashing their solid.
       if (bounce == 0)
-        hash = h;
+        hash = CompleteAndTexture(i);
+      else
+        CompleteAndTextureUnhashed(i);
       Vector3d x = i.CoordWorld;
       Vector3d normal = i.Normal;
 
@@ -159,7 +161,8 @@ public class PathTracing : MonteCarloRayTracing
         break;
 
       // A material may supply its own scattering (IScatteringMaterial); else its Phong parameters decide.
-      PathBsdf bsdf = PathBsdf.For(i.Material, i, i.Material is IScatteringMaterial ? scratch.Buffer(depth + 2, color.Length) : null, i.SurfaceColor, normal, direction, MirrorExponent);
+      IMaterial? material = i.Material;
+      PathBsdf bsdf = PathBsdf.For(material, i, PathBsdf.HasOwnScattering(material) ? scratch.Buffer(depth + 2, color.Length) : null, i.SurfaceColor, normal, direction, MirrorExponent);
       if (!bsdf.Scatters)
         break;
       if (NextEventEstimation && bsdf.HasSmooth)
@@ -192,6 +195,15 @@ public class PathTracing : MonteCarloRayTracing
     }
     radiance.CopyTo(color);
     return hash;
+  }
+
+  /// <summary><see cref="RayCasting.CompleteAndTexture"/> without the hash: the same completion and texture calls, in the same order.</summary>
+  static void CompleteAndTextureUnhashed(Intersection i)
+  {
+    i.Complete();
+    if (i.Textures != null)
+      foreach (ITexture tex in i.Textures)
+        tex.Apply(i);
   }
 
   /// <summary>Ray <paramref name="index"/> of the path being observed (kept in the worker's context, ended in reverse order when the path is done).</summary>

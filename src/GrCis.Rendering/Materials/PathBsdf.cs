@@ -54,9 +54,9 @@ internal struct PathBsdf
     s.entering = cosO > 0.0;
     s.nf = s.entering ? normal : -normal;
     s.mirror = 2.0 * Math.Abs(cosO) * s.nf - s.wo;
-    if (material is IScatteringMaterial own && hit != null && buffer != null)
+    if (HasOwnScattering(material) && hit != null && buffer != null)
     {
-      s.own = own;
+      s.own = (IScatteringMaterial)material!;
       s.hit = hit;
       s.buffer = buffer;
       s.Scatters = true;
@@ -110,6 +110,13 @@ internal struct PathBsdf
     }
     return s;
   }
+
+  /// <summary>
+  /// True when <paramref name="material"/> supplies its own scattering (<see cref="IScatteringMaterial"/>). The library's
+  /// <see cref="PhongMaterial"/> itself does not: its exact type answers without the interface test.
+  /// </summary>
+  public static bool HasOwnScattering(IMaterial? material) =>
+    material != null && material.GetType() != typeof(PhongMaterial) && material is IScatteringMaterial;
 
   /// <summary>The smooth (non-delta) part of the BSDF for light arriving from <paramref name="wi"/>, without the cosine.</summary>
   public readonly Rgb Eval(Vector3d wi)
