@@ -12,19 +12,8 @@ public sealed class CorrelatedMultiJitterSampler : Sampler
   public override double Get1D(SampleDimension dimension, int instance = 0) =>
     Grid().Sample1D(Index, Pattern(dimension, instance));
 
-  public override void Get2D(SampleDimension dimension, int instance, out double u, out double v)
-  {
-    ref readonly StrataGrid g = ref Grid();
-    uint pattern = Pattern(dimension, instance);
-    // The column and row permutations of a kept pattern are kept with it (for grids of up to KeptLength entries).
-    if ((uint)dimension < CachedDimensions && (uint)instance < CachedInstances && g.KeptEntries <= KeptLength)
-    {
-      int slot = (int)dimension * CachedInstances + instance;
-      g.Sample2D(Index, pattern, kept[slot] ??= new uint[KeptLength], keptStamps[slot] ??= new int[KeptLength], stamp, out u, out v);
-    }
-    else
-      g.Sample2D(Index, pattern, out u, out v);
-  }
+  public override void Get2D(SampleDimension dimension, int instance, out double u, out double v) =>
+    Grid().Sample2D(Index, Pattern(dimension, instance), out u, out v);
 
   long hashedSeed;
   ulong seedHash = Strata.SeedHash(0);
@@ -34,10 +23,7 @@ public sealed class CorrelatedMultiJitterSampler : Sampler
   ref readonly StrataGrid Grid()
   {
     if (grid.Total != System.Math.Max(Count, 1))
-    {
       grid = new StrataGrid(Count);
-      NewPixel();   // the kept permutations belong to the old grid
-    }
     return ref grid;
   }
 
@@ -59,23 +45,18 @@ public sealed class CorrelatedMultiJitterSampler : Sampler
     return Hash(dimension, instance);
   }
 
-  const int CachedDimensions = 16, CachedInstances = 64, KeptLength = 64;
-  readonly uint[]?[] kept = new uint[CachedDimensions * CachedInstances][];
-  readonly int[]?[] keptStamps = new int[CachedDimensions * CachedInstances][];
+  const int CachedDimensions = 16, CachedInstances = 64;
   readonly uint[] patterns = new uint[CachedDimensions * CachedInstances];
   readonly int[] stamps = new int[CachedDimensions * CachedInstances];
   int stamp, stampX = int.MinValue, stampY, stampFrame;
   long stampSeed;
 
-  /// <summary>Forgets the patterns and permutations kept for the last pixel or count (a new stamp; the entries are cleared when the stamps run out).</summary>
+  /// <summary>Forgets the patterns of the last pixel (a new stamp; the entries are cleared when the stamps run out).</summary>
   void NewPixel()
   {
     if (stamp == int.MaxValue)
     {
       System.Array.Clear(stamps);
-      foreach (int[]? entries in keptStamps)
-        if (entries != null)
-          System.Array.Clear(entries);
       stamp = 0;
     }
     stamp++;

@@ -8,7 +8,7 @@ namespace Rendering;
 /// m×n grid, the masks of the permutations' power-of-two ranges and the divisions by the count, m and n (a shift or
 /// mask for powers of two, else a multiply by a precomputed reciprocal; the final scalings to [0,1) a product when the
 /// count is a power of two, exact then). <see cref="Sample1D"/> and
-/// <see cref="Sample2D(int, uint, out double, out double)"/> give the same bits as <see cref="Strata.Sample1D(int, int, uint)"/> and
+/// <see cref="Sample2D"/> give the same bits as <see cref="Strata.Sample1D(int, int, uint)"/> and
 /// <see cref="Strata.Sample2D(int, int, uint, out double, out double)"/>; a sampler keeps one while the count stays.
 /// </summary>
 internal readonly struct StrataGrid
@@ -53,44 +53,6 @@ internal readonly struct StrataGrid
     uint row = m.Div(s), column = s - row * m.Value;
     uint sx = Permute(column, m, pattern * 0x68BC21EBu);
     uint sy = Permute(row, n, pattern * 0x02E5BE93u);
-    Finish(s, column, row, sx, sy, pattern, out u, out v);
-  }
-
-  /// <summary>Entries a kept table needs: the column permutation's m, then the row permutation's n.</summary>
-  public int KeptEntries => (int)(m.Value + n.Value);
-
-  /// <summary>
-  /// <see cref="Sample2D(int, uint, out double, out double)"/> with the pattern's column and row permutations kept in
-  /// <paramref name="kept"/> (at least <see cref="KeptEntries"/> long): an entry whose stamp is <paramref name="stamp"/>
-  /// holds its permuted value, any other is computed and stored. A pixel's samples of one dimension use each of the
-  /// m + n entries many times.
-  /// </summary>
-  public void Sample2D(int rank, uint pattern, uint[] kept, int[] keptStamps, int stamp, out double u, out double v)
-  {
-    uint s = Permute((uint)Math.Clamp(rank, 0, Total - 1), total, pattern * 0x51633E2Du);
-    uint row = m.Div(s), column = s - row * m.Value;
-    uint sx, sy;
-    if (keptStamps[column] == stamp)
-      sx = kept[column];
-    else
-    {
-      kept[column] = sx = Permute(column, m, pattern * 0x68BC21EBu);
-      keptStamps[column] = stamp;
-    }
-    int r = (int)(m.Value + row);
-    if (keptStamps[r] == stamp)
-      sy = kept[r];
-    else
-    {
-      kept[r] = sy = Permute(row, n, pattern * 0x02E5BE93u);
-      keptStamps[r] = stamp;
-    }
-    Finish(s, column, row, sx, sy, pattern, out u, out v);
-  }
-
-  /// <summary>The point of cell (column, row) from the permuted sub-cells and the jitter of <paramref name="s"/>.</summary>
-  void Finish(uint s, uint column, uint row, uint sx, uint sy, uint pattern, out double u, out double v)
-  {
     double jx = Jitter(s, pattern * 0x967A889Bu);
     double jy = Jitter(s, pattern * 0x3C6EF372u);
     if (powers)
