@@ -1,5 +1,4 @@
 using System;
-using System.Runtime.CompilerServices;
 using OpenTK.Mathematics;
 
 namespace Rendering;
@@ -137,16 +136,7 @@ internal struct PathBsdf
     material != null && material.GetType() != typeof(PhongMaterial) && material is IScatteringMaterial;
 
   /// <summary>The smooth (non-delta) part of the BSDF for light arriving from <paramref name="wi"/>, without the cosine.</summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public readonly Rgb Eval(Vector3d wi)
-  {
-    // A Lambertian lobe alone (with or without delta lobes), inlined where a path asks; the rest in EvalGeneral.
-    if (own != null || (ks > 0.0 && !glossyIsMirror))
-      return EvalGeneral(wi);
-    return Vector3d.Dot(wi, nf) <= 0.0 ? Rgb.Zero : diffuse * (1.0 / Math.PI);
-  }
-
-  readonly Rgb EvalGeneral(Vector3d wi)
   {
     if (own != null)
     {
@@ -166,16 +156,7 @@ internal struct PathBsdf
   }
 
   /// <summary>Density (per steradian) with which <see cref="Sample"/> picks <paramref name="wi"/> through a smooth lobe.</summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public readonly double Pdf(Vector3d wi)
-  {
-    if (own != null || (pS > 0.0 && !glossyIsMirror))
-      return PdfGeneral(wi);
-    double cos = Vector3d.Dot(wi, nf);
-    return cos <= 0.0 ? 0.0 : pD * cos / Math.PI;
-  }
-
-  readonly double PdfGeneral(Vector3d wi)
   {
     if (own != null)
       return own.Pdf(hit!, wo, wi);
