@@ -102,4 +102,34 @@ public class StrataGridTests
       Assert.Equal(expected, sampler.Pattern(dimension, instance));
     }
   }
+
+  [Fact]
+  public void The_sampler_gives_the_bits_of_Strata_while_pixels_counts_seeds_frames_and_ranks_change()
+  {
+    var sampler = (CorrelatedMultiJitterSampler)Sampler.Create(SamplerKind.CorrelatedMultiJitter);
+    var random = new Random(19);
+    int[] counts = { 256, 16, 36, 7, 1024, 4096, 1 };
+    sampler.StartPixel(0, 0, 256);
+    // Counts of every kind of grid, dimensions and instances in and past the kept patterns.
+    for (int k = 0; k < 20000; k++)
+    {
+      switch (random.Next(40))
+      {
+        case 0: sampler.Seed = random.Next(2); break;
+        case 1: sampler.Frame = random.Next(2); break;
+        case 2: sampler.StartPixel(random.Next(2), random.Next(2), counts[random.Next(counts.Length)]); break;
+        case 3: sampler.Count = counts[random.Next(counts.Length)]; break;
+        default: break;
+      }
+      sampler.Index = random.Next(sampler.Count + 1);
+      var dimension = (SampleDimension)random.Next(12);
+      int instance = random.Next(5) == 0 ? random.Next(60, 70) : random.Next(3);
+      uint pattern = Strata.Pattern(sampler.Seed, sampler.Frame, sampler.X, sampler.Y, Strata.Dimension(dimension, instance));
+      sampler.Get2D(dimension, instance, out double u, out double v);
+      Strata.Sample2D(sampler.Index, sampler.Count, pattern, out double su, out double sv);
+      Assert.Equal(BitConverter.DoubleToInt64Bits(su), BitConverter.DoubleToInt64Bits(u));
+      Assert.Equal(BitConverter.DoubleToInt64Bits(sv), BitConverter.DoubleToInt64Bits(v));
+      Assert.Equal(Strata.Sample1D(sampler.Index, sampler.Count, pattern), sampler.Get1D(dimension, instance));
+    }
+  }
 }
