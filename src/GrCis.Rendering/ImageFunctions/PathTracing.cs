@@ -15,7 +15,7 @@ namespace Rendering;
 /// background as an environment light, all through one light model (<see cref="ILight"/>, <see cref="SceneLights"/>).
 /// Every diffuse or glossy vertex samples each delta light and one light a ray can also hit, chosen by power (next-event
 /// estimation), and combines the latter with the scattered ray by multiple importance sampling (power heuristic);
-/// paths end by Russian roulette from the second bounce on. Every random decision of a vertex (lobe, direction,
+/// paths end by Russian roulette from the second bounce on, at vertices that scattered through a smooth lobe. Every random decision of a vertex (lobe, direction,
 /// roulette, emitter, point on it) comes from the worker's <see cref="Sampler"/>, each in a <see cref="SampleDimension"/>
 /// of its own. Output is linear radiance: render to PFM for comparisons, use n×n supersampling for the noise to fall.
 /// </summary>
@@ -39,7 +39,7 @@ public class PathTracing : MonteCarloRayTracing
   /// </summary>
   public bool EnvironmentSampling = false;
 
-  /// <summary>Bounces before Russian roulette may end a path (Cycles: the first bounce is never ended).</summary>
+  /// <summary>Bounces before Russian roulette may end a path (Cycles: the first bounce is never ended); it never ends one after a mirror or dielectric scattering.</summary>
   public int RussianRouletteStart = 1;
 
   /// <summary>Phong exponents at or above this make an ideal mirror (a delta lobe).</summary>
@@ -135,9 +135,11 @@ public class PathTracing : MonteCarloRayTracing
         break;
       }
       scratch.Hits++;
-      long h = CompleteAndTexture(i);
+      // Only the first hit's hash is returned: later hits are completed and textured without hashing their solid.
       if (bounce == 0)
-        hash = h;
+        hash = CompleteAndTexture(i);
+      else
+        CompleteAndTextureUnhashed(i);
       Vector3d x = i.CoordWorld;
       Vector3d normal = i.Normal;
 
@@ -159,7 +161,8 @@ public class PathTracing : MonteCarloRayTracing
         break;
 
       // A material may supply its own scattering (IScatteringMaterial); else its Phong parameters decide.
-      PathBsdf bsdf = PathBsdf.For(i.Material, i, i.Material is IScatteringMaterial ? scratch.Buffer(depth + 2, color.Length) : null, i.SurfaceColor, normal, direction, MirrorExponent);
+      IMaterial? material = i.Material;
+      PathBsdf bsdf = PathBsdf.For(material, i, PathBsdf.HasOwnScattering(material) ? scratch.Buffer(depth + 2, color.Length) : null, i.SurfaceColor, normal, direction, MirrorExponent);
       if (!bsdf.Scatters)
         break;
       if (NextEventEstimation && bsdf.HasSmooth)
@@ -176,7 +179,7 @@ public class PathTracing : MonteCarloRayTracing
       throughput *= weight;
       if (throughput.IsBlack)
         break;
-      if (bounce >= RussianRouletteStart && !Roulette(sampler, bounce, ref throughput))
+      if (!Survives(sampler, bounce, delta, ref throughput))
         break;
       origin = x;
       direction = wi;
@@ -192,6 +195,24 @@ public class PathTracing : MonteCarloRayTracing
     }
     radiance.CopyTo(color);
     return hash;
+  }
+
+  /// <summary>
+  /// Russian roulette after the scattering at <paramref name="bounce"/>: from <see cref="RussianRouletteStart"/> on, and
+  /// not after a mirror or dielectric (delta) scattering. Such a vertex keeps the throughput, so the roulette there
+  /// would save little work but multiply the second moment of what the path still carries (caustics through glass, the
+  /// light seen in a mirror) by 1/survival at every such vertex; a path ends at its next smooth vertex instead.
+  /// </summary>
+  internal bool Survives(Sampler sampler, int bounce, bool delta, ref Rgb throughput) =>
+    bounce < RussianRouletteStart || delta || Roulette(sampler, bounce, ref throughput);
+
+  /// <summary><see cref="RayCasting.CompleteAndTexture"/> without the hash: the same completion and texture calls, in the same order.</summary>
+  static void CompleteAndTextureUnhashed(Intersection i)
+  {
+    i.Complete();
+    if (i.Textures != null)
+      foreach (ITexture tex in i.Textures)
+        tex.Apply(i);
   }
 
   /// <summary>Ray <paramref name="index"/> of the path being observed (kept in the worker's context, ended in reverse order when the path is done).</summary>

@@ -54,9 +54,9 @@ internal struct PathBsdf
     s.entering = cosO > 0.0;
     s.nf = s.entering ? normal : -normal;
     s.mirror = 2.0 * Math.Abs(cosO) * s.nf - s.wo;
-    if (material is IScatteringMaterial own && hit != null && buffer != null)
+    if (HasOwnScattering(material) && hit != null && buffer != null)
     {
-      s.own = own;
+      s.own = (IScatteringMaterial)material!;
       s.hit = hit;
       s.buffer = buffer;
       s.Scatters = true;
@@ -99,17 +99,41 @@ internal struct PathBsdf
     double n = material?.n ?? 1.0;
     s.eta = n > 0.0 ? n : 1.0;
 
-    double wD = s.diffuse.Average, wS = ks, wT = kt;
-    double total = wD + wS + wT;
-    s.Scatters = total > 0.0;
-    if (s.Scatters)
-    {
-      s.pD = wD / total;
-      s.pS = wS / total;
-      s.pT = wT / total;
-    }
+    s.Scatters = LobeProbabilities(s.diffuse.Average, ks, kt, out s.pD, out s.pS, out s.pT);
     return s;
   }
+
+  /// <summary>
+  /// The lobe selection probabilities: each weight over their sum (all 0 and false when the sum is not positive). A
+  /// lone finite lobe, the usual case, needs no division: x/x is exactly 1 and 0/x exactly 0.
+  /// </summary>
+  internal static bool LobeProbabilities(double wD, double wS, double wT, out double pD, out double pS, out double pT)
+  {
+    pD = pS = pT = 0.0;
+    double total = wD + wS + wT;
+    if (!(total > 0.0))
+      return false;
+    if (wS == 0.0 && wT == 0.0 && double.IsFinite(wD))
+      pD = 1.0;
+    else if (wD == 0.0 && wT == 0.0 && double.IsFinite(wS))
+      pS = 1.0;
+    else if (wD == 0.0 && wS == 0.0 && double.IsFinite(wT))
+      pT = 1.0;
+    else
+    {
+      pD = wD / total;
+      pS = wS / total;
+      pT = wT / total;
+    }
+    return true;
+  }
+
+  /// <summary>
+  /// True when <paramref name="material"/> supplies its own scattering (<see cref="IScatteringMaterial"/>). The library's
+  /// <see cref="PhongMaterial"/> itself does not: its exact type answers without the interface test.
+  /// </summary>
+  public static bool HasOwnScattering(IMaterial? material) =>
+    material != null && material.GetType() != typeof(PhongMaterial) && material is IScatteringMaterial;
 
   /// <summary>The smooth (non-delta) part of the BSDF for light arriving from <paramref name="wi"/>, without the cosine.</summary>
   public readonly Rgb Eval(Vector3d wi)
