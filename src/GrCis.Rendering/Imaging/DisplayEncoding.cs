@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace Rendering.Imaging;
 
@@ -62,12 +63,35 @@ public readonly record struct DisplayEncoding
   }
 
   /// <summary>Encodes <paramref name="source"/> value by value into <paramref name="destination"/> (same length).</summary>
+  /// <remarks>
+  /// Renders repeat values (a background, flat colours), and each encoding is a power: a small direct-mapped memo of
+  /// this call keeps the byte of the last value seen in each slot, so a repeated value costs a look-up. The bytes are
+  /// those of <see cref="Encode(float)"/>, value by value.
+  /// </remarks>
+  [SkipLocalsInit]
   public void Encode(ReadOnlySpan<float> source, Span<byte> destination)
   {
     if (destination.Length != source.Length)
       throw new ArgumentException($"Destination has {destination.Length} bytes for {source.Length} values.", nameof(destination));
+    const int MemoBits = 10;
+    Span<uint> keys = stackalloc uint[1 << MemoBits];
+    Span<byte> bytes = stackalloc byte[1 << MemoBits];
+    // Every slot starts as a true entry: a NaN's bits and its byte.
+    uint empty = BitConverter.SingleToUInt32Bits(float.NaN);
+    keys.Fill(empty);
+    bytes.Fill(Encode(float.NaN));
     for (int i = 0; i < source.Length; i++)
-      destination[i] = Encode(source[i]);
+    {
+      float v = source[i];
+      uint bits = BitConverter.SingleToUInt32Bits(v);
+      int slot = (int)((bits * 0x9E3779B1u) >> (32 - MemoBits));
+      if (keys[slot] != bits)
+      {
+        keys[slot] = bits;
+        bytes[slot] = Encode(v);
+      }
+      destination[i] = bytes[slot];
+    }
   }
 
   /// <summary>A 1-band image becomes gray, a 3-band image RGB.</summary>

@@ -55,6 +55,36 @@ public class DisplayEncodingTests
     Assert.Throws<ArgumentException>(() => e.Encode(values, new byte[2]));
   }
 
+  [Theory]
+  [InlineData(2.2, Quantization.Truncate)]
+  [InlineData(1.0, Quantization.Round)]
+  [InlineData(0.45, Quantization.Round)]
+  public void Span_variant_remembers_repeated_values_without_changing_a_byte(double gamma, Quantization quantization)
+  {
+    // Repeats (a background), values that share a memo slot, NaNs of other bit patterns, negatives, values past 1,
+    // and neighbours one float apart, where a wrong memo hit would give a wrong byte.
+    var random = new Random(311);
+    var values = new float[50_000];
+    float[] pool = new float[3000];
+    for (int i = 0; i < pool.Length; i++)
+      pool[i] = (float)(random.NextDouble() * 1.2 - 0.1);
+    for (int i = 0; i < values.Length; i++)
+      values[i] = (i % 7) switch
+      {
+        0 => 0.25f,
+        1 => pool[random.Next(pool.Length)],
+        2 => BitConverter.UInt32BitsToSingle(0x7FC00000u | (uint)random.Next(1 << 22)),
+        3 => BitConverter.Int32BitsToSingle(BitConverter.SingleToInt32Bits(pool[random.Next(100)]) + random.Next(-2, 3)),
+        4 => float.NaN,
+        _ => (float)random.NextDouble(),
+      };
+    var e = new DisplayEncoding(gamma, quantization);
+    var bytes = new byte[values.Length];
+    e.Encode(values, bytes);
+    for (int i = 0; i < values.Length; i++)
+      Assert.True(e.Encode(values[i]) == bytes[i], $"value {values[i]:R} at {i}");
+  }
+
   [Fact]
   public void Image_encoding_equals_the_old_entry_points()
   {
