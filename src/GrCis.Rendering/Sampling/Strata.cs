@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 using MathSupport;
 
 namespace Rendering;
@@ -99,28 +100,38 @@ public static class Strata
     w |= w >> 8;
     w |= w >> 16;
     do
-    {
-      // Every step is a bijection on the masked bits (xor with a shifted copy, odd multiply).
-      i ^= p;
-      i *= 0xE170893Du;
-      i ^= p >> 16;
-      i ^= (i & w) >> 4;
-      i ^= p >> 8;
-      i *= 0x0929EB3Fu;
-      i ^= p >> 23;
-      i ^= (i & w) >> 1;
-      i *= 1u | p >> 27;
-      i *= 0x6935FA69u;
-      i ^= (i & w) >> 11;
-      i *= 0x74DCB303u;
-      i ^= (i & w) >> 2;
-      i *= 0x9E501CC3u;
-      i ^= (i & w) >> 2;
-      i *= 0xC860A3DFu;
-      i &= w;
-      i ^= i >> 5;
-    } while (i >= length);
+      i = PermuteRound(i, w, p);
+    while (i >= length);
     return (i + p) % length;
+  }
+
+  /// <summary>
+  /// One round of <see cref="Permute"/>'s hash of <paramref name="i"/> within the all-ones mask <paramref name="w"/>
+  /// (<paramref name="p"/> the pattern); rounds repeat until the value falls inside the range (cycle walking).
+  /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  internal static uint PermuteRound(uint i, uint w, uint p)
+  {
+    // Every step is a bijection on the masked bits (xor with a shifted copy, odd multiply).
+    i ^= p;
+    i *= 0xE170893Du;
+    i ^= p >> 16;
+    i ^= (i & w) >> 4;
+    i ^= p >> 8;
+    i *= 0x0929EB3Fu;
+    i ^= p >> 23;
+    i ^= (i & w) >> 1;
+    i *= 1u | p >> 27;
+    i *= 0x6935FA69u;
+    i ^= (i & w) >> 11;
+    i *= 0x74DCB303u;
+    i ^= (i & w) >> 2;
+    i *= 0x9E501CC3u;
+    i ^= (i & w) >> 2;
+    i *= 0xC860A3DFu;
+    i &= w;
+    i ^= i >> 5;
+    return i;
   }
 
   /// <summary>A number of [0,1) hashed from (i, p), with 53 bits.</summary>

@@ -73,26 +73,8 @@ internal readonly struct StrataGrid
       return 0;
     uint w = length.Mask;
     do
-    {
-      i ^= p;
-      i *= 0xE170893Du;
-      i ^= p >> 16;
-      i ^= (i & w) >> 4;
-      i ^= p >> 8;
-      i *= 0x0929EB3Fu;
-      i ^= p >> 23;
-      i ^= (i & w) >> 1;
-      i *= 1u | p >> 27;
-      i *= 0x6935FA69u;
-      i ^= (i & w) >> 11;
-      i *= 0x74DCB303u;
-      i ^= (i & w) >> 2;
-      i *= 0x9E501CC3u;
-      i ^= (i & w) >> 2;
-      i *= 0xC860A3DFu;
-      i &= w;
-      i ^= i >> 5;
-    } while (i >= length.Value);
+      i = Strata.PermuteRound(i, w, p);
+    while (i >= length.Value);
     return length.Mod(i + p);
   }
 
