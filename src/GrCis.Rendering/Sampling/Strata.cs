@@ -93,16 +93,23 @@ public static class Strata
   {
     if (length <= 1)
       return 0;
+    uint w = RangeMask(length);
+    do
+      i = PermuteRound(i, w, p);
+    while (i >= length);
+    return (i + p) % length;
+  }
+
+  /// <summary>The smallest all-ones mask covering 0..<paramref name="length"/>−1 (the range a permutation walks in).</summary>
+  internal static uint RangeMask(uint length)
+  {
     uint w = length - 1;
     w |= w >> 1;
     w |= w >> 2;
     w |= w >> 4;
     w |= w >> 8;
     w |= w >> 16;
-    do
-      i = PermuteRound(i, w, p);
-    while (i >= length);
-    return (i + p) % length;
+    return w;
   }
 
   /// <summary>

@@ -107,13 +107,7 @@ internal readonly struct StrataGrid
       if (d == 0)
         throw new ArgumentOutOfRangeException(nameof(d), "A divisor must be positive.");
       Value = d;
-      uint w = d - 1;
-      w |= w >> 1;
-      w |= w >> 2;
-      w |= w >> 4;
-      w |= w >> 8;
-      w |= w >> 16;
-      Mask = w;
+      Mask = Strata.RangeMask(d);
       power = (d & (d - 1)) == 0;
       shift = System.Numerics.BitOperations.TrailingZeroCount(d);
       reciprocal = power ? 0UL : ulong.MaxValue / d + 1UL;
