@@ -48,11 +48,7 @@ public static class Strata
   {
     total = Math.Max(total, 1);
     rank = Math.Clamp(rank, 0, total - 1);
-    // An m×n grid with m·n = total exactly (m the largest divisor not above √total): every stratum is used.
-    int m = (int)Math.Sqrt(total);
-    while (total % m != 0)
-      m--;
-    int n = total / m;
+    int m = GridColumns(total), n = total / m;
 
     uint s = Permute((uint)rank, (uint)total, pattern * 0x51633E2Du);
     uint column = s % (uint)m, row = s / (uint)m;
@@ -62,6 +58,18 @@ public static class Strata
     double jy = Jitter(s, pattern * 0x3C6EF372u);
     u = (column + (sy + jx) / n) / m;
     v = (row + (sx + jy) / m) / n;
+  }
+
+  /// <summary>
+  /// The columns m of the m×n grid of <paramref name="total"/> samples (total ≥ 1): m·n = total exactly, m the largest
+  /// divisor not above √total, so every stratum is used.
+  /// </summary>
+  internal static int GridColumns(int total)
+  {
+    int m = (int)Math.Sqrt(total);
+    while (total % m != 0)
+      m--;
+    return m;
   }
 
   /// <summary>The pattern of a dimension in the current pixel: a hash of seed, frame, pixel and dimension.</summary>
@@ -142,7 +150,7 @@ public static class Strata
   }
 
   /// <summary>A number of [0,1) hashed from (i, p), with 53 bits.</summary>
-  static double Jitter(uint i, uint p)
+  internal static double Jitter(uint i, uint p)
   {
     ulong h = RandomStatic.Mix64((ulong)p << 32 | i);
     return (h >> 11) * (1.0 / (1UL << 53));

@@ -1,5 +1,4 @@
 using System;
-using MathSupport;
 
 namespace Rendering;
 
@@ -25,13 +24,11 @@ internal readonly struct StrataGrid
   public StrataGrid(int count)
   {
     Total = Math.Max(count, 1);
-    // The grid of Strata.Sample2D: m the largest divisor of the count not above its square root.
-    int rows = (int)Math.Sqrt(Total);
-    while (Total % rows != 0)
-      rows--;
+    // The grid of Strata.Sample2D.
+    int columns = Strata.GridColumns(Total);
     total = new Divisor((uint)Total);
-    m = new Divisor((uint)rows);
-    n = new Divisor((uint)(Total / rows));
+    m = new Divisor((uint)columns);
+    n = new Divisor((uint)(Total / columns));
     powers = m.IsPowerOfTwo && n.IsPowerOfTwo;
     inverseTotal = 1.0 / Total;
     inverseM = 1.0 / m.Value;
@@ -42,7 +39,7 @@ internal readonly struct StrataGrid
   public double Sample1D(int rank, uint pattern)
   {
     uint s = Permute((uint)Math.Clamp(rank, 0, Total - 1), total, pattern * 0x51633E2Du);
-    double x = s + Jitter(s, pattern * 0x68BC21EBu);
+    double x = s + Strata.Jitter(s, pattern * 0x68BC21EBu);
     return powers ? x * inverseTotal : x / Total;
   }
 
@@ -53,8 +50,8 @@ internal readonly struct StrataGrid
     uint row = m.Div(s), column = s - row * m.Value;
     uint sx = Permute(column, m, pattern * 0x68BC21EBu);
     uint sy = Permute(row, n, pattern * 0x02E5BE93u);
-    double jx = Jitter(s, pattern * 0x967A889Bu);
-    double jy = Jitter(s, pattern * 0x3C6EF372u);
+    double jx = Strata.Jitter(s, pattern * 0x967A889Bu);
+    double jy = Strata.Jitter(s, pattern * 0x3C6EF372u);
     if (powers)
     {
       u = (column + (sy + jx) * inverseN) * inverseM;
@@ -76,12 +73,6 @@ internal readonly struct StrataGrid
       i = Strata.PermuteRound(i, w, p);
     while (i >= length.Value);
     return length.Mod(i + p);
-  }
-
-  static double Jitter(uint i, uint p)
-  {
-    ulong h = RandomStatic.Mix64((ulong)p << 32 | i);
-    return (h >> 11) * (1.0 / (1UL << 53));
   }
 
   /// <summary>
