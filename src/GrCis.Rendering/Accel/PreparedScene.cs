@@ -43,7 +43,7 @@ public sealed partial class PreparedScene : ISceneQuery
   readonly PreparedMember[] members;
   readonly Matrix4d[] chain;
   readonly int[] always;
-  // Some member of always has a line box (LineMisses); else Open needs no reciprocals of the direction.
+  // Some member in `always` has a line box (LineMisses); else Open needs no reciprocals of the direction.
   readonly bool lineBoxes;
   readonly RectangleCull? rectangles;
   readonly SphereCull? spheres;
