@@ -8,7 +8,7 @@
 # reference; rmse_le1: only pixels whose reference is <= 1 (pfm_error.py --exclude-above 1).
 # The reference is Cycles at REF_SPP with seed 1000 (test renders use seed 0), rendered once and kept
 # in OUTDIR. Settings through the environment (defaults in brackets):
-#   THREADS [2]  SPP ["16 64 256"]  REF_SPP [2048]  VARIANTS ["diffuse spheres"]
+#   THREADS [2]  SPP ["16 64 256"]  REF_SPP [8192, the reference issue 26 names]  VARIANTS ["diffuse spheres"]
 #   OUTDIR [bench/results/cornell-work]  CORNELL_DIR [../shared/bench/cornell beside the repository]
 #   OURS_EXTRA_SPP [1024] (one more of ours, for its converged mean; empty: none)
 #   REPEAT [1] (renders per renderer and sample count, alternating; render_s is their median, all in times)
@@ -18,7 +18,7 @@ set -euo pipefail
 
 THREADS=${THREADS:-2}
 SPP=${SPP:-"16 64 256"}
-REF_SPP=${REF_SPP:-2048}
+REF_SPP=${REF_SPP:-8192}
 VARIANTS=${VARIANTS:-"diffuse spheres"}
 OURS_EXTRA_SPP=${OURS_EXTRA_SPP-1024}
 REPEAT=${REPEAT:-1}

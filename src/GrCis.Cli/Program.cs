@@ -15,6 +15,7 @@ public static class Program
 {
   public static int Main(string[] args)
   {
+    StartupProfile.Start(args);
     using var interrupt = new InterruptGuard(Console.Error);
     var env = new CliEnvironment(Console.Out, Console.Error)
     {

@@ -1,0 +1,97 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using GrCis.Scripting.Caching;
+
+namespace GrCis.Cli.Tests;
+
+public class StartupProfileTests
+{
+  [Theory]
+  [InlineData(true, "render", "fiveballs", "-o", "a.png")]
+  [InlineData(true, "animate", "Five balls")]
+  [InlineData(true, "bench")]
+  [InlineData(true, "list")]
+  [InlineData(false, "render", "scene.cs")]
+  [InlineData(true, "render", "fiveballs", "-o", "scene.cs.png")]
+  [InlineData(false, "render", "fiveballs", "--no-cache")]
+  [InlineData(false, "animate", "Anim.CS")]
+  [InlineData(false, "studio")]
+  [InlineData(false, "init", "folder")]
+  [InlineData(false, "--help")]
+  [InlineData(false, "rendr", "fiveballs")]
+  [InlineData(false)]
+  public void Commands_get_a_profile_unless_they_run_a_script_or_skip_the_cache(bool expected, params string[] args)
+  {
+    Assert.Equal(expected, StartupProfile.Applies(args));
+  }
+
+  [Fact]
+  public void Profile_is_named_by_the_command_and_the_build()
+  {
+    Assert.Equal("render-0123abcd" + StartupProfile.Extension, StartupProfile.FileName("render", "0123abcd"));
+  }
+
+  [Fact]
+  public void Build_id_is_sixteen_hex_digits_and_stable_within_a_build()
+  {
+    string id = StartupProfile.BuildId();
+    Assert.Matches("^[0-9a-f]{16}$", id);
+    Assert.Equal(id, StartupProfile.BuildId());
+  }
+
+  [Fact]
+  public void Pruning_keeps_the_most_recently_written_profiles_and_other_files()
+  {
+    using var dir = new TempDirectory();
+    DateTime now = DateTime.UtcNow;
+    for (int i = 0; i < 20; i++)
+    {
+      string f = dir.File($"render-{i:x16}{StartupProfile.Extension}");
+      File.WriteAllText(f, "x");
+      File.SetLastWriteTimeUtc(f, now.AddMinutes(-i));
+    }
+    File.WriteAllText(dir.File("other.txt"), "kept");
+    File.SetLastWriteTimeUtc(dir.File("other.txt"), now.AddDays(-1));
+
+    StartupProfile.Prune(dir.Path, StartupProfile.Kept);
+
+    string[] left = Directory.GetFiles(dir.Path, "*" + StartupProfile.Extension).Select(Path.GetFileName).Order().ToArray()!;
+    Assert.Equal(Enumerable.Range(0, StartupProfile.Kept).Select(i => $"render-{i:x16}{StartupProfile.Extension}").Order(), left);
+    Assert.True(File.Exists(dir.File("other.txt")));
+  }
+
+  [Fact]
+  public void A_run_records_its_command_s_profile_in_the_cache_folder_and_the_next_one_rewrites_it()
+  {
+    using var dir = new TempDirectory();
+    string cache = dir.File("cache");
+    var env = new Dictionary<string, string> { [ScriptCache.DirectoryVariable] = cache };
+    for (int run = 0; run < 2; run++)
+    {
+      var r = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, env, "render", "fiveballs", "--size", "16x12", "-q", "-o", "a.png"));
+      Assert.True(r.Code == 0, r.Error);
+      string[] profiles = Directory.GetFiles(Path.Combine(cache, "startup"), "*" + StartupProfile.Extension);
+      Assert.Single(profiles);
+      Assert.StartsWith("render-", Path.GetFileName(profiles[0]));
+      Assert.True(new FileInfo(profiles[0]).Length > 0);
+    }
+  }
+
+  [Theory]
+  [InlineData(true, false)]
+  [InlineData(false, true)]
+  public void No_profile_is_written_when_the_cache_is_off(bool noCacheVariable, bool noCacheOption)
+  {
+    using var dir = new TempDirectory();
+    string cache = dir.File("cache");
+    var env = new Dictionary<string, string> { [ScriptCache.DirectoryVariable] = cache };
+    if (noCacheVariable)
+      env[ScriptCache.DisableVariable] = "1";
+    string[] args = ["info", "fiveballs", .. noCacheOption ? new[] { "--no-cache" } : []];
+    var r = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, env, args));
+    Assert.True(r.Code == 0, r.Error);
+    Assert.False(Directory.Exists(Path.Combine(cache, "startup")));
+  }
+}
