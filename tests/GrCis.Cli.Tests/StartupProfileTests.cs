@@ -94,4 +94,40 @@ public class StartupProfileTests
     Assert.True(r.Code == 0, r.Error);
     Assert.False(Directory.Exists(Path.Combine(cache, "startup")));
   }
+  [Theory]
+  [InlineData("random")]
+  [InlineData("cut")]
+  [InlineData("flipped")]
+  public void A_damaged_profile_costs_nothing_but_its_speed_up(string damage)
+  {
+    using var dir = new TempDirectory();
+    string cache = dir.File("cache");
+    var cached = new Dictionary<string, string> { [ScriptCache.DirectoryVariable] = cache };
+    string[] render = ["render", "fiveballs", "--size", "32x24", "--spp", "4", "-q"];
+    var first = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, cached, [.. render, "-o", "first.png"]));
+    Assert.True(first.Code == 0, first.Error);
+    string profile = Assert.Single(Directory.GetFiles(Path.Combine(cache, "startup"), "render-*" + StartupProfile.Extension));
+    byte[] bytes = File.ReadAllBytes(profile);
+    var random = new Random(7);
+    switch (damage)
+    {
+      case "random":
+        random.NextBytes(bytes);
+        break;
+      case "cut":
+        bytes = bytes[..(bytes.Length / 2 + 3)];
+        break;
+      default:
+        // The header stays; records after it get random bits.
+        for (int i = 64; i < bytes.Length; i += 1 + random.Next(40))
+          bytes[i] ^= (byte)(1 << random.Next(8));
+        break;
+    }
+    File.WriteAllBytes(profile, bytes);
+
+    var damaged = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, cached, [.. render, "-o", "damaged.png"]));
+
+    Assert.True(damaged.Code == 0, damaged.Error);
+    Assert.Equal(File.ReadAllBytes(dir.File("first.png")), File.ReadAllBytes(dir.File("damaged.png")));
+  }
 }
