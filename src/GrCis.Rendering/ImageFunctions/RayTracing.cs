@@ -181,6 +181,8 @@ public class RayTracing : RayCasting
 
     double[] comp = scratch.Buffer(depth, bands);
     Vector3d origin = i.CoordWorld;
+    Vector3d viewerUnit = default;
+    bool haveUnit = false;
 
     if (DoReflections)
     {
@@ -191,7 +193,15 @@ public class RayTracing : RayCasting
       if (LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial pm && pm.Color.Length is > 0 and <= 16)
       {
         Span<double> k = ksBuffer[..pm.Color.Length];
-        PhongModel.ColorReflection(pm, i.Normal, viewer, r, ReflectionComponent.SPECULAR_REFLECTION, k);
+        if (viewer.X == 0.0 && viewer.Y == 0.0 && viewer.Z == 0.0)
+          PhongModel.ColorReflection(pm, i.Normal, viewer, r, ReflectionComponent.SPECULAR_REFLECTION, k);
+        else
+        {
+          // The model's normalized input, kept for the refracted direction (which normalizes the same vector).
+          viewerUnit = viewer.Normalized();
+          haveUnit = true;
+          PhongModel.Directional(pm, i.Normal, viewerUnit, r, ReflectionComponent.SPECULAR_REFLECTION, k);
+        }
         ks = k;
         have = true;
       }
@@ -206,7 +216,14 @@ public class RayTracing : RayCasting
       {
         double maxK = ks[0];
         for (int b = 1; b < ks.Length; b++)
-          maxK = Math.Max(maxK, ks[b]);
+        {
+          // Math.Max's answer; its NaN and signed-zero rules only where they can matter (the bands are often equal).
+          double k = ks[b];
+          if (k > maxK)
+            maxK = k;
+          else if (!(k < maxK) && (k != maxK || k == 0.0))
+            maxK = Math.Max(maxK, k);
+        }
         double newImportance = importance * maxK;
         if (newImportance >= MinImportance)
         {
@@ -234,7 +251,9 @@ public class RayTracing : RayCasting
       double newImportance = importance * kt;
       if (newImportance < MinImportance)
         goto done;
-      Vector3d r = Geometry.SpecularRefraction(i.Normal, i.Material.n, viewer);
+      Vector3d r = haveUnit
+        ? Geometry.SpecularRefractionUnit(i.Normal, i.Material.n, viewerUnit)
+        : Geometry.SpecularRefraction(i.Normal, i.Material.n, viewer);
       if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0 || !RefractionDirection(i, r, depth, out r))
         goto done;
       if (observer != null)
@@ -339,8 +358,16 @@ public class RayTracing : RayCasting
     {
       Span<double> r = buffer[..surface.Length];
       PhongModel.ColorReflection((PhongMaterial)i.Material!, i.Normal, dir, viewer, ReflectionComponent.ALL, r);
-      for (int b = 0; b < color.Length; b++)
-        color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * r[Math.Min(b, r.Length - 1)];
+      if (intensity.Length >= color.Length && r.Length >= color.Length)
+      {
+        // Every band has its own values (the common case): no index clamps.
+        ReadOnlySpan<double> light = intensity.AsSpan(0, color.Length), reflected = r[..color.Length];
+        for (int b = 0; b < color.Length; b++)
+          color[b] += transmit * light[b] * reflected[b];
+      }
+      else
+        for (int b = 0; b < color.Length; b++)
+          color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * r[Math.Min(b, r.Length - 1)];
     }
     else
     {

@@ -26,8 +26,17 @@ public static partial class Geometry
   /// </summary>
   public static Vector3d SpecularRefraction(Vector3d normal, double n, Vector3d input)
   {
-    normal.Normalize();
     input.Normalize();
+    return SpecularRefractionUnit(normal, n, input);
+  }
+
+  /// <summary>
+  /// <see cref="SpecularRefraction"/> of an input already normalized by <see cref="Vector3d.Normalize()"/> (the same
+  /// value: a caller that has it saves the square root and division).
+  /// </summary>
+  internal static Vector3d SpecularRefractionUnit(Vector3d normal, double n, Vector3d input)
+  {
+    normal.Normalize();
     double d = Vector3d.Dot(normal, input);
     if (d < 0.0)
     {
