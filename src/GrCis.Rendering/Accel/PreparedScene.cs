@@ -238,7 +238,9 @@ public sealed partial class PreparedScene : ISceneQuery
       return OccludedSingle(p0, dir, len2);
 
     // Hits beyond 1 + RAY_EPSILON/|dir| are Far(1): prune them (with a little slack, tested exactly below).
-    double bound = 1.0 + Intersection.RAY_EPSILON / Math.Sqrt(len2);
+    // 1/|dir| once for both bounds (a few ulps off the quotients, far inside their slack).
+    double invLength = 1.0 / Math.Sqrt(len2);
+    double bound = 1.0 + Intersection.RAY_EPSILON * invLength;
     bound += bound * 1.0e-12;
     Unsafe.SkipInit(out Query q);
     q.Start(len2, bound);
@@ -248,7 +250,7 @@ public sealed partial class PreparedScene : ISceneQuery
       // With no NO_SHADOW solid, a blocker that is not far decides, once no member is inside at the origin:
       // every member's first record is then an entry, so the union's first record is no later than it.
       q.Any = true;
-      q.AnyBound = 1.001 * Intersection.RAY_EPSILON / Math.Sqrt(len2);
+      q.AnyBound = 1.001 * Intersection.RAY_EPSILON * invLength;
       if (!Closest(ref q, ref list, p0, dir))
         return ListOccluded(p0, dir);
       if (!q.Found)

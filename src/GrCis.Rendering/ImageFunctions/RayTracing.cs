@@ -245,15 +245,16 @@ public class RayTracing : RayCasting
 
     if (DoRefractions)
     {
-      double kt = i.Material!.Kt;
+      IMaterial material = i.Material!;
+      double kt = Kt(material);
       if (FresnelRefraction && kt > 0.0)
-        kt *= 1.0 - SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), i.Material.n);
+        kt *= 1.0 - SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), Index(material));
       double newImportance = importance * kt;
       if (newImportance < MinImportance)
         goto done;
       Vector3d r = haveUnit
-        ? Geometry.SpecularRefractionUnit(i.Normal, i.Material.n, viewerUnit)
-        : Geometry.SpecularRefraction(i.Normal, i.Material.n, viewer);
+        ? Geometry.SpecularRefractionUnit(i.Normal, Index(material), viewerUnit)
+        : Geometry.SpecularRefraction(i.Normal, Index(material), viewer);
       if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0 || !RefractionDirection(i, r, depth, out r))
         goto done;
       if (observer != null)
@@ -268,6 +269,15 @@ public class RayTracing : RayCasting
     observer?.EndRay(kind, rayDepth, p0, p1, i);
     return hash;
   }
+
+  // A material's Kt and index: the shading's scratch copy (exactly a PhongMaterial) without an interface call.
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  static double Kt(IMaterial m) =>
+    m.GetType() == typeof(PhongMaterial) ? System.Runtime.CompilerServices.Unsafe.As<PhongMaterial>(m).Kt : m.Kt;
+
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  static double Index(IMaterial m) =>
+    m.GetType() == typeof(PhongMaterial) ? System.Runtime.CompilerServices.Unsafe.As<PhongMaterial>(m).n : m.n;
 
   /// <summary>
   /// The direction of the reflected ray at hit <paramref name="i"/> (its recursion depth <paramref name="depth"/>),
@@ -400,6 +410,7 @@ public class RayTracing : RayCasting
   }
 
   /// <summary>Zeroes a colour of a few bands inline (Array.Clear's call costs more than three stores).</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal static void Zero(double[] color)
   {
     for (int b = 0; b < color.Length; b++)

@@ -7,6 +7,7 @@ namespace MathSupport;
 public static partial class Geometry
 {
   /// <summary>Mirror of <paramref name="input"/> about <paramref name="normal"/>: 2(n·i)n − i.</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public static void SpecularReflection(ref Vector3d normal, ref Vector3d input, out Vector3d output)
   {
     double k = Vector3d.Dot(normal, input);
