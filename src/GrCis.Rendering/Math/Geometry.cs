@@ -35,6 +35,7 @@ public static partial class Geometry
   /// <see cref="SpecularRefraction"/> of an input already normalized by <see cref="Vector3d.Normalize()"/> (the same
   /// value: a caller that has it saves the square root and division).
   /// </summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]   // no reload of a returned vector
   internal static Vector3d SpecularRefractionUnit(Vector3d normal, double n, Vector3d input)
   {
     normal.Normalize();
