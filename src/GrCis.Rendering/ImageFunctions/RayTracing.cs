@@ -214,17 +214,7 @@ public class RayTracing : RayCasting
       }
       if (have)
       {
-        double maxK = ks[0];
-        for (int b = 1; b < ks.Length; b++)
-        {
-          // Math.Max's answer; its NaN and signed-zero rules only where they can matter (the bands are often equal).
-          double k = ks[b];
-          if (k > maxK)
-            maxK = k;
-          else if (!(k < maxK) && (k != maxK || k == 0.0))
-            maxK = Math.Max(maxK, k);
-        }
-        double newImportance = importance * maxK;
+        double newImportance = importance * MaxBand(ks);
         if (newImportance >= MinImportance)
         {
           if (ReflectionDirection(i, r, depth, out Vector3d reflected))
@@ -268,6 +258,24 @@ public class RayTracing : RayCasting
     // until the next ray at this depth).
     observer?.EndRay(kind, rayDepth, p0, p1, i);
     return hash;
+  }
+
+  /// <summary>
+  /// The largest band, as folding <see cref="Math.Max(double, double)"/> from band 0 gives it; its NaN and signed-zero
+  /// rules are applied only where they can matter (a Phong reflectance has all bands equal).
+  /// </summary>
+  internal static double MaxBand(ReadOnlySpan<double> bands)
+  {
+    double max = bands[0];
+    for (int b = 1; b < bands.Length; b++)
+    {
+      double k = bands[b];
+      if (k > max)
+        max = k;
+      else if (!(k < max) && (k != max || k == 0.0))
+        max = Math.Max(max, k);
+    }
+    return max;
   }
 
   // A material's Kt and index: the shading's scratch copy (exactly a PhongMaterial) without an interface call.
