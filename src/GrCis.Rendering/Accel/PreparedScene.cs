@@ -238,8 +238,8 @@ public sealed partial class PreparedScene : ISceneQuery
       return OccludedSingle(p0, dir, len2);
 
     // Hits beyond 1 + RAY_EPSILON/|dir| are Far(1): prune them (with a little slack, tested exactly below).
-    // 1/|dir| once for both bounds (a few ulps off the quotients, far inside their slack).
-    double invLength = 1.0 / Math.Sqrt(len2);
+    // Both bounds from an upper bound on 1/|dir| (they may only be larger: more is tested exactly, nothing is lost).
+    double invLength = CullBounds.UpperInverseLength(len2);
     double bound = 1.0 + Intersection.RAY_EPSILON * invLength;
     bound += bound * 1.0e-12;
     Unsafe.SkipInit(out Query q);
