@@ -6,7 +6,7 @@ using Rendering.Accel;
 
 namespace Rendering;
 
-/// <summary>The lights and mirror of <see cref="RayTracing"/>'s shading: one light's direct contribution, the shadow transmittance, the mirror's reflectance.</summary>
+// RayTracing's lights: one light's direct contribution, the shadow transmittance, and the bands of the mirror's reflectance.
 public partial class RayTracing
 {
   /// <summary>
