@@ -16,19 +16,19 @@ public sealed partial class PreparedScene
   /// skipped only when it can neither win nor contain the origin). Bounded members go before the rectangles: a hit
   /// on one of them lets the rectangle cull dismiss the walls behind it without their exact test.
   /// </remarks>
-  bool Closest(ref Query q, in Vector3d p0, in Vector3d p1)
+  bool Closest(ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
-    if (always.Length > 0 && !Open(ref q, p0, p1))
+    if (always.Length > 0 && !Open(ref q, ref list, p0, p1))
       return false;
-    if (bvh != null && !Bounded(ref q, p0, p1))
+    if (bvh != null && !Bounded(ref q, ref list, p0, p1))
       return false;
-    if (spheres != null && !Balls(ref q, p0, p1))
+    if (spheres != null && !Balls(ref q, ref list, p0, p1))
       return false;
-    return rectangles == null || Rectangles(ref q, p0, p1);
+    return rectangles == null || Rectangles(ref q, ref list, p0, p1);
   }
 
   /// <summary>The closed members of a small scene (balls), four at a time; only those the cull cannot dismiss are tested.</summary>
-  bool Balls(ref Query q, in Vector3d p0, in Vector3d p1)
+  bool Balls(ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
     Vector256<double> vox = Vector256.Create(p0.X), voy = Vector256.Create(p0.Y), voz = Vector256.Create(p0.Z);
     Vector256<double> vdx = Vector256.Create(p1.X), vdy = Vector256.Create(p1.Y), vdz = Vector256.Create(p1.Z);
@@ -37,14 +37,14 @@ public sealed partial class PreparedScene
     {
       ref readonly SphereCull.Group group = ref groups[g];
       for (int mask = SphereCull.MustTest(group, vox, voy, voz, vdx, vdy, vdz, q.Len2, q.BestT); mask != 0; mask &= mask - 1)
-        if (!TestMember(group.Member[BitOperations.TrailingZeroCount(mask)], ref q, p0, p1))
+        if (!TestMember(group.Member[BitOperations.TrailingZeroCount(mask)], ref q, ref list, p0, p1))
           return false;
     }
     return true;
   }
 
   /// <summary>The open members other than the culled rectangles, each tested unless its line box is missed.</summary>
-  bool Open(ref Query q, in Vector3d p0, in Vector3d p1)
+  bool Open(ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
     // The whole-line test of a bounded plane needs every slab: a zero component would turn one into a half-line.
     // The reciprocals only when some member has a line box (an infinite plane has none).
@@ -64,14 +64,14 @@ public sealed partial class PreparedScene
       // A plane the ray leaves upwards (from above it, or from on it) has nothing to report (exact: conservative).
       if (members[item].HasPlaneZ && PlaneCull.Leaves(members[item], p0, p1, q.Len2))
         continue;
-      if (!TestMember(item, ref q, p0, p1))
+      if (!TestMember(item, ref q, ref list, p0, p1))
         return false;
     }
     return true;
   }
 
   /// <summary>The rectangles, four at a time in world space; only those the estimate cannot dismiss go through their chain.</summary>
-  bool Rectangles(ref Query q, in Vector3d p0, in Vector3d p1)
+  bool Rectangles(ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
     Vector256<double> vox = Vector256.Create(p0.X), voy = Vector256.Create(p0.Y), voz = Vector256.Create(p0.Z);
     Vector256<double> vdx = Vector256.Create(p1.X), vdy = Vector256.Create(p1.Y), vdz = Vector256.Create(p1.Z);
@@ -83,7 +83,7 @@ public sealed partial class PreparedScene
     {
       ref readonly RectangleCull.Group group = ref groups[g];
       for (int mask = RectangleCull.MustTest(group, vox, voy, voz, vdx, vdy, vdz, scale, dirScale, accept, q.BestT); mask != 0; mask &= mask - 1)
-        if (!TestMember(group.Member[BitOperations.TrailingZeroCount(mask)], ref q, p0, p1))
+        if (!TestMember(group.Member[BitOperations.TrailingZeroCount(mask)], ref q, ref list, p0, p1))
           return false;
     }
     return true;
@@ -92,7 +92,7 @@ public sealed partial class PreparedScene
   /// <summary>The closed members, through the BVH.</summary>
   /// <remarks>The traversal stack is written before it is read: no zeroing of it per ray.</remarks>
   [SkipLocalsInit]
-  bool Bounded(ref Query q, in Vector3d p0, in Vector3d p1)
+  bool Bounded(ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
     // Zero direction components become tiny ones: no NaN from 0 · ∞ in the slab test, and the
     // padded boxes absorb the difference.
@@ -153,7 +153,7 @@ public sealed partial class PreparedScene
           // A clear miss of the member's world bounding sphere skips its transform chain (exact: conservative).
           if (members[item].CullRadius2 > 0.0 && MissesSphere(members[item], p0, p1))
             continue;
-          if (!TestMember(item, ref q, p0, p1))
+          if (!TestMember(item, ref q, ref list, p0, p1))
             return false;
         }
       }
@@ -195,7 +195,7 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>Tests one member; false when the fast rule does not apply to this ray.</summary>
-  bool TestMember(int index, ref Query q, in Vector3d p0, in Vector3d p1)
+  bool TestMember(int index, ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
     ref PreparedMember m = ref members[index];
     Vector3d lp0 = p0, lp1 = p1;
@@ -204,9 +204,11 @@ public sealed partial class PreparedScene
     if (m.RecordSolid != null || m.Csg != null)
     {
       bool has;
-      SolidRecord h;
       bool inside;
       int leaf = -1;
+      // The kernel writes into the query's free slot; a winner takes the slot instead of a copy (a wide copy right
+      // after the kernel's scalar stores would wait for them).
+      ref SolidRecord h = ref q.Free;
       if (m.RecordSolid != null)
         has = m.RecordSolid.IntersectFirst(lp0, lp1, q.Len2, out h, out inside);
       else
@@ -224,7 +226,7 @@ public sealed partial class PreparedScene
         q.InsideIndex = index;
         q.InsideLeaf = leaf;
         q.InsideT = h.T;
-        q.InsideHit = h;
+        q.TakeInside();
         if (h.T < q.BestT)
           q.BestT = h.T;
         return true;
@@ -236,8 +238,8 @@ public sealed partial class PreparedScene
         q.EntryT = h.T;
         q.BestIndex = index;
         q.BestLeaf = leaf;
-        q.BestHit = h;
-        q.BestList = null;
+        q.TakeBest();
+        list = null;
         if (h.T < q.BestT)
           q.BestT = h.T;
       }
@@ -252,11 +254,11 @@ public sealed partial class PreparedScene
     }
 
     // A leaf answering through the LinkedList API (allocates; always correct).
-    LinkedList<Intersection>? list = m.Node.Intersect(lp0, lp1);
-    if (list == null || list.First == null)
+    LinkedList<Intersection>? records = m.Node.Intersect(lp0, lp1);
+    if (records == null || records.First == null)
       return true;
-    bool state = !list.First.Value.Enter;
-    foreach (Intersection i in list)
+    bool state = !records.First.Value.Enter;
+    foreach (Intersection i in records)
     {
       if (i.T > 0.0 && i.T * i.T * q.Len2 > Intersection.RAY_EPSILON2)
       {
@@ -269,7 +271,7 @@ public sealed partial class PreparedScene
             q.BestT = i.T;
           q.BestIndex = index;
           q.BestLeaf = -1;
-          q.BestList = i;
+          list = i;
         }
         return true;
       }

@@ -142,34 +142,6 @@ public sealed partial class PreparedScene : ISceneQuery
 
   // ---------------------------------------------------------------- queries
 
-  /// <summary>State of one closest-hit query.</summary>
-  struct Query
-  {
-    public double Len2;
-    /// <summary>Pruning bound: min(EntryT, InsideT).</summary>
-    public double BestT;
-
-    // The first entry over members that start outside.
-    public double EntryT;
-    public int BestIndex;
-    /// <summary>Leaf of a CSG member's record (-1: the member's own solid).</summary>
-    public int BestLeaf;
-    public SolidRecord BestHit;
-    public Intersection? BestList;
-
-    // The one member the ray starts inside (-1: none) and its first valid record, an exit.
-    public int InsideIndex;
-    public int InsideLeaf;
-    public double InsideT;
-    public SolidRecord InsideHit;
-
-    // Shadow queries: stop at the first blocker (Found), then only members that may contain the origin are visited.
-    public bool Any;
-    public bool Found;
-    /// <summary>Just above the smallest accepted t: members whose boxes start beyond it cannot contain the origin.</summary>
-    public double AnyBound;
-  }
-
   /// <summary>
   /// The hit <see cref="Intersection.FirstIntersection"/> would pick from the scene's list, completed
   /// with cached matrices (list members' hits are left to <see cref="Intersection.Complete"/>), or null.
@@ -195,6 +167,7 @@ public sealed partial class PreparedScene : ISceneQuery
   /// <see cref="FirstHit(Vector3d, Vector3d, Intersection?)"/>; with <paramref name="surfaceOnly"/> (only the library's own
   /// shading will read the hit) members that allow it are completed leanly (<see cref="HitCompletion"/>).
   /// </summary>
+  [SkipLocalsInit]   // the query is started field by field, not zeroed
   internal Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse, bool surfaceOnly)
   {
     if (members.Length == 0)
@@ -203,8 +176,10 @@ public sealed partial class PreparedScene : ISceneQuery
     if (!union)
       return FirstHitSingle(p0, p1, len2, reuse, surfaceOnly);
 
-    var q = NewQuery(len2, double.PositiveInfinity);
-    if (!Closest(ref q, p0, p1))
+    Unsafe.SkipInit(out Query q);
+    q.Start(len2, double.PositiveInfinity);
+    Intersection? list = null;
+    if (!Closest(ref q, ref list, p0, p1))
       return ListFirstHit(p0, p1);
     if (q.InsideIndex >= 0)
     {
@@ -216,7 +191,7 @@ public sealed partial class PreparedScene : ISceneQuery
     }
     if (q.BestIndex == int.MaxValue)
       return null;
-    return q.BestList ?? Complete(ref Solid(q.BestIndex, q.BestLeaf), q.BestHit, reuse, surfaceOnly);
+    return list ?? Complete(ref Solid(q.BestIndex, q.BestLeaf), q.BestHit, reuse, surfaceOnly);
   }
 
   /// <summary>The solid a record belongs to: the member itself, or leaf <paramref name="leaf"/> of its CSG kernel.</summary>
@@ -253,6 +228,7 @@ public sealed partial class PreparedScene : ISceneQuery
   /// True when a hit not marked NO_SHADOW lies between <paramref name="p0"/> and <c>p0 + dir</c>
   /// (the faithful rule: FirstRealIntersection, then not <see cref="Intersection.Far"/>(1)).
   /// </summary>
+  [SkipLocalsInit]   // the query is started field by field, not zeroed
   public bool Occluded(Vector3d p0, Vector3d dir)
   {
     if (members.Length == 0)
@@ -262,31 +238,36 @@ public sealed partial class PreparedScene : ISceneQuery
       return OccludedSingle(p0, dir, len2);
 
     // Hits beyond 1 + RAY_EPSILON/|dir| are Far(1): prune them (with a little slack, tested exactly below).
-    double bound = 1.0 + Intersection.RAY_EPSILON / Math.Sqrt(len2);
+    // Both bounds from an upper bound on 1/|dir| (they may only be larger: more is tested exactly, nothing is lost).
+    double invLength = CullBounds.UpperInverseLength(len2);
+    double bound = 1.0 + Intersection.RAY_EPSILON * invLength;
     bound += bound * 1.0e-12;
-    var q = NewQuery(len2, bound);
+    Unsafe.SkipInit(out Query q);
+    q.Start(len2, bound);
+    Intersection? list = null;
     if (anyHit)
     {
       // With no NO_SHADOW solid, a blocker that is not far decides, once no member is inside at the origin:
       // every member's first record is then an entry, so the union's first record is no later than it.
       q.Any = true;
-      q.AnyBound = 1.001 * Intersection.RAY_EPSILON / Math.Sqrt(len2);
-      if (!Closest(ref q, p0, dir))
+      q.AnyBound = 1.001 * Intersection.RAY_EPSILON * invLength;
+      if (!Closest(ref q, ref list, p0, dir))
         return ListOccluded(p0, dir);
       if (!q.Found)
-        return Decide(ref q, p0, dir, len2);
+        return Decide(ref q, list, p0, dir, len2);
       if (q.InsideIndex < 0)
         return true;
       // Inside a member: the closest-record rule decides, as without the shortcut.
-      q = NewQuery(len2, bound);
+      q.Start(len2, bound);
+      list = null;
     }
-    if (!Closest(ref q, p0, dir))
+    if (!Closest(ref q, ref list, p0, dir))
       return ListOccluded(p0, dir);
-    return Decide(ref q, p0, dir, len2);
+    return Decide(ref q, list, p0, dir, len2);
   }
 
   /// <summary>The shadow answer from a completed closest-record query.</summary>
-  bool Decide(ref Query q, Vector3d p0, Vector3d dir, double len2)
+  bool Decide(ref Query q, Intersection? list, Vector3d p0, Vector3d dir, double len2)
   {
     if (q.InsideIndex >= 0)
     {
@@ -297,24 +278,13 @@ public sealed partial class PreparedScene : ISceneQuery
     if (q.BestIndex == int.MaxValue)
       return false;
 
-    bool noShadow = q.BestList != null
-      ? q.BestList.Solid != null && q.BestList.Solid.GetLocalAttribute(PropertyName.NO_SHADOW) != null
+    bool noShadow = list != null
+      ? list.Solid != null && list.Solid.GetLocalAttribute(PropertyName.NO_SHADOW) != null
       : Solid(q.BestIndex, q.BestLeaf).NoShadow;
     if (noShadow)
       return ListOccluded(p0, dir);
     return NotFar(q.EntryT, len2);
   }
-
-  static Query NewQuery(double len2, double bound) => new()
-  {
-    Len2 = len2,
-    BestT = bound,
-    EntryT = bound,
-    BestIndex = int.MaxValue,
-    BestLeaf = -1,
-    InsideIndex = -1,
-    InsideLeaf = -1,
-  };
 
   static bool NotFar(double t, double len2)
   {

@@ -98,20 +98,21 @@ internal sealed class SphereCull
       return 0;
     // Only for a line near some ball (most rays of a small scene miss them all): |d|, and the bound
     // max(best t so far, just above the smallest accepted t).
-    double length = Math.Sqrt(dd);
-    double bound = Math.Max(bestT, 1.001 * Intersection.RAY_EPSILON / length);
+    // One division: 1/|d| and its square stand for the quotients (a few ulps off, far inside the margins below).
+    double invLength = 1.0 / Math.Sqrt(dd);
+    double bound = Math.Max(bestT, 1.001 * Intersection.RAY_EPSILON * invLength);
 
     // Where the line crosses the ball, t ∈ [(b − s)/dd, (b + s)/dd]; the slack covers the rounding of both ends
     // (relative to the magnitudes |oc|·|d| ≤ |oc|₁·|d|, r·|d|, |b| and s the terms carry) by a wide margin.
     Vector256<double> s = Vector256.Sqrt(Vector256.Max(bb - vdd * c, Vector256<double>.Zero));
-    Vector256<double> inv = Vector256.Create(1.0 / dd), len = Vector256.Create(length);
+    Vector256<double> inv = Vector256.Create(invLength * invLength), len = Vector256.Create(Math.Sqrt(dd));
     Vector256<double> scale = (Vector256.Abs(cx) + Vector256.Abs(cy) + Vector256.Abs(cz) + g.R) * len + Vector256.Abs(b) + s;
     Vector256<double> slack = scale * inv * Vector256.Create(1.0e-9);
     Vector256<double> tin = (b - s) * inv, tout = (b + s) * inv;
     // Behind: every t of the ball below half the smallest accepted t (|t|·|d| < RAY_EPSILON / 2): its roots are not
     // accepted, so the kernel reports neither a record nor an inside state. This takes in the rays that leave the ball
     // they start on (shadow, reflected and outgoing refracted rays), not only balls wholly behind the origin.
-    Vector256<double> near = Vector256.Create(0.5 * Intersection.RAY_EPSILON / length);
+    Vector256<double> near = Vector256.Create(0.5 * Intersection.RAY_EPSILON * invLength);
     Vector256<double> behind = Vector256.LessThan(tout + slack, near);
     Vector256<double> beyond = Vector256.GreaterThan(tin - slack, Vector256.Create(bound));
     return open & ~(int)(behind | beyond).ExtractMostSignificantBits();

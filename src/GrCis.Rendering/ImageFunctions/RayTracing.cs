@@ -14,7 +14,7 @@ namespace Rendering;
 /// <see cref="MaxLevel"/>. Solids with a <see cref="PropertyName.RECURSION"/> attribute shade themselves.
 /// </summary>
 [Serializable]
-public class RayTracing : RayCasting
+public partial class RayTracing : RayCasting
 {
   protected const long HASH_REFRACT = 13L;
   protected const long HASH_REFLECT = 17L;
@@ -181,6 +181,8 @@ public class RayTracing : RayCasting
 
     double[] comp = scratch.Buffer(depth, bands);
     Vector3d origin = i.CoordWorld;
+    Vector3d viewerUnit = default;
+    bool haveUnit = false;
 
     if (DoReflections)
     {
@@ -191,7 +193,15 @@ public class RayTracing : RayCasting
       if (LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial pm && pm.Color.Length is > 0 and <= 16)
       {
         Span<double> k = ksBuffer[..pm.Color.Length];
-        PhongModel.ColorReflection(pm, i.Normal, viewer, r, ReflectionComponent.SPECULAR_REFLECTION, k);
+        if (viewer.X == 0.0 && viewer.Y == 0.0 && viewer.Z == 0.0)
+          PhongModel.ColorReflection(pm, i.Normal, viewer, r, ReflectionComponent.SPECULAR_REFLECTION, k);
+        else
+        {
+          // The model's normalized input, kept for the refracted direction (which normalizes the same vector).
+          viewerUnit = viewer.Normalized();
+          haveUnit = true;
+          PhongModel.Directional(pm, i.Normal, viewerUnit, r, ReflectionComponent.SPECULAR_REFLECTION, k);
+        }
         ks = k;
         have = true;
       }
@@ -204,10 +214,7 @@ public class RayTracing : RayCasting
       }
       if (have)
       {
-        double maxK = ks[0];
-        for (int b = 1; b < ks.Length; b++)
-          maxK = Math.Max(maxK, ks[b]);
-        double newImportance = importance * maxK;
+        double newImportance = importance * MaxBand(ks);
         if (newImportance >= MinImportance)
         {
           if (ReflectionDirection(i, r, depth, out Vector3d reflected))
@@ -228,13 +235,16 @@ public class RayTracing : RayCasting
 
     if (DoRefractions)
     {
-      double kt = i.Material!.Kt;
+      IMaterial material = i.Material!;
+      double kt = Kt(material);
       if (FresnelRefraction && kt > 0.0)
-        kt *= 1.0 - SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), i.Material.n);
+        kt *= 1.0 - SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), Index(material));
       double newImportance = importance * kt;
       if (newImportance < MinImportance)
         goto done;
-      Vector3d r = Geometry.SpecularRefraction(i.Normal, i.Material.n, viewer);
+      Vector3d r = haveUnit
+        ? Geometry.SpecularRefractionUnit(i.Normal, Index(material), viewerUnit)
+        : Geometry.SpecularRefraction(i.Normal, Index(material), viewer);
       if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0 || !RefractionDirection(i, r, depth, out r))
         goto done;
       if (observer != null)
@@ -277,82 +287,6 @@ public class RayTracing : RayCasting
     return r0 + (1.0 - r0) * m * m * m * m * m;
   }
 
-  /// <summary>
-  /// Fraction of light passing from <paramref name="p0"/> to the light at <c>p0 + dir</c>: the product
-  /// of the Kt of every surface entered on the way (0 = blocked). Uses the faithful all-hits query.
-  /// </summary>
-  protected virtual double ShadowTransmittance(Vector3d p0, Vector3d dir)
-  {
-    LinkedList<Intersection>? list = IntersectScene(p0, dir);
-    if (list == null)
-      return 1.0;
-    double transmit = 1.0;
-    double len2 = dir.LengthSquared;
-    bool first = true;
-    foreach (Intersection hit in list)
-    {
-      if (hit.T <= 0.0 || hit.T * hit.T * len2 <= Intersection.RAY_EPSILON2)
-        continue;
-      if (hit.Far(1.0, ref dir))
-        break;
-      if (hit.Solid != null && hit.Solid.GetLocalAttribute(PropertyName.NO_SHADOW) != null)
-        continue;
-      // Count each solid once: where the ray enters it, or at its exit when the ray starts inside.
-      if (hit.Enter || first)
-      {
-        double kt = (hit.Solid?.GetAttribute(PropertyName.MATERIAL) as IMaterial)?.Kt ?? 0.0;
-        transmit *= kt;
-        if (transmit <= 0.0)
-          return 0.0;
-      }
-      first = false;
-    }
-    return transmit;
-  }
-
-  /// <summary>Adds one light's direct contribution (shadow ray included) to <paramref name="color"/>; returns the hash.</summary>
-  long AddLight(ShadingScratch scratch, ILightSource source, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
-  {
-    double[]? intensity = source.GetIntensity(i, out Vector3d dir);
-    if (rayRegisterer != null && MT.singleRayTracing && source.position is Vector3d lightPosition)
-      rayRegisterer.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerShadow, i.CoordWorld, lightPosition);
-    if (intensity == null)
-      return hash;
-    double transmit = 1.0;
-    if (DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0))
-    {
-      if (TransparentShadows)
-      {
-        scratch.Rays++;
-        transmit = ShadowTransmittance(i.CoordWorld, dir);
-      }
-      else
-        transmit = Blocked(scratch, i.CoordWorld, dir) ? 0.0 : 1.0;
-      scratch.Observer?.ShadowRay(i.CoordWorld, dir, transmit <= 0.0);
-      if (transmit <= 0.0)
-      {
-        scratch.Hits++;   // a blocked shadow ray
-        return hash;
-      }
-    }
-    if (phong)
-    {
-      Span<double> r = buffer[..surface.Length];
-      PhongModel.ColorReflection((PhongMaterial)i.Material!, i.Normal, dir, viewer, ReflectionComponent.ALL, r);
-      for (int b = 0; b < color.Length; b++)
-        color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * r[Math.Min(b, r.Length - 1)];
-    }
-    else
-    {
-      double[]? arr = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
-      if (arr == null)
-        return hash;
-      for (int b = 0; b < color.Length; b++)
-        color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * arr[Math.Min(b, arr.Length - 1)];
-    }
-    return hash * HASH_LIGHT + source.GetHashCode();
-  }
-
   /// <summary>Custom shading by the solid's <see cref="RecursionFunction"/>: the function's <see cref="RayRecursion"/> does the rest.</summary>
   long ShadeRecursion(RecursionFunction recursion, Intersection i, int depth, double importance, ref Vector3d p1, double[] color, long hash)
   {
@@ -373,6 +307,7 @@ public class RayTracing : RayCasting
   }
 
   /// <summary>Zeroes a colour of a few bands inline (Array.Clear's call costs more than three stores).</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal static void Zero(double[] color)
   {
     for (int b = 0; b < color.Length; b++)

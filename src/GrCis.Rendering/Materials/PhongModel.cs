@@ -29,21 +29,34 @@ public class PhongModel : IReflectanceModel
   /// The same computation into a caller's buffer of <c>mat.Color.Length</c> bands (the shading hot path
   /// uses it to avoid one array per light and hit).
   /// </summary>
-  internal static void ColorReflection(PhongMaterial mat, Vector3d normal, Vector3d input, Vector3d output, ReflectionComponent comp, Span<double> result)
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  internal static void ColorReflection(PhongMaterial mat, in Vector3d normal, in Vector3d input, in Vector3d output, ReflectionComponent comp, Span<double> result)
   {
-    int bands = mat.Color.Length;
-    bool viewOut = Vector3d.Dot(output, normal) > 0.0;
-
     // Ambient light has no direction.
     if (input.X == 0.0 && input.Y == 0.0 && input.Z == 0.0)
-    {
-      double coef = viewOut ? mat.Ka : mat.Ka * mat.Kt;
-      for (int i = 0; i < bands; i++)
-        result[i] = coef * mat.Color[i];
-      return;
-    }
+      Ambient(mat, Vector3d.Dot(output, normal) > 0.0, result);
+    else
+      Directional(mat, normal, input.Normalized(), output, comp, result);
+  }
 
-    input.Normalize();
+  static void Ambient(PhongMaterial mat, bool viewOut, Span<double> result)
+  {
+    double coef = viewOut ? mat.Ka : mat.Ka * mat.Kt;
+    double[] color = mat.Color;
+    result = result[..color.Length];
+    for (int i = 0; i < result.Length; i++)
+      result[i] = coef * color[i];
+  }
+
+  /// <summary>
+  /// <see cref="ColorReflection(PhongMaterial, in Vector3d, in Vector3d, in Vector3d, ReflectionComponent, Span{double})"/>
+  /// of a non-zero input, given normalized (by <see cref="Vector3d.Normalized"/>): a caller that already has that
+  /// value (the shading's view direction) saves its square root and division.
+  /// </summary>
+  internal static void Directional(PhongMaterial mat, in Vector3d normal, in Vector3d unitInput, in Vector3d output, ReflectionComponent comp, Span<double> result)
+  {
+    bool viewOut = Vector3d.Dot(output, normal) > 0.0;
+    Vector3d input = unitInput;
     double cosAlpha = Vector3d.Dot(input, normal);
     bool lightOut = cosAlpha > 0.0;
     double ks = mat.Ks, kd = mat.Kd, kt = mat.Kt;
@@ -90,7 +103,9 @@ public class PhongModel : IReflectanceModel
         specular = coefficient * ks * Geometry.IntPow(cosBeta, mat.H);
     }
 
-    for (int i = 0; i < bands; i++)
-      result[i] = diffuse * mat.Color[i] + specular;
+    double[] color = mat.Color;
+    result = result[..color.Length];
+    for (int i = 0; i < result.Length; i++)
+      result[i] = diffuse * color[i] + specular;
   }
 }

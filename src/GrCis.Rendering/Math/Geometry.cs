@@ -7,6 +7,7 @@ namespace MathSupport;
 public static partial class Geometry
 {
   /// <summary>Mirror of <paramref name="input"/> about <paramref name="normal"/>: 2(n·i)n − i.</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public static void SpecularReflection(ref Vector3d normal, ref Vector3d input, out Vector3d output)
   {
     double k = Vector3d.Dot(normal, input);
@@ -26,8 +27,18 @@ public static partial class Geometry
   /// </summary>
   public static Vector3d SpecularRefraction(Vector3d normal, double n, Vector3d input)
   {
-    normal.Normalize();
     input.Normalize();
+    return SpecularRefractionUnit(normal, n, input);
+  }
+
+  /// <summary>
+  /// <see cref="SpecularRefraction"/> of an input already normalized by <see cref="Vector3d.Normalize()"/> (the same
+  /// value: a caller that has it saves the square root and division).
+  /// </summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]   // no reload of a returned vector
+  internal static Vector3d SpecularRefractionUnit(Vector3d normal, double n, Vector3d input)
+  {
+    normal.Normalize();
     double d = Vector3d.Dot(normal, input);
     if (d < 0.0)
     {

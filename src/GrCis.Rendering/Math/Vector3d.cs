@@ -44,7 +44,11 @@ public partial struct Vector3d : IEquatable<Vector3d>
     }
   }
 
-  public readonly double Length => Math.Sqrt(X * X + Y * Y + Z * Z);
+  public readonly double Length
+  {
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    get => Math.Sqrt(X * X + Y * Y + Z * Z);
+  }
   public readonly double LengthSquared => X * X + Y * Y + Z * Z;
   public readonly double LengthFast => 1.0 / MathHelper.InverseSqrtFast(LengthSquared);
 
@@ -63,6 +67,7 @@ public partial struct Vector3d : IEquatable<Vector3d>
   public Vector3d Zyx { readonly get => new(Z, Y, X); set { Z = value.X; Y = value.Y; X = value.Z; } }
 
   /// <summary>Normalises this vector in place (OpenTK semantics).</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public void Normalize()
   {
     double s = 1.0 / Length;
@@ -71,6 +76,7 @@ public partial struct Vector3d : IEquatable<Vector3d>
 
   public void NormalizeFast() => Normalize();
 
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public readonly Vector3d Normalized()
   {
     double s = 1.0 / Length;
