@@ -256,16 +256,18 @@ public class PathTracing : MonteCarloRayTracing
     double cos = Vector3d.Dot(s.Wi, ctx.N);
     if (cos <= 0.0)
       return Rgb.Zero;
-    Rgb f = bsdf.Eval(s.Wi);
+    // ctx.N is the BSDF's facing normal: the direction is above the surface, which Eval and Pdf need not test again.
+    Rgb f = bsdf.EvalAbove(s.Wi);
     if (f.IsBlack)
       return Rgb.Zero;
-    if (light.Kind == LightKind.DeltaPosition)
+    LightKind kind = light.Kind;
+    if (kind == LightKind.DeltaPosition)
       return Visible(scratch, ctx.P, s.ToLight, s.Distance) ? f * s.L * (cos / pick) : Rgb.Zero;
-    bool visible = light.Kind == LightKind.Infinite ? Escapes(scratch, slot, ctx.P, s.Wi) : Visible(scratch, ctx.P, s.ToLight, s.Distance);
+    bool visible = kind == LightKind.Infinite ? Escapes(scratch, slot, ctx.P, s.Wi) : Visible(scratch, ctx.P, s.ToLight, s.Distance);
     if (!visible)
       return Rgb.Zero;
     double lightPdf = pick * s.Pdf;
-    double w = MultipleImportanceSampling ? PowerHeuristic(lightPdf, bsdf.Pdf(s.Wi)) : 1.0;
+    double w = MultipleImportanceSampling ? PowerHeuristic(lightPdf, bsdf.PdfAbove(s.Wi, cos)) : 1.0;
     return f * s.L * (cos * w / lightPdf);
   }
 

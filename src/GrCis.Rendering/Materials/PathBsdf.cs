@@ -138,13 +138,22 @@ internal struct PathBsdf
   /// <summary>The smooth (non-delta) part of the BSDF for light arriving from <paramref name="wi"/>, without the cosine.</summary>
   public readonly Rgb Eval(Vector3d wi)
   {
+    if (own == null && Vector3d.Dot(wi, nf) <= 0.0)
+      return Rgb.Zero;
+    return EvalAbove(wi);
+  }
+
+  /// <summary>
+  /// <see cref="Eval"/> for a <paramref name="wi"/> the caller has already found above the surface (cos θ = wi·nf &gt; 0):
+  /// the same values without testing the side again.
+  /// </summary>
+  public readonly Rgb EvalAbove(in Vector3d wi)
+  {
     if (own != null)
     {
       own.Eval(hit!, wo, wi, buffer!);
       return Rgb.From(buffer);
     }
-    if (Vector3d.Dot(wi, nf) <= 0.0)
-      return Rgb.Zero;
     Rgb f = diffuse * (1.0 / Math.PI);
     if (ks > 0.0 && !glossyIsMirror)
     {
@@ -161,8 +170,14 @@ internal struct PathBsdf
     if (own != null)
       return own.Pdf(hit!, wo, wi);
     double cos = Vector3d.Dot(wi, nf);
-    if (cos <= 0.0)
-      return 0.0;
+    return cos <= 0.0 ? 0.0 : PdfAbove(wi, cos);
+  }
+
+  /// <summary><see cref="Pdf"/> for a <paramref name="wi"/> above the surface whose cosine wi·nf (&gt; 0) the caller has at hand.</summary>
+  public readonly double PdfAbove(in Vector3d wi, double cos)
+  {
+    if (own != null)
+      return own.Pdf(hit!, wo, wi);
     double p = pD * cos / Math.PI;
     if (pS > 0.0 && !glossyIsMirror)
       p += pS * SampleWarp.PowerCosinePdf(Vector3d.Dot(wi, mirror), exponent);
@@ -193,10 +208,10 @@ internal struct PathBsdf
       double cos = Vector3d.Dot(wi, nf);
       if (cos <= 0.0)
         return false;
-      pdf = Pdf(wi);
+      pdf = PdfAbove(wi, cos);
       if (pdf <= 0.0)
         return false;
-      weight = Eval(wi) * (cos / pdf);
+      weight = EvalAbove(wi) * (cos / pdf);
       return true;
     }
     delta = true;

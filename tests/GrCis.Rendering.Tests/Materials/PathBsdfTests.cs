@@ -181,4 +181,29 @@ public class PathBsdfTests
       Assert.True(wi.Y < 0.0, "total internal reflection must send the ray back down");
     }
   }
+
+  [Theory]
+  [InlineData(0.8, 0.0, 1)]     // Lambertian alone
+  [InlineData(0.0, 0.6, 20)]    // glossy alone
+  [InlineData(0.5, 0.3, 8)]     // both
+  [InlineData(0.4, 0.5, 1000000)]   // Lambertian and an ideal mirror (its delta lobe is not evaluated)
+  public void Eval_and_pdf_above_the_surface_give_the_bits_of_the_tested_ones(double kd, double ks, int h)
+  {
+    PathBsdf b = Bsdf(kd, ks, h);
+    var random = new Random(11);
+    for (int k = 0; k < 500; k++)
+    {
+      var wi = new Vector3d(random.NextDouble() * 2 - 1, random.NextDouble() * 2 - 1, random.NextDouble() * 2 - 1).Normalized();
+      double cos = Vector3d.Dot(wi, b.FacingNormal);
+      if (cos <= 0.0)
+      {
+        Assert.True(b.Eval(wi).IsBlack);
+        Assert.Equal(0.0, b.Pdf(wi));
+        continue;
+      }
+      Rgb tested = b.Eval(wi), above = b.EvalAbove(wi);
+      Assert.Equal((tested.R, tested.G, tested.B), (above.R, above.G, above.B));
+      Assert.Equal(BitConverter.DoubleToInt64Bits(b.Pdf(wi)), BitConverter.DoubleToInt64Bits(b.PdfAbove(wi, cos)));
+    }
+  }
 }
