@@ -32,7 +32,9 @@ static class StartupProfile
       return;
     try
     {
-      string folder = Directory.CreateDirectory(Path.Combine(cache.Directory, "startup")).FullName;
+      string folder = Path.Combine(cache.Directory, "startup");
+      CreatePrivate(cache.Directory);
+      CreatePrivate(folder);
       Prune(folder, Kept);
       ProfileOptimization.SetProfileRoot(folder);
       ProfileOptimization.StartProfile(FileName(args[0], BuildId()));
@@ -41,6 +43,15 @@ static class StartupProfile
     {
       // A read-only or missing home folder: run without the profile.
     }
+  }
+
+  /// <summary>A folder of the cache, private to the user on Unix as the cache's own (it holds what steers the JIT).</summary>
+  static void CreatePrivate(string folder)
+  {
+    if (OperatingSystem.IsWindows())
+      Directory.CreateDirectory(folder);
+    else
+      Directory.CreateDirectory(folder, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute);
   }
 
   /// <summary>Whether a run with these arguments gets a profile: one of <see cref="commands"/>, no script, no <c>--no-cache</c>.</summary>

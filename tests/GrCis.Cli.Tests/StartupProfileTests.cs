@@ -130,4 +130,15 @@ public class StartupProfileTests
     Assert.True(damaged.Code == 0, damaged.Error);
     Assert.Equal(File.ReadAllBytes(dir.File("first.png")), File.ReadAllBytes(dir.File("damaged.png")));
   }
+  [UnixFact]
+  public void The_cache_and_profile_folders_it_creates_are_private_to_the_user()
+  {
+    using var dir = new TempDirectory();
+    string cache = dir.File("cache");
+    var r = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, new Dictionary<string, string> { [ScriptCache.DirectoryVariable] = cache }, "list"));
+    Assert.True(r.Code == 0, r.Error);
+    var owner = UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute;
+    Assert.Equal(owner, File.GetUnixFileMode(cache));
+    Assert.Equal(owner, File.GetUnixFileMode(Path.Combine(cache, "startup")));
+  }
 }
