@@ -100,16 +100,17 @@ public sealed partial class PreparedScene
       m.CullRadius2 = r * r;
     }
 
-    if (node is Plane && m.RecordSolid != null)
-      PlaneCull.Build(ref m, path);
-
-    if (node is Plane plane && m.RecordSolid != null && BoundedPlaneBox(plane, out Aabb flat))
+    if (node is Plane plane && m.RecordSolid != null)
     {
-      Aabb world = flat.Transformed(LocalToWorldOf(path));
-      if (!world.IsEmpty && world.IsFinite)
+      PlaneCull.Build(ref m, path);
+      if (BoundedPlaneBox(plane, out Aabb flat))
       {
-        m.LineBox = world.Padded();
-        m.HasLineBox = true;
+        Aabb world = flat.Transformed(LocalToWorldOf(path));
+        if (!world.IsEmpty && world.IsFinite)
+        {
+          m.LineBox = world.Padded();
+          m.HasLineBox = true;
+        }
       }
     }
 

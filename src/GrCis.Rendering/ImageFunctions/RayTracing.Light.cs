@@ -98,25 +98,34 @@ public partial class RayTracing
     {
       Span<double> r = buffer[..surface.Length];
       PhongModel.ColorReflection((PhongMaterial)i.Material!, i.Normal, dir, viewer, ReflectionComponent.ALL, r);
-      if (intensity.Length >= color.Length && r.Length >= color.Length)
-      {
-        // Every band has its own values (the common case): no index clamps.
-        ReadOnlySpan<double> light = intensity.AsSpan(0, color.Length), reflected = r[..color.Length];
-        for (int b = 0; b < color.Length; b++)
-          color[b] += transmit * light[b] * reflected[b];
-      }
-      else
-        for (int b = 0; b < color.Length; b++)
-          color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * r[Math.Min(b, r.Length - 1)];
+      AddLit(color, transmit, intensity, r);
     }
     else
     {
       double[]? arr = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
       if (arr == null)
         return hash;
-      for (int b = 0; b < color.Length; b++)
-        color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * arr[Math.Min(b, arr.Length - 1)];
+      AddLit(color, transmit, intensity, arr);
     }
     return hash * HASH_LIGHT + source.GetHashCode();
+  }
+
+  /// <summary>
+  /// color += transmit · light · reflected, band by band; a light or reflectance with fewer bands repeats its last one.
+  /// </summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  static void AddLit(double[] color, double transmit, double[] light, ReadOnlySpan<double> reflected)
+  {
+    int bands = color.Length;
+    if (light.Length >= bands && reflected.Length >= bands)
+    {
+      // Every band has its own values (the common case): no index clamps.
+      ReadOnlySpan<double> l = light.AsSpan(0, bands), k = reflected[..bands];
+      for (int b = 0; b < bands; b++)
+        color[b] += transmit * l[b] * k[b];
+    }
+    else
+      for (int b = 0; b < bands; b++)
+        color[b] += transmit * light[Math.Min(b, light.Length - 1)] * reflected[Math.Min(b, reflected.Length - 1)];
   }
 }
