@@ -4,7 +4,9 @@
 #
 #   bench/povray-compare.sh            # 2 threads (THREADS=1 bench/povray-compare.sh for one)
 #   MODE=whole bench/povray-compare.sh # whole processes, alternated (ROUNDS=7; GRCIS=path/to/grcis;
-#                                      # GRCIS_BASE=another/grcis adds a second build to each round, e.g. before a change)
+#                                      # GRCIS_BASE=another/grcis adds a second build to each round, e.g. before a change;
+#                                      # without GRCIS: the ReadyToRun publish, as grcis is published for speed;
+#                                      # BUILD=plain: the plain Release build instead)
 #
 # Equivalence (see docs/performance.md): 640x480 (Two spheres also 1280x720); POV-Ray
 # +A0.0 +AM1 +R4 = a 4x4 grid plus the centre (17 samples) vs our 16 spp; Declare=MTL=13 =
@@ -45,9 +47,16 @@ if [[ "${MODE:-render}" == whole ]]; then
   # the process) is steadier on a shared machine. The trace and render columns are the programs' own reports of
   # the same runs (POV-Ray's "Trace Time", grcis's render time).
   ROUNDS=${ROUNDS:-7}
-  grcis_bin=${GRCIS:-$repo/src/GrCis.Cli/bin/Release/net10.0/grcis}
-  if [[ -z "${GRCIS:-}" ]]; then
+  if [[ -n "${GRCIS:-}" ]]; then
+    grcis_bin=$GRCIS
+  elif [[ "${BUILD:-r2r}" == plain ]]; then
+    grcis_bin=$repo/src/GrCis.Cli/bin/Release/net10.0/grcis
     dotnet build "$repo/src/GrCis.Cli" -c Release -v q -nologo >/dev/null
+  else
+    # The ReadyToRun publish (src/GrCis.Cli/Properties/PublishProfiles/ReadyToRun.pubxml): grcis as README says to
+    # publish it for the fastest start.
+    grcis_bin=$repo/src/GrCis.Cli/bin/publish/grcis
+    dotnet publish "$repo/src/GrCis.Cli" -p:PublishProfile=ReadyToRun -v q -nologo >/dev/null
   fi
   [[ -x "$grcis_bin" ]] || { echo "povray-compare: no grcis at $grcis_bin" >&2; exit 2; }
   median() { sort -g | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }

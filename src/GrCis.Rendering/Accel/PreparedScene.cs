@@ -228,7 +228,10 @@ public sealed partial class PreparedScene : ISceneQuery
   /// True when a hit not marked NO_SHADOW lies between <paramref name="p0"/> and <c>p0 + dir</c>
   /// (the faithful rule: FirstRealIntersection, then not <see cref="Intersection.Far"/>(1)).
   /// </summary>
+  // Not inlined into its callers (AnyHit, RayTracing's shadow test): each of those is compiled again at tier 1 while
+  // a render starts, and a copy of this body in each tripled the JIT's work on the way to the first fast pixels.
   [SkipLocalsInit]   // the query is started field by field, not zeroed
+  [MethodImpl(MethodImplOptions.NoInlining)]
   public bool Occluded(Vector3d p0, Vector3d dir)
   {
     if (members.Length == 0)

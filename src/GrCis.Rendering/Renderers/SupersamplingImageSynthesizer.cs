@@ -62,6 +62,9 @@ public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
   /// <paramref name="color"/> is scratch.
   /// </summary>
   /// <exception cref="ArgumentOutOfRangeException"><paramref name="first"/> does not begin a stream.</exception>
+  // Not inlined into RenderPixelLinear: the start of a render compiles both at tier 1 (tier-0 RenderPixelLinear calls
+  // this one), and inlined, the sample loop was compiled twice; one call per pixel costs nothing beside its samples.
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
   public void AccumulateSamples(int x, int y, int first, int end, double[] color, Span<double> sum, Span<double> oddSum)
   {
     if (!IsStreamStart(first, superXY))
