@@ -214,7 +214,13 @@ public sealed partial class PreparedScene : ISceneQuery
     }
     else
       i = new Intersection(f);
-    f.InitIntersection(hit, i);
+    // The library's sphere and plane directly: no interface call, with or without a profile (see TestMember).
+    if (f.GetType() == typeof(Sphere))
+      Sphere.Init(hit, i);
+    else if (f.GetType() == typeof(Plane))
+      Plane.Init(hit, i);
+    else
+      f.InitIntersection(hit, i);
     if (surfaceOnly && m.Completion != HitCompletion.Full)
       i.CompleteSurface(m.LocalToWorld, m.WorldToLocal, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion, m.Completion);
     else if (m.AttributesCached)

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 using OpenTK.Mathematics;
 
 namespace Rendering;
@@ -29,9 +30,15 @@ public class DefaultBackground : IBackground
   /// <summary>Follows the scene's <see cref="IRayScene.BackgroundColor"/> (read at render time).</summary>
   public DefaultBackground(IRayScene? rtsc = null) => scene = rtsc;
 
-  public virtual long GetColor(Vector3d p1, double[] color)
+  public virtual long GetColor(Vector3d p1, double[] color) => Fill(color);
+
+  /// <summary><see cref="GetColor"/> of this class itself (the shading calls it directly for exactly this type, inlined).</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  internal long Fill(double[] color)
   {
-    double[]? src = scene?.BackgroundColor is { Length: > 0 } sc ? sc
+    IRayScene? s = scene;
+    double[]? own = s == null ? null : LibraryScene.Is(s) ? Unsafe.As<DefaultRayScene>(s).BackgroundColor : s.BackgroundColor;
+    double[]? src = own is { Length: > 0 } sc ? sc
       : Color is { Length: > 0 } ? Color
       : DEFAULT_COLOR;
     for (int i = 0; i < color.Length; i++)

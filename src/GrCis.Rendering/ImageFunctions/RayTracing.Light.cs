@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Runtime.CompilerServices;
 using MathSupport;
 using OpenTK.Mathematics;
 using Rendering.Accel;
@@ -13,6 +14,7 @@ public partial class RayTracing
   /// The largest band, as folding <see cref="Math.Max(double, double)"/> from band 0 gives it; its NaN and signed-zero
   /// rules are applied only where they can matter (a Phong reflectance has all bands equal).
   /// </summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal static double MaxBand(ReadOnlySpan<double> bands)
   {
     double max = bands[0];
@@ -72,7 +74,15 @@ public partial class RayTracing
   /// <summary>Adds one light's direct contribution (shadow ray included) to <paramref name="color"/>; returns the hash.</summary>
   long AddLight(ShadingScratch scratch, ILightSource source, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
   {
-    double[]? intensity = source.GetIntensity(i, out Vector3d dir);
+    // The library's point and ambient lights directly: no interface call, with or without a profile (see LibraryScene).
+    double[]? intensity;
+    Vector3d dir;
+    if (source.GetType() == typeof(PointLightSource))
+      intensity = Unsafe.As<PointLightSource>(source).Intensity(i, out dir);
+    else if (source.GetType() == typeof(AmbientLightSource))
+      intensity = Unsafe.As<AmbientLightSource>(source).Intensity(out dir);
+    else
+      intensity = source.GetIntensity(i, out dir);
     if (rayRegisterer != null && MT.singleRayTracing && source.position is Vector3d lightPosition)
       rayRegisterer.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerShadow, i.CoordWorld, lightPosition);
     if (intensity == null)

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Runtime.CompilerServices;
 using MathSupport;
 using OpenTK.Mathematics;
 using Rendering.Accel;
@@ -68,14 +69,28 @@ public partial class RayTracing : RayCasting
   // A subclass's Occluded must see every shadow ray; otherwise the scratch at hand counts it.
   [NonSerialized] readonly bool occludedOverridden;
 
-  public override long GetSample(double x, double y, double[] color)
+  public override long GetSample(double x, double y, double[] color) => Sample(x, y, color);
+
+  /// <summary>
+  /// <see cref="GetSample"/> of this class itself, which the sample loop calls directly for a function of exactly
+  /// this type. The library's own scene and camera are read without interface calls, which code compiled without a
+  /// profile (ReadyToRun, a render's first moments) would otherwise pay per sample (docs/performance.md, "Start-up").
+  /// </summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  internal long Sample(double x, double y, double[] color)
   {
     WorkerContext context = WorkerContext.Current;
     context.DoubleX = x;
     context.DoubleY = y;
     Zero(color);
-    ICamera? camera = Scene.Camera;
-    if (camera == null || !camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))
+    IRayScene sc = Scene;
+    ICamera? camera = LibraryScene.Is(sc) ? Unsafe.As<DefaultRayScene>(sc).Camera : sc.Camera;
+    if (camera == null)
+      return 11L;
+    Vector3d p0, p1;
+    if (camera.GetType() == typeof(StaticCamera))
+      Unsafe.As<StaticCamera>(camera).Ray(x, y, out p0, out p1);
+    else if (!camera.GetRay(x, y, out p0, out p1))
       return 11L;
     return shade(0, 1.0, ref p0, ref p1, color);
   }
@@ -90,9 +105,11 @@ public partial class RayTracing : RayCasting
   /// The shadow query every shading path asks: a subclass's own <see cref="Occluded(Vector3d, Vector3d)"/> when it
   /// overrides it, else the scratch at hand answers (and counts the ray).
   /// </summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   private protected bool Blocked(ShadingScratch scratch, Vector3d p0, Vector3d dir) =>
     occludedOverridden ? Occluded(p0, dir) : Occluded(scratch, p0, dir);
 
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
   {
     scratch.Rays++;
@@ -124,14 +141,19 @@ public partial class RayTracing : RayCasting
     }
 
     IRayScene sc = Scene;
-    Vector3d direction = p1;
+    // Read field by field: the caller has just written p1 with scalar stores, which a wide copy could not forward.
+    Vector3d direction = new(p1.X, p1.Y, p1.Z);
     Intersection? i = FirstHitAt(scratch, depth, p0, direction);
     long hash;
+    bool library = LibraryScene.Is(sc);
     if (i == null)
     {
       rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerNormal, depth, p0, direction * 100000.0);
-      if (sc.Background != null)
-        hash = sc.Background.GetColor(p1, color);
+      IBackground? background = library ? Unsafe.As<DefaultRayScene>(sc).Background : sc.Background;
+      if (background != null)
+        hash = background.GetType() == typeof(DefaultBackground)
+          ? Unsafe.As<DefaultBackground>(background).Fill(color)
+          : background.GetColor(p1, color);
       else
       {
         FillBackground(sc, color);
@@ -155,7 +177,7 @@ public partial class RayTracing : RayCasting
     Vector3d viewer = -p1.Normalized();
     double[] surface = i.SurfaceColor!;
 
-    ICollection<ILightSource>? sources = sc.Sources;
+    ICollection<ILightSource>? sources = library ? Unsafe.As<DefaultRayScene>(sc).Sources : sc.Sources;
     if (sources == null || sources.Count == 0)
       AddScaled(color, surface, 1.0);
     else
@@ -315,6 +337,7 @@ public partial class RayTracing : RayCasting
   }
 
   /// <summary>color += k · src; a one-element src adds the same value to every band.</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   protected static void AddScaled(double[] color, double[] src, double k)
   {
     for (int b = 0; b < color.Length; b++)

@@ -22,7 +22,11 @@ public class AmbientLightSource : ILightSource
     intensity = (double[])intens.Clone();
   }
 
-  public virtual double[]? GetIntensity(Intersection intersection, out Vector3d dir)
+  public virtual double[]? GetIntensity(Intersection intersection, out Vector3d dir) => Intensity(out dir);
+
+  /// <summary><see cref="GetIntensity"/> of this class itself (the Whitted light loop calls it directly, inlined, for exactly this type).</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  internal double[]? Intensity(out Vector3d dir)
   {
     dir = Vector3d.Zero;
     return intensity;

@@ -40,7 +40,11 @@ public class PointLightSource : ILightSource
     return result;
   }
 
-  public virtual double[]? GetIntensity(Intersection intersection, out Vector3d dir)
+  public virtual double[]? GetIntensity(Intersection intersection, out Vector3d dir) => Intensity(intersection, out dir);
+
+  /// <summary><see cref="GetIntensity"/> of this class itself (the Whitted light loop calls it directly, inlined, for exactly this type).</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  internal double[]? Intensity(Intersection intersection, out Vector3d dir)
   {
     dir = (position ?? Vector3d.Zero) - intersection.CoordWorld;
     if (Vector3d.Dot(dir, intersection.Normal) <= 0.0)

@@ -48,6 +48,7 @@ public class PhongMaterial : IMaterial
   public double n
   {
     get => refraction;
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
     set
     {
       refraction = value;

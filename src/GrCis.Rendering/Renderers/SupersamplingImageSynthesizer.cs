@@ -70,6 +70,7 @@ public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
     if (!IsStreamStart(first, superXY))
       throw new ArgumentOutOfRangeException(nameof(first), first, "A pass must begin at sample 0, 1 or a diagonal's first sample.");
     IImageFunction f = Function;
+    bool whitted = f.GetType() == typeof(RayTracing);
     int bands = color.Length, n = superXY;
     double step = 1.0 / n;
     double amplitude = Math.Clamp(Jittering, 0.0, 1.0) * step;
@@ -109,7 +110,11 @@ public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
         sx += amplitude * (subX + rnd.UniformNumber()) * step;
         sy += amplitude * (subY + rnd.UniformNumber()) * step;
       }
-      f.GetSample(sx, sy, color);
+      // The library's Whitted function called directly (inlined), with or without a profile to devirtualize it.
+      if (whitted)
+        System.Runtime.CompilerServices.Unsafe.As<RayTracing>(f).Sample(sx, sy, color);
+      else
+        f.GetSample(sx, sy, color);
       for (int b = 0; b < bands; b++)
         sum[b] += color[b];
       if ((d & 1) != 0)
@@ -134,6 +139,7 @@ public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
   static readonly uint PixelDimension = Strata.Dimension(SampleDimension.PixelGrid, 0);
 
   /// <summary>The pixel's colour from the sum of all its samples.</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public void FinishPixel(ReadOnlySpan<double> sum, double[] color)
   {
     double mul = 1.0 / (superXY * superXY);

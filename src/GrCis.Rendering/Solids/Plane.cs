@@ -114,7 +114,11 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
   /// <summary>One record (an exit from below): the list may start inside, so the plane is tested for every ray.</summary>
   public virtual bool IsClosed => false;
 
-  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore) =>
+    First(p0, p1, len2, out hit, out insideBefore);
+
+  /// <summary><see cref="IntersectFirst"/> of this class itself: the prepared query calls it directly for a member of exactly this type.</summary>
+  internal bool First(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -144,7 +148,11 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
     return 1;
   }
 
-  public virtual void InitIntersection(in SolidRecord hit, Intersection target)
+  public virtual void InitIntersection(in SolidRecord hit, Intersection target) => Init(hit, target);
+
+  /// <summary><see cref="InitIntersection"/> of this class itself (called directly, inlined, for exactly this type).</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  internal static void Init(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.NormalLocal = Vector3d.UnitZ;

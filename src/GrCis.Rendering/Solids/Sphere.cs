@@ -25,6 +25,7 @@ public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
   }
 
   /// <summary>Both parameters where the line meets the unit sphere (t0 &lt; t1); false on a miss or a touch.</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   protected static bool Roots(Vector3d p0, Vector3d p1, out double t0, out double t1)
   {
     // Quadratic |p0 + t p1|² = 1; the discriminant from the closest point, free of cancellation.
@@ -45,7 +46,11 @@ public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
 
   public virtual bool IsClosed => true;
 
-  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
+  public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore) =>
+    First(p0, p1, len2, out hit, out insideBefore);
+
+  /// <summary><see cref="IntersectFirst"/> of this class itself: the prepared query calls it directly for a member of exactly this type.</summary>
+  internal bool First(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
     insideBefore = false;
@@ -70,7 +75,11 @@ public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
     return 2;
   }
 
-  public virtual void InitIntersection(in SolidRecord hit, Intersection target)
+  public virtual void InitIntersection(in SolidRecord hit, Intersection target) => Init(hit, target);
+
+  /// <summary><see cref="InitIntersection"/> of this class itself (called directly, inlined, for exactly this type).</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  internal static void Init(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.NormalLocal = hit.CoordLocal;
