@@ -74,9 +74,9 @@ public partial class RayTracing : RayCasting
   /// <summary>
   /// <see cref="GetSample"/> of this class itself, which the sample loop calls directly for a function of exactly
   /// this type. The library's own scene and camera are read without interface calls, which code compiled without a
-  /// profile (ReadyToRun, a render's first moments) would otherwise pay per sample (docs/performance.md, "Start-up").
+  /// profile (ReadyToRun, a render's first moments) would otherwise pay per sample (docs/performance.md, "A render's first moments").
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   internal long Sample(double x, double y, double[] color)
   {
     WorkerContext context = WorkerContext.Current;
@@ -105,7 +105,7 @@ public partial class RayTracing : RayCasting
   /// The shadow query every shading path asks: a subclass's own <see cref="Occluded(Vector3d, Vector3d)"/> when it
   /// overrides it, else the scratch at hand answers (and counts the ray).
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   private protected bool Blocked(ShadingScratch scratch, Vector3d p0, Vector3d dir) =>
     occludedOverridden ? Occluded(p0, dir) : Occluded(scratch, p0, dir);
 
