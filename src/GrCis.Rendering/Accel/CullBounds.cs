@@ -10,7 +10,6 @@ internal static class CullBounds
   /// estimate (relative error below 2⁻¹¹ on x86, 2⁻⁸ on ARM) raised by 1 %: no square root or division, whose unit the
   /// query's own roots wait for. Outside single precision's comfortable range the exact quotient.
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public static double UpperInverseLength(double x)
   {
     if (x > 1.0e-30 && x < 1.0e30)

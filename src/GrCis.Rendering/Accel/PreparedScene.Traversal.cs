@@ -16,7 +16,6 @@ public sealed partial class PreparedScene
   /// skipped only when it can neither win nor contain the origin). Bounded members go before the rectangles: a hit
   /// on one of them lets the rectangle cull dismiss the walls behind it without their exact test.
   /// </remarks>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   bool Closest(ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
     if (always.Length > 0 && !Open(ref q, ref list, p0, p1))
@@ -29,7 +28,6 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>The closed members of a small scene (balls), four at a time; only those the cull cannot dismiss are tested.</summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   bool Balls(ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
     Vector256<double> vox = Vector256.Create(p0.X), voy = Vector256.Create(p0.Y), voz = Vector256.Create(p0.Z);
@@ -46,7 +44,6 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>The open members other than the culled rectangles, each tested unless its line box is missed.</summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   bool Open(ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
     // The whole-line test of a bounded plane needs every slab: a zero component would turn one into a half-line.
@@ -74,7 +71,6 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>The rectangles, four at a time in world space; only those the estimate cannot dismiss go through their chain.</summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   bool Rectangles(ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
     Vector256<double> vox = Vector256.Create(p0.X), voy = Vector256.Create(p0.Y), voz = Vector256.Create(p0.Z);

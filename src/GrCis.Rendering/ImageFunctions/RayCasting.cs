@@ -134,7 +134,6 @@ public class RayCasting : IImageFunction
   /// The prepared snapshot of the current scene from the queries of the render this thread works for (or the
   /// thread's own outside a render); the thread's last snapshot is checked first, so a ray costs one comparison.
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   private protected PreparedScene? PreparedFor(ShadingScratch scratch)
   {
     if (Accel == AccelMode.None)
@@ -150,16 +149,13 @@ public class RayCasting : IImageFunction
     return ps;
   }
 
-  static IRayScene NoScene() => throw new InvalidOperationException("The image function has no scene to render.");
-
   /// <summary>The scene this function is bound to (given to the constructor or set), or null: it renders <see cref="MT.scene"/>.</summary>
   public IRayScene? BoundScene => scene;
 
   /// <summary>The scene: the one given to the constructor, else the thread's current scene.</summary>
   public IRayScene Scene
   {
-    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-    get => scene ?? MT.scene ?? NoScene();
+    get => scene ?? MT.scene ?? throw new InvalidOperationException("The image function has no scene to render.");
     set => scene = value;
   }
 

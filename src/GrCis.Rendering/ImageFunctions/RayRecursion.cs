@@ -130,7 +130,6 @@ public class RayRecursion
   }
 
   /// <summary>dst += mul * src over the bands both have (GrCis's Util.ColorAdd).</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   static void AddScaled(double[] src, double mul, double[] dst)
   {
     int n = Math.Min(src.Length, dst.Length);

@@ -14,7 +14,6 @@ public partial class RayTracing
   /// The largest band, as folding <see cref="Math.Max(double, double)"/> from band 0 gives it; its NaN and signed-zero
   /// rules are applied only where they can matter (a Phong reflectance has all bands equal).
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal static double MaxBand(ReadOnlySpan<double> bands)
   {
     double max = bands[0];

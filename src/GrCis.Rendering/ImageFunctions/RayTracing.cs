@@ -105,11 +105,9 @@ public partial class RayTracing : RayCasting
   /// The shadow query every shading path asks: a subclass's own <see cref="Occluded(Vector3d, Vector3d)"/> when it
   /// overrides it, else the scratch at hand answers (and counts the ray).
   /// </summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   private protected bool Blocked(ShadingScratch scratch, Vector3d p0, Vector3d dir) =>
     occludedOverridden ? Occluded(p0, dir) : Occluded(scratch, p0, dir);
 
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
   {
     scratch.Rays++;
@@ -141,8 +139,7 @@ public partial class RayTracing : RayCasting
     }
 
     IRayScene sc = Scene;
-    // Read field by field: the caller has just written p1 with scalar stores, which a wide copy could not forward.
-    Vector3d direction = new(p1.X, p1.Y, p1.Z);
+    Vector3d direction = p1;
     Intersection? i = FirstHitAt(scratch, depth, p0, direction);
     long hash;
     bool library = LibraryScene.Is(sc);
@@ -337,7 +334,6 @@ public partial class RayTracing : RayCasting
   }
 
   /// <summary>color += k · src; a one-element src adds the same value to every band.</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   protected static void AddScaled(double[] color, double[] src, double k)
   {
     for (int b = 0; b < color.Length; b++)

@@ -61,7 +61,6 @@ internal sealed class ShadingScratch
   Intersection?[] intersections = new Intersection?[16];
 
   /// <summary>This thread's reusable intersection of <paramref name="depth"/> (the fast path fills it per hit).</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public Intersection Intersection(int depth)
   {
     Intersection?[] pool = intersections = Grow(intersections, depth);
@@ -87,7 +86,6 @@ internal sealed class ShadingScratch
   }
 
   /// <summary>A cleared buffer of <paramref name="bands"/> values owned by <paramref name="depth"/>.</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public double[] Buffer(int depth, int bands)
   {
     double[]?[] pool = buffers = Grow(buffers, depth);

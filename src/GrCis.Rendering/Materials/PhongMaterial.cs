@@ -48,7 +48,6 @@ public class PhongMaterial : IMaterial
   public double n
   {
     get => refraction;
-    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
     set
     {
       refraction = value;

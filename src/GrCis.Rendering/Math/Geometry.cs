@@ -61,7 +61,6 @@ public static partial class Geometry
   public static double IntPow(double x, int e) => e < 0 ? 1.0 / PowerLoop(x, -e) : PowerLoop(x, e);
 
   // Square-and-multiply for e >= 0; not recursive, so the JIT may inline it into the Phong model.
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   static double PowerLoop(double x, int e)
   {
     double result = 1.0;

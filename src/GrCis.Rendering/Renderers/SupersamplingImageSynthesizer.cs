@@ -139,7 +139,6 @@ public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
   static readonly uint PixelDimension = Strata.Dimension(SampleDimension.PixelGrid, 0);
 
   /// <summary>The pixel's colour from the sum of all its samples.</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public void FinishPixel(ReadOnlySpan<double> sum, double[] color)
   {
     double mul = 1.0 / (superXY * superXY);

@@ -169,7 +169,6 @@ public static class MT
   /// same call, so a pixel's samples may be taken in separate passes (progressive rendering). Stream 0 is the
   /// pixel's own (<see cref="StartPixel"/>).
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public static void StartStream(int r)
   {
     WorkerContext c = WorkerContext.Current;

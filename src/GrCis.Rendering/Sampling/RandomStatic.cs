@@ -27,7 +27,6 @@ public class RandomStatic
   public static ulong mapleMax() => 999999999989UL;
 
   /// <summary>SplitMix64 finaliser: a strong 64-bit mix used to derive independent sample streams.</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public static ulong Mix64(ulong z)
   {
     z += 0x9E3779B97F4A7C15UL;

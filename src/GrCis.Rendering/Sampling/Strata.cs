@@ -73,7 +73,6 @@ public static class Strata
   }
 
   /// <summary>The pattern of a dimension in the current pixel: a hash of seed, frame, pixel and dimension.</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal static uint Pattern(uint dimension)
   {
     Sampler s = Execution.WorkerContext.Current.Sampler;
@@ -87,7 +86,6 @@ public static class Strata
   internal static ulong SeedHash(long seed) => RandomStatic.Mix64((ulong)seed ^ 0xD1B54A32D192ED03UL);
 
   /// <summary><see cref="Pattern(long, int, int, int, uint)"/> from the seed's <see cref="SeedHash"/>.</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal static uint Pattern(ulong seedHash, int frame, int x, int y, uint dimension)
   {
     ulong h = RandomStatic.Mix64(seedHash ^ ((ulong)(uint)frame << 32 | dimension));

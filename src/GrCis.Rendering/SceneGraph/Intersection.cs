@@ -158,7 +158,6 @@ public class Intersection : IComparable<Intersection>
   /// Sets the surface colour to a copy of <paramref name="color"/> by overwriting this hit's own pooled
   /// copy when it holds the current colour (same values as a fresh clone, no allocation); false otherwise.
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal bool TryCopySurfaceColor(ReadOnlySpan<double> color)
   {
     double[]? own = spareColor;
@@ -173,7 +172,6 @@ public class Intersection : IComparable<Intersection>
   /// <c>new Intersection(solid)</c> except the three matrices, which completion always sets (the fast
   /// path reuses one object per thread and recursion depth).
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal void Reset(ISolid solid)
   {
     Enter = Front = false;
@@ -272,7 +270,6 @@ public class Intersection : IComparable<Intersection>
   /// the world point, normal, attributes and (when a checker or image texture reads them) texture coordinates, computed as the full
   /// completion computes them; tangents, object coordinates and the three matrices are left as they are.
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal void CompleteSurface(in Matrix4d localToWorld, in Matrix4d worldToLocal, IReflectanceModel model, IMaterial material,
                              double[]? color, LinkedList<ITexture>? textures, object? recursion, Accel.HitCompletion completion)
   {

@@ -16,7 +16,6 @@ internal static class SolidSupport
   /// caller's (preferably accurately computed) <c>halfB² − a c</c>. False when there is no
   /// pair of distinct roots.
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public static bool SolveQuadratic(double a, double halfB, double c, double disc, out double t0, out double t1)
   {
     t0 = t1 = 0.0;
@@ -68,7 +67,6 @@ internal static class SolidSupport
   // ---------------------------------------------------------------- fast path (IRecordSolid) support
 
   /// <summary>The test <see cref="Intersection.FirstIntersection"/> applies (with the world ray's |p1|²).</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public static bool Accepted(double t, double len2) => t > 0.0 && t * t * len2 > Intersection.RAY_EPSILON2;
 
   /// <summary>
@@ -116,7 +114,6 @@ internal static class SolidSupport
   /// First accepted record of the list [enter at <paramref name="t0"/>, exit at <paramref name="t1"/>]:
   /// <paramref name="second"/> tells which; <paramref name="insideBefore"/> is the CSG state before it.
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   public static bool FirstOfPair(double t0, double t1, double len2, out bool second, out bool insideBefore)
   {
     second = insideBefore = false;

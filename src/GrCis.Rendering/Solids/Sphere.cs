@@ -25,7 +25,6 @@ public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
   }
 
   /// <summary>Both parameters where the line meets the unit sphere (t0 &lt; t1); false on a miss or a touch.</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   protected static bool Roots(Vector3d p0, Vector3d p1, out double t0, out double t1)
   {
     // Quadratic |p0 + t p1|² = 1; the discriminant from the closest point, free of cancellation.

@@ -89,12 +89,12 @@ public class LibraryTypeCallTests
     FloatImage shifted = Render(Balls(new DefaultRayScene(), new ShiftedCamera(), Light()));
     Assert.False(Same(library, shifted));
     // The subclass without an override of its own renders as the library class.
-    Assert.True(Same(library, Render(Balls(new DefaultRayScene(), new ShiftedCameraBase(), Light()))));
+    Assert.True(Same(library, Render(Balls(new DefaultRayScene(), new PlainCameraSubclass(), Light()))));
   }
 
-  sealed class ShiftedCameraBase : StaticCamera
+  sealed class PlainCameraSubclass : StaticCamera
   {
-    public ShiftedCameraBase() : base(new Vector3d(0.0, 0.5, -5.0), new Vector3d(0.0, -0.1, 1.0), 50.0) { }
+    public PlainCameraSubclass() : base(new Vector3d(0.0, 0.5, -5.0), new Vector3d(0.0, -0.1, 1.0), 50.0) { }
   }
 
   [Fact]
