@@ -5,7 +5,8 @@ public enum AccelMode
 {
   /// <summary>
   /// Faithful GrCis path: every query goes through <see cref="IIntersectable.Intersect"/> of the whole scene,
-  /// with no search structure anywhere (a <see cref="TriangleMesh"/> tests every triangle, as in GrCis).
+  /// with no search structure anywhere (a <see cref="TriangleMesh"/> tests every triangle, as in GrCis), and
+  /// <see cref="RayTracing"/> samples through its own <see cref="RayTracing.shade"/> (no prepared kernel).
   /// </summary>
   None = 0,
 

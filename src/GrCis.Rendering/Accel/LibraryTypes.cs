@@ -95,11 +95,18 @@ internal static class LibraryTypes
   /// <summary>An image function class with its own first-hit query: every ray must go through it.</summary>
   public static bool OverridesFirstHit(Type function) => SubclassCheck.OverridesAny(function, FirstHitName);
 
-  /// <summary>An image function class with its own shadow query: every shadow ray must go through it.</summary>
-  public static bool OverridesOccluded(Type function) => SubclassCheck.OverridesAny(function, OccludedName);
-
   static readonly string[] FirstHitName = [RayCasting.FirstHitName];
-  static readonly string[] OccludedName = [RayTracing.OccludedName];
+
+  /// <summary>
+  /// A <see cref="RayTracing"/> whose class (the library's or a script's) keeps Whitted's sampling, shading and
+  /// shadow query (<c>GetSample</c>, <c>shade</c>, <c>Occluded</c>): the <see cref="WhittedKernel"/> may take its
+  /// samples. It may change the secondary rays' directions, its first-hit query or the shadow transmittance: the
+  /// kernel asks the function for those.
+  /// </summary>
+  public static bool ShadesAsWhitted(RayTracing function) =>
+    !SubclassCheck.OverridesAnyBelow(function.GetType(), typeof(RayTracing), WhittedShading);
+
+  static readonly string[] WhittedShading = [nameof(RayTracing.GetSample), RayTracing.ShadeName, RayTracing.OccludedName];
 
   /// <summary>
   /// Exactly the library's <see cref="RayTracing"/> or <see cref="RayCasting"/>: a new one with

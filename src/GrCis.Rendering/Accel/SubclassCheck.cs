@@ -24,6 +24,7 @@ internal static class SubclassCheck
   static readonly ConcurrentDictionary<(Type Actual, Type Library), bool> keepsGeometry = new();
   static readonly ConcurrentDictionary<(Type Actual, string Names), bool> overridesAny = new();
   static readonly ConcurrentDictionary<(Type Actual, Type Library, string Name), bool> overridesMethod = new();
+  static readonly ConcurrentDictionary<(Type Actual, Type Library, string Names), bool> overridesBelow = new();
 
   /// <summary>
   /// True when <paramref name="o"/> is a <paramref name="library"/> whose class overrides none of the
@@ -62,6 +63,20 @@ internal static class SubclassCheck
   /// </summary>
   public static bool OverridesAny(Type actual, IReadOnlyCollection<string> names) =>
     actual.Assembly != Library && overridesAny.GetOrAdd((actual, string.Join(",", names)), k => Overrides(k.Actual, typeof(object), names));
+
+  /// <summary>
+  /// True when a class of <paramref name="actual"/>'s chain below <paramref name="library"/>, the library's own
+  /// subclasses included, overrides a virtual member named in <paramref name="names"/> (any overload).
+  /// </summary>
+  public static bool OverridesAnyBelow(Type actual, Type library, IReadOnlyCollection<string> names) =>
+    actual != library && overridesBelow.GetOrAdd((actual, library, string.Join(",", names)), k =>
+    {
+      for (Type? c = k.Actual; c != null && c != k.Library; c = c.BaseType)
+        foreach (MethodInfo m in c.GetMethods(Declared))
+          if (m.IsVirtual && m.GetBaseDefinition().DeclaringType != c && Contains(names, m.Name))
+            return true;
+      return false;
+    });
 
   /// <summary>
   /// True when <paramref name="actual"/> overrides (not merely hides) <paramref name="library"/>'s virtual method

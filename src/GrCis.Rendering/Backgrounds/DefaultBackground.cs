@@ -1,5 +1,4 @@
 using System;
-using System.Runtime.CompilerServices;
 using OpenTK.Mathematics;
 
 namespace Rendering;
@@ -32,12 +31,11 @@ public class DefaultBackground : IBackground
 
   public virtual long GetColor(Vector3d p1, double[] color) => Fill(color);
 
-  /// <summary><see cref="GetColor"/> of this class itself (the shading calls it directly for exactly this type, inlined).</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  /// <summary><see cref="GetColor"/> of this class itself (the prepared Whitted kernel calls it directly for exactly this type).</summary>
   internal long Fill(double[] color)
   {
     IRayScene? s = scene;
-    double[]? own = s == null ? null : LibraryScene.Is(s) ? Unsafe.As<DefaultRayScene>(s).BackgroundColor : s.BackgroundColor;
+    double[]? own = s == null ? null : s.BackgroundColor;
     double[]? src = own is { Length: > 0 } sc ? sc
       : Color is { Length: > 0 } ? Color
       : DEFAULT_COLOR;

@@ -101,10 +101,9 @@ public class StaticCamera : ICamera
   public virtual bool GetRay(double x, double y, out Vector3d p0, out Vector3d p1) => Ray(x, y, out p0, out p1);
 
   /// <summary>
-  /// <see cref="GetRay"/> of this class itself: the sample loop calls it directly for a camera of exactly this type,
-  /// where it is inlined, with or without a profile to devirtualize the interface call.
+  /// <see cref="GetRay"/> of this class itself: the prepared Whitted kernel calls it directly for a camera of
+  /// exactly this type, without an interface call.
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal bool Ray(double x, double y, out Vector3d p0, out Vector3d p1)
   {
     p0 = center;

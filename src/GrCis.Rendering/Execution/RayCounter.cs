@@ -14,6 +14,9 @@ public static class RayCounter
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static void CountRay() => ShadingScratch.Current.Rays++;
 
+  /// <summary>Counts one ray that hit something (a blocked shadow ray included) on the calling thread.</summary>
+  public static void CountHit() => ShadingScratch.Current.Hits++;
+
   /// <summary>Rays counted on the calling thread so far.</summary>
   public static long ThreadRays => ShadingScratch.Current.Rays;
 }

@@ -66,6 +66,8 @@ public static class TileRenderer
     if (imageFunction is RayCasting rc)
       using (context.Enter())
         rc.Prepare(scene);
+    // The one place a frame's fast path is chosen: the function's prepared kernel, if it has one.
+    renderer.Kernel = Accel.WhittedKernel.For(imageFunction);
 
     IReadOnlyList<Tile> tiles = options.Tiles ?? MakeTiles(width, height, options.TileSize);
     int next = -1, done = 0;

@@ -46,10 +46,10 @@ public class DistributedRayTracing : MonteCarloRayTracing
     IdealExponent = d.IdealExponent;
   }
 
-  protected override bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction) =>
+  protected internal override bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction) =>
     Lobe(GlossyReflections, i, mirror, SampleDimension.GlossyReflection, depth, out direction);
 
-  protected override bool RefractionDirection(Intersection i, Vector3d refracted, int depth, out Vector3d direction) =>
+  protected internal override bool RefractionDirection(Intersection i, Vector3d refracted, int depth, out Vector3d direction) =>
     Lobe(GlossyRefractions, i, refracted.Normalized(), SampleDimension.GlossyRefraction, depth, out direction);
 
   /// <summary>A direction from the cos^H lobe around <paramref name="ideal"/>, on the same side of the surface; false when it falls on the other side.</summary>

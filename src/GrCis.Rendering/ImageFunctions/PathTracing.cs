@@ -288,7 +288,7 @@ public class PathTracing : MonteCarloRayTracing
       return true;
     // Stop short of the light's surface, so that surface is not taken for an occluder.
     double keep = 1.0 - 4.0 * Intersection.RAY_EPSILON / dist;
-    bool visible = keep <= 0.0 || !Blocked(scratch, x, toLight * keep);
+    bool visible = keep <= 0.0 || !Occluded(x, toLight * keep);
     scratch.Observer?.ShadowRay(x, toLight, !visible);
     return visible;
   }

@@ -134,12 +134,11 @@ public class RayCasting : IImageFunction
   /// The prepared snapshot of the current scene from the queries of the render this thread works for (or the
   /// thread's own outside a render); the thread's last snapshot is checked first, so a ray costs one comparison.
   /// </summary>
-  private protected PreparedScene? PreparedFor(ShadingScratch scratch)
+  internal PreparedScene? PreparedFor(ShadingScratch scratch)
   {
     if (Accel == AccelMode.None)
       return null;
-    IRayScene sc = Scene;
-    IIntersectable? source = LibraryScene.Is(sc) ? System.Runtime.CompilerServices.Unsafe.As<DefaultRayScene>(sc).Intersectable : sc.Intersectable;
+    IIntersectable? source = Scene.Intersectable;
     PreparedScene? ps = scratch.LastPrepared;
     if (ps != null && ps.Source == source)
       return ps;
@@ -180,7 +179,7 @@ public class RayCasting : IImageFunction
   [NonSerialized] SceneLists? lists;
 
   /// <summary>GrCis's list search of the current scene (kept while the scene's root stays the same).</summary>
-  private protected SceneLists Lists
+  internal SceneLists Lists
   {
     get
     {
@@ -207,7 +206,7 @@ public class RayCasting : IImageFunction
     Accel == AccelMode.None ? Lists.AllHits(p0, p1) : Scene.Intersectable?.Intersect(p0, p1);
 
   /// <summary>Completes the hit and applies its textures; returns the hash of the solid and texture cells.</summary>
-  protected static long CompleteAndTexture(Intersection i)
+  protected internal static long CompleteAndTexture(Intersection i)
   {
     i.Complete();
     long hash = i.Solid?.GetHashCode() ?? 0L;

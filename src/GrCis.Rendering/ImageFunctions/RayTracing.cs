@@ -1,37 +1,57 @@
 using System;
 using System.Collections.Generic;
-using System.Runtime.CompilerServices;
 using MathSupport;
 using OpenTK.Mathematics;
-using Rendering.Accel;
 using Rendering.Execution;
 using Rendering.Observation;
 
 namespace Rendering;
 
 /// <summary>
-/// Whitted ray tracing: local Phong lighting with shadow rays, then mirrored and refracted rays
-/// recursively while their importance stays above <see cref="MinImportance"/> and the depth below
-/// <see cref="MaxLevel"/>. Solids with a <see cref="PropertyName.RECURSION"/> attribute shade themselves.
+/// Whitted ray tracing. A ray from the camera finds the nearest surface; the surface is lit by every light source
+/// that is not hidden behind another solid (a shadow ray tests that), using the surface's reflectance model (Phong);
+/// then a mirrored ray and a refracted ray are traced recursively from the hit and their colours added, weighted by
+/// the material's reflection and transmission coefficients. The recursion stops at depth <see cref="MaxLevel"/> or
+/// when a ray's importance (how much it can still change the pixel) falls below <see cref="MinImportance"/>. Solids
+/// with a <see cref="PropertyName.RECURSION"/> attribute shade themselves (<see cref="RecursionFunction"/>).
+/// <para>
+/// <see cref="shade"/> is the algorithm; subclasses override it, <see cref="Occluded"/>, or the directions of the
+/// secondary rays (<see cref="ReflectionDirection"/>, <see cref="RefractionDirection"/>). The renderer samples this
+/// class, and subclasses that change none of the shading, through a prepared kernel that computes the same
+/// colours and hashes faster (<c>Rendering.Accel.WhittedKernel</c>); the image is the same either way.
+/// </para>
 /// </summary>
 [Serializable]
-public partial class RayTracing : RayCasting
+public class RayTracing : RayCasting
 {
+  /// <summary>Factor of the path hash for a refracted ray (the hash tells apart pixels that saw different things).</summary>
   protected const long HASH_REFRACT = 13L;
+
+  /// <summary>Factor of the path hash for a reflected ray.</summary>
   protected const long HASH_REFLECT = 17L;
+
+  /// <summary>Factor of the path hash for a solid's own <see cref="RecursionFunction"/>.</summary>
   protected const long HASH_RECURSION = 101L;
 
-  /// <summary>Maximal depth of secondary rays.</summary>
+  /// <summary>Maximal depth of secondary rays: the camera's ray is depth 0, each reflection or refraction adds one. Default 12.</summary>
   public int MaxLevel = 12;
 
-  /// <summary>Secondary rays weaker than this are not traced.</summary>
+  /// <summary>
+  /// Secondary rays whose importance (the product of the reflection or transmission coefficients along the path,
+  /// 1 for the camera's ray) is below this are not traced. Default 0.05.
+  /// </summary>
   public double MinImportance = 0.05;
 
+  /// <summary>Cast shadow rays: a light hidden behind a solid does not light the surface. Default true.</summary>
   public bool DoShadows = true;
+
+  /// <summary>Trace mirrored (reflected) rays. Default true.</summary>
   public bool DoReflections = true;
+
+  /// <summary>Trace refracted (transmitted) rays. Default true.</summary>
   public bool DoRefractions = true;
 
-  /// <summary>Honour solids' <see cref="RecursionFunction"/> attributes.</summary>
+  /// <summary>Let solids with a <see cref="PropertyName.RECURSION"/> attribute shade themselves. Default true.</summary>
   public bool DoRecursion = true;
 
   /// <summary>
@@ -46,8 +66,14 @@ public partial class RayTracing : RayCasting
   /// </summary>
   public bool FresnelRefraction;
 
-  public RayTracing(IRayScene? sc = null) : base(sc) =>
-    occludedOverridden = LibraryTypes.OverridesOccluded(GetType());
+  /// <summary>Receives every ray traced, when set (GrCis's 048 ray visualiser API); null costs nothing.</summary>
+  [NonSerialized]
+  public AbstractRayRegisterer? rayRegisterer;
+
+  /// <summary>A Whitted ray tracer of scene <paramref name="sc"/> (null: the scene being rendered, <see cref="MT.scene"/>).</summary>
+  public RayTracing(IRayScene? sc = null) : base(sc)
+  {
+  }
 
   /// <inheritdoc/>
   public override void CopySettingsFrom(RayCasting source)
@@ -66,217 +92,212 @@ public partial class RayTracing : RayCasting
     rayRegisterer = rt.rayRegisterer;
   }
 
-  // A subclass's Occluded must see every shadow ray; otherwise the scratch at hand counts it.
-  [NonSerialized] readonly bool occludedOverridden;
-
-  public override long GetSample(double x, double y, double[] color) => Sample(x, y, color);
-
   /// <summary>
-  /// <see cref="GetSample"/> of this class itself, which the sample loop calls directly for a function of exactly
-  /// this type. The library's own scene and camera are read without interface calls, which code compiled without a
-  /// profile (ReadyToRun, a render's first moments) would otherwise pay per sample (docs/performance.md, "A render's first moments").
+  /// The colour of image point (<paramref name="x"/>, <paramref name="y"/>) (in pixels, from the top left corner):
+  /// the camera's ray through it, shaded. Returns the path hash (11 when the camera gives no ray).
   /// </summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  internal long Sample(double x, double y, double[] color)
+  public override long GetSample(double x, double y, double[] color)
   {
-    WorkerContext context = WorkerContext.Current;
-    context.DoubleX = x;
-    context.DoubleY = y;
-    Zero(color);
-    IRayScene sc = Scene;
-    ICamera? camera = LibraryScene.Is(sc) ? Unsafe.As<DefaultRayScene>(sc).Camera : sc.Camera;
-    if (camera == null)
-      return 11L;
-    Vector3d p0, p1;
-    if (camera.GetType() == typeof(StaticCamera))
-      Unsafe.As<StaticCamera>(camera).Ray(x, y, out p0, out p1);
-    else if (!camera.GetRay(x, y, out p0, out p1))
+    MT.doubleX = x;
+    MT.doubleY = y;
+    Array.Clear(color);
+    ICamera? camera = Scene.Camera;
+    if (camera == null || !camera.GetRay(x, y, out Vector3d p0, out Vector3d p1))
       return 11L;
     return shade(0, 1.0, ref p0, ref p1, color);
   }
 
-  /// <summary>True when something (not marked NO_SHADOW) lies between the point and the light at <c>p0 + dir</c>.</summary>
-  // Names of the hit-reading virtuals for RayCasting.HitReaders: constants, so no static initialization order matters.
-  internal const string ShadeName = nameof(shade), OccludedName = nameof(Occluded), ShadowTransmittanceName = nameof(ShadowTransmittance);
-
-  protected virtual bool Occluded(Vector3d p0, Vector3d dir) => Occluded(ShadingScratch.Current, p0, dir);
-
   /// <summary>
-  /// The shadow query every shading path asks: a subclass's own <see cref="Occluded(Vector3d, Vector3d)"/> when it
-  /// overrides it, else the scratch at hand answers (and counts the ray).
+  /// The colour seen along the ray from <paramref name="p0"/> in direction <paramref name="p1"/>, written to
+  /// <paramref name="color"/>: Whitted's recursive algorithm. <paramref name="depth"/> is the recursion depth (0 for
+  /// the camera's ray), <paramref name="importance"/> how much this ray can still change the pixel (1 for the
+  /// camera's ray). Returns a hash of what the ray saw (solids, textures, lights), which adaptive supersampling
+  /// compares between neighbouring samples.
   /// </summary>
-  private protected bool Blocked(ShadingScratch scratch, Vector3d p0, Vector3d dir) =>
-    occludedOverridden ? Occluded(p0, dir) : Occluded(scratch, p0, dir);
-
-  bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
-  {
-    scratch.Rays++;
-    PreparedScene? ps = PreparedFor(scratch);
-    return ps != null ? ps.AnyHit(p0, dir) : Lists.AnyHit(p0, dir);
-  }
-
-  /// <summary>Receives every ray traced, when set (GrCis's 048 ray visualiser API); null costs nothing.</summary>
-  [NonSerialized]
-  public AbstractRayRegisterer? rayRegisterer;
-
-  /// <summary>
-  /// Colour seen along the ray <c>p0 + t p1</c>, written to <paramref name="color"/>; returns the path hash.
-  /// The ray is reported to the render's observer, when one is attached (<see cref="RenderContext.Observer"/>).
-  /// </summary>
-  [System.Runtime.CompilerServices.SkipLocalsInit]   // the stack buffers are written before they are read
   public virtual long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
   {
+    // Report the ray to an observer (the pixel probe, the ray views), when one listens.
     ShadingScratch scratch = ShadingScratch.Current;
-    RayObserver? observer = scratch.Observer;
-    int rayDepth = depth;
-    RayKind kind = RayKind.Primary;
-    if (observer != null)
-    {
-      // Depth 0 is the camera's ray; deeper rays were classified by the code that spawned them.
-      kind = depth == 0 ? RayKind.Primary : scratch.NextKind;
-      scratch.NextKind = RayKind.Secondary;
-      observer.BeginRay(kind, depth, p0, p1);
-    }
+    RayKind kind = scratch.BeginRay(depth, p0, p1);
 
-    IRayScene sc = Scene;
-    Vector3d direction = p1;
-    Intersection? i = FirstHitAt(scratch, depth, p0, direction);
-    long hash;
-    bool library = LibraryScene.Is(sc);
-    if (i == null)
-    {
-      rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerNormal, depth, p0, direction * 100000.0);
-      IBackground? background = library ? Unsafe.As<DefaultRayScene>(sc).Background : sc.Background;
-      if (background != null)
-        hash = background.GetType() == typeof(DefaultBackground)
-          ? Unsafe.As<DefaultBackground>(background).Fill(color)
-          : background.GetColor(p1, color);
-      else
-      {
-        FillBackground(sc, color);
-        hash = 1L;
-      }
-      goto done;
-    }
+    // The nearest surface along the ray.
+    Intersection? i = FirstHitAt(depth, p0, p1);
+    long hash = i == null
+      ? ShadeBackground(depth, p0, p1, color)
+      : ShadeSurface(i, depth, importance, p0, p1, color);
 
-    scratch.Hits++;   // counted here, on a branch taken anyway
-    hash = CompleteAndTexture(i);
+    scratch.EndRay(kind, depth, p0, p1, i);
+    return hash;
+  }
+
+  /// <summary>A ray that hits nothing sees the background.</summary>
+  long ShadeBackground(int depth, Vector3d p0, Vector3d p1, double[] color)
+  {
+    rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerNormal, depth, p0, p1 * 100000.0);
+    IBackground? background = Scene.Background;
+    return background != null ? background.GetColor(p1, color) : FillBackground(Scene, color);
+  }
+
+  /// <summary>The colour of the surface hit <paramref name="i"/> seen along the ray: local lighting, then the mirrored and refracted rays.</summary>
+  long ShadeSurface(Intersection i, int depth, double importance, Vector3d p0, Vector3d p1, double[] color)
+  {
+    RayCounter.CountHit();
+    // Everything about the hit: point, normal, material, textures applied (they may change the colour or the normal).
+    long hash = CompleteAndTexture(i);
     rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.unknown, depth, p0, i);
-    int bands = color.Length;
-    Zero(color);
+    Array.Clear(color);
 
+    // A solid may shade itself (glow, custom recursion).
     if (DoRecursion && i.RecursionAttribute is RecursionFunction recursion)
     {
-      hash = ShadeRecursion(recursion, i, depth, importance, ref direction, color, hash);
-      goto done;
+      hash += HASH_RECURSION * recursion(i, p1, importance, out RayRecursion rr);
+      return rr == null ? hash : rr.Recursion(this, i, hash, depth, color);
     }
 
-    Vector3d viewer = -p1.Normalized();
+    Vector3d viewer = -p1.Normalized();   // from the surface towards the eye
     double[] surface = i.SurfaceColor!;
 
-    ICollection<ILightSource>? sources = library ? Unsafe.As<DefaultRayScene>(sc).Sources : sc.Sources;
+    // 1. Local lighting: every light source that sees the point, through the reflectance model.
+    ICollection<ILightSource>? sources = Scene.Sources;
     if (sources == null || sources.Count == 0)
-      AddScaled(color, surface, 1.0);
+      AddScaled(color, surface, 1.0);   // no lights: the surface colour as it is
     else
     {
-      i.Material = scratch.Material(i.Material!, surface, depth);
-      // The library's Phong model writes into a stack buffer instead of a new array per light.
-      bool phong = LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial && surface.Length <= 16;
-      Span<double> buffer = stackalloc double[16];
-
-      // A LinkedList (GrCis's type) is walked by nodes: no boxed enumerator per hit.
-      if (sources is LinkedList<ILightSource> linked)
-      {
-        for (LinkedListNode<ILightSource>? n = linked.First; n != null; n = n.Next)
-          hash = AddLight(scratch, n.Value, i, viewer, phong, surface, buffer, color, hash);
-      }
-      else
-        foreach (ILightSource source in sources)
-          hash = AddLight(scratch, source, i, viewer, phong, surface, buffer, color, hash);
+      // The material with the (textured) surface colour: GrCis clones it per hit, a per-depth copy here.
+      i.Material = ShadingScratch.Current.Material(i.Material!, surface, depth);
+      foreach (ILightSource source in sources)
+        hash = AddLight(source, i, viewer, color, hash);
     }
 
+    // 2. Recursion: stop at the maximal depth.
     if (depth++ >= MaxLevel || (!DoReflections && !DoRefractions))
-      goto done;
-
-    double[] comp = scratch.Buffer(depth, bands);
+      return hash;
+    double[] comp = ShadingScratch.Current.Buffer(depth, color.Length);   // a secondary ray's colour
     Vector3d origin = i.CoordWorld;
-    Vector3d viewerUnit = default;
-    bool haveUnit = false;
 
+    // 3. The mirrored ray, weighted by the specular reflectance.
     if (DoReflections)
     {
       Vector3d r = Geometry.SpecularReflection(i.Normal, viewer);
-      Span<double> ksBuffer = stackalloc double[16];
-      scoped ReadOnlySpan<double> ks = default;
-      bool have;
-      if (LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial pm && pm.Color.Length is > 0 and <= 16)
+      double[]? ks = i.ReflectanceModel!.ColorReflection(i, viewer, r, ReflectionComponent.SPECULAR_REFLECTION);
+      if (ks != null)
       {
-        Span<double> k = ksBuffer[..pm.Color.Length];
-        if (viewer.X == 0.0 && viewer.Y == 0.0 && viewer.Z == 0.0)
-          PhongModel.ColorReflection(pm, i.Normal, viewer, r, ReflectionComponent.SPECULAR_REFLECTION, k);
-        else
+        double newImportance = importance * Max(ks);
+        if (newImportance >= MinImportance && ReflectionDirection(i, r, depth, out Vector3d reflected))
         {
-          // The model's normalized input, kept for the refracted direction (which normalizes the same vector).
-          viewerUnit = viewer.Normalized();
-          haveUnit = true;
-          PhongModel.Directional(pm, i.Normal, viewerUnit, r, ReflectionComponent.SPECULAR_REFLECTION, k);
-        }
-        ks = k;
-        have = true;
-      }
-      else
-      {
-        double[]? arr = i.ReflectanceModel!.ColorReflection(i, viewer, r, ReflectionComponent.SPECULAR_REFLECTION);
-        have = arr != null;
-        if (have)
-          ks = arr;
-      }
-      if (have)
-      {
-        double newImportance = importance * MaxBand(ks);
-        if (newImportance >= MinImportance)
-        {
-          if (ReflectionDirection(i, r, depth, out Vector3d reflected))
-          {
-            if (observer != null)
-              scratch.NextKind = RayKind.Reflected;
-            hash += HASH_REFLECT * shade(depth, newImportance, ref origin, ref reflected, comp);
-            if (ks.Length >= bands)
-              for (int b = 0; b < bands; b++)
-                color[b] += ks[b] * comp[b];
-            else
-              for (int b = 0; b < bands; b++)
-                color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
-          }
+          ShadingScratch.Current.NextRay(RayKind.Reflected);
+          hash += HASH_REFLECT * shade(depth, newImportance, ref origin, ref reflected, comp);
+          for (int b = 0; b < color.Length; b++)
+            color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
         }
       }
     }
 
+    // 4. The refracted ray, weighted by the transmission coefficient Kt.
     if (DoRefractions)
     {
       IMaterial material = i.Material!;
-      double kt = Kt(material);
+      double kt = material.Kt;
       if (FresnelRefraction && kt > 0.0)
-        kt *= 1.0 - SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), Index(material));
+        kt *= 1.0 - SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), material.n);
       double newImportance = importance * kt;
       if (newImportance < MinImportance)
-        goto done;
-      Vector3d r = haveUnit
-        ? Geometry.SpecularRefractionUnit(i.Normal, Index(material), viewerUnit)
-        : Geometry.SpecularRefraction(i.Normal, Index(material), viewer);
-      if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0 || !RefractionDirection(i, r, depth, out r))
-        goto done;
-      if (observer != null)
-        scratch.NextKind = RayKind.Refracted;
+        return hash;
+      Vector3d r = Geometry.SpecularRefraction(i.Normal, material.n, viewer);
+      if (r == Vector3d.Zero || !RefractionDirection(i, r, depth, out r))   // zero: total internal reflection
+        return hash;
+      ShadingScratch.Current.NextRay(RayKind.Refracted);
       hash += HASH_REFRACT * shade(depth, newImportance, ref origin, ref r, comp);
       AddScaled(color, comp, kt);
     }
-
-  done:
-    // Every way out passes here, so an observer sees the end of each ray it saw begin (the hit stays valid
-    // until the next ray at this depth).
-    observer?.EndRay(kind, rayDepth, p0, p1, i);
     return hash;
+  }
+
+  /// <summary>
+  /// Adds the light of <paramref name="source"/> reflected at hit <paramref name="i"/> towards
+  /// <paramref name="viewer"/> to <paramref name="color"/>, unless a solid casts a shadow; returns the hash.
+  /// </summary>
+  long AddLight(ILightSource source, Intersection i, Vector3d viewer, double[] color, long hash)
+  {
+    // The light's intensity at the point and the direction to it (zero for an ambient light).
+    double[]? intensity = source.GetIntensity(i, out Vector3d dir);
+    if (rayRegisterer != null && MT.singleRayTracing && source.position is Vector3d lightPosition)
+      rayRegisterer.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerShadow, i.CoordWorld, lightPosition);
+    if (intensity == null)
+      return hash;
+
+    // The shadow ray: is anything between the point and the light?
+    double transmit = 1.0;
+    if (DoShadows && dir != Vector3d.Zero)
+    {
+      if (TransparentShadows)
+      {
+        RayCounter.CountRay();
+        transmit = ShadowTransmittance(i.CoordWorld, dir);
+      }
+      else
+        transmit = Occluded(i.CoordWorld, dir) ? 0.0 : 1.0;
+      ShadingScratch.Current.Observer?.ShadowRay(i.CoordWorld, dir, transmit <= 0.0);
+      if (transmit <= 0.0)
+      {
+        RayCounter.CountHit();   // a blocked shadow ray
+        return hash;
+      }
+    }
+
+    // The reflectance model: how much of the light goes towards the viewer.
+    double[]? reflection = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
+    if (reflection == null)
+      return hash;
+    for (int b = 0; b < color.Length; b++)
+      color[b] += transmit * intensity[Math.Min(b, intensity.Length - 1)] * reflection[Math.Min(b, reflection.Length - 1)];
+    return hash * HASH_LIGHT + source.GetHashCode();
+  }
+
+  // Names of the virtuals that see hits or decide the shading (RayCasting.HitReaders, LibraryTypes.ShadesAsWhitted).
+  internal const string ShadeName = nameof(shade), OccludedName = nameof(Occluded), ShadowTransmittanceName = nameof(ShadowTransmittance);
+
+  /// <summary>
+  /// True when something (not marked <see cref="PropertyName.NO_SHADOW"/>) lies between the point
+  /// <paramref name="p0"/> and the light at <c>p0 + dir</c>: the shadow ray.
+  /// </summary>
+  protected virtual bool Occluded(Vector3d p0, Vector3d dir)
+  {
+    RayCounter.CountRay();
+    return Query.AnyHit(p0, dir);
+  }
+
+  /// <summary>
+  /// Fraction of light passing from <paramref name="p0"/> to the light at <c>p0 + dir</c>: the product
+  /// of the Kt of every surface entered on the way (0 = blocked). Uses the faithful all-hits query.
+  /// </summary>
+  protected internal virtual double ShadowTransmittance(Vector3d p0, Vector3d dir)
+  {
+    LinkedList<Intersection>? list = IntersectScene(p0, dir);
+    if (list == null)
+      return 1.0;
+    double transmit = 1.0;
+    double len2 = dir.LengthSquared;
+    bool first = true;
+    foreach (Intersection hit in list)
+    {
+      if (hit.T <= 0.0 || hit.T * hit.T * len2 <= Intersection.RAY_EPSILON2)
+        continue;
+      if (hit.Far(1.0, ref dir))
+        break;
+      if (hit.Solid != null && hit.Solid.GetLocalAttribute(PropertyName.NO_SHADOW) != null)
+        continue;
+      // Count each solid once: where the ray enters it, or at its exit when the ray starts inside.
+      if (hit.Enter || first)
+      {
+        double kt = (hit.Solid?.GetAttribute(PropertyName.MATERIAL) as IMaterial)?.Kt ?? 0.0;
+        transmit *= kt;
+        if (transmit <= 0.0)
+          return 0.0;
+      }
+      first = false;
+    }
+    return transmit;
   }
 
   /// <summary>
@@ -284,20 +305,23 @@ public partial class RayTracing : RayCasting
   /// given the mirror direction; false = no reflected ray. Whitted: the mirror direction itself.
   /// <see cref="Distributed.DistributedRayTracing"/> samples a glossy lobe around it.
   /// </summary>
-  protected virtual bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction)
+  protected internal virtual bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction)
   {
     direction = mirror;
     return true;
   }
 
   /// <summary>The direction of the refracted ray, given the ideal one; false = no refracted ray. Whitted: the ideal direction.</summary>
-  protected virtual bool RefractionDirection(Intersection i, Vector3d refracted, int depth, out Vector3d direction)
+  protected internal virtual bool RefractionDirection(Intersection i, Vector3d refracted, int depth, out Vector3d direction)
   {
     direction = refracted;
     return true;
   }
 
-  /// <summary>Schlick's approximation of the Fresnel reflectance for incidence cosine <paramref name="cos"/>.</summary>
+  /// <summary>
+  /// Schlick's approximation of the Fresnel reflectance of an interface with relative index of refraction
+  /// <paramref name="n"/>, for incidence cosine <paramref name="cos"/> (1 = along the normal).
+  /// </summary>
   public static double SchlickReflectance(double cos, double n)
   {
     double r0 = (n - 1.0) / (n + 1.0);
@@ -306,31 +330,25 @@ public partial class RayTracing : RayCasting
     return r0 + (1.0 - r0) * m * m * m * m * m;
   }
 
-  /// <summary>Custom shading by the solid's <see cref="RecursionFunction"/>: the function's <see cref="RayRecursion"/> does the rest.</summary>
-  long ShadeRecursion(RecursionFunction recursion, Intersection i, int depth, double importance, ref Vector3d p1, double[] color, long hash)
-  {
-    hash += HASH_RECURSION * recursion(i, p1, importance, out RayRecursion rr);
-    return rr == null ? hash : rr.Recursion(this, i, hash, depth, color);
-  }
-
-  static void FillBackground(IRayScene sc, double[] color)
+  /// <summary>The scene's <see cref="IRayScene.BackgroundColor"/> (black when it has none), for a scene without a background object; returns the hash 1.</summary>
+  internal static long FillBackground(IRayScene sc, double[] color)
   {
     double[]? bg = sc.BackgroundColor;
     if (bg == null || bg.Length == 0)
-    {
       Array.Clear(color);
-      return;
-    }
-    for (int b = 0; b < color.Length; b++)
-      color[b] = bg[Math.Min(b, bg.Length - 1)];
+    else
+      for (int b = 0; b < color.Length; b++)
+        color[b] = bg[Math.Min(b, bg.Length - 1)];
+    return 1L;
   }
 
-  /// <summary>Zeroes a colour of a few bands inline (Array.Clear's call costs more than three stores).</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-  internal static void Zero(double[] color)
+  /// <summary>The largest of the bands (the importance a reflectance passes on).</summary>
+  static double Max(double[] bands)
   {
-    for (int b = 0; b < color.Length; b++)
-      color[b] = 0.0;
+    double max = bands[0];
+    for (int b = 1; b < bands.Length; b++)
+      max = Math.Max(max, bands[b]);
+    return max;
   }
 
   /// <summary>color += k · src; a one-element src adds the same value to every band.</summary>

@@ -56,6 +56,31 @@ internal sealed class ShadingScratch
   /// <summary>Kind of the next shaded ray, set by its caller for the observer; read once, then back to Secondary.</summary>
   public Observation.RayKind NextKind = Observation.RayKind.Secondary;
 
+  /// <summary>
+  /// Tells the observer, if any, that a ray of recursion <paramref name="depth"/> begins; returns its kind (depth 0 is
+  /// the camera's ray, a deeper one was classified by the code that spawned it with <see cref="NextRay"/>).
+  /// </summary>
+  public Observation.RayKind BeginRay(int depth, in OpenTK.Mathematics.Vector3d origin, in OpenTK.Mathematics.Vector3d direction)
+  {
+    if (Observer == null)
+      return Observation.RayKind.Primary;
+    Observation.RayKind kind = depth == 0 ? Observation.RayKind.Primary : NextKind;
+    NextKind = Observation.RayKind.Secondary;
+    Observer.BeginRay(kind, depth, origin, direction);
+    return kind;
+  }
+
+  /// <summary>Tells the observer, if any, that the ray begun by <see cref="BeginRay"/> ended at <paramref name="hit"/> (null: it left the scene).</summary>
+  public void EndRay(Observation.RayKind kind, int depth, in OpenTK.Mathematics.Vector3d origin, in OpenTK.Mathematics.Vector3d direction, Intersection? hit) =>
+    Observer?.EndRay(kind, depth, origin, direction, hit);
+
+  /// <summary>The kind of the next ray to be shaded (reflected, refracted), for the observer.</summary>
+  public void NextRay(Observation.RayKind kind)
+  {
+    if (Observer != null)
+      NextKind = kind;
+  }
+
   PhongMaterial?[] materials = new PhongMaterial?[16];
   double[]?[] buffers = new double[]?[16];
   Intersection?[] intersections = new Intersection?[16];
@@ -93,7 +118,7 @@ internal sealed class ShadingScratch
     if (b == null || b.Length != bands)
       pool[depth] = b = new double[bands];
     else
-      RayTracing.Zero(b);
+      Accel.WhittedKernel.Zero(b);
     return b;
   }
 

@@ -24,8 +24,7 @@ public class AmbientLightSource : ILightSource
 
   public virtual double[]? GetIntensity(Intersection intersection, out Vector3d dir) => Intensity(out dir);
 
-  /// <summary><see cref="GetIntensity"/> of this class itself (the Whitted light loop calls it directly, inlined, for exactly this type).</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  /// <summary><see cref="GetIntensity"/> of this class itself (the prepared Whitted kernel calls it directly for exactly this type).</summary>
   internal double[]? Intensity(out Vector3d dir)
   {
     dir = Vector3d.Zero;

@@ -42,8 +42,7 @@ public class PointLightSource : ILightSource
 
   public virtual double[]? GetIntensity(Intersection intersection, out Vector3d dir) => Intensity(intersection, out dir);
 
-  /// <summary><see cref="GetIntensity"/> of this class itself (the Whitted light loop calls it directly, inlined, for exactly this type).</summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+  /// <summary><see cref="GetIntensity"/> of this class itself (the prepared Whitted kernel calls it directly for exactly this type).</summary>
   internal double[]? Intensity(Intersection intersection, out Vector3d dir)
   {
     dir = (position ?? Vector3d.Zero) - intersection.CoordWorld;

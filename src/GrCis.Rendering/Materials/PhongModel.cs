@@ -29,7 +29,6 @@ public class PhongModel : IReflectanceModel
   /// The same computation into a caller's buffer of <c>mat.Color.Length</c> bands (the shading hot path
   /// uses it to avoid one array per light and hit).
   /// </summary>
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   internal static void ColorReflection(PhongMaterial mat, in Vector3d normal, in Vector3d input, in Vector3d output, ReflectionComponent comp, Span<double> result)
   {
     // Ambient light has no direction.

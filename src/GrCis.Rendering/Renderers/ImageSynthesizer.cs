@@ -10,7 +10,25 @@ namespace Rendering;
 /// </summary>
 public abstract class ImageSynthesizer : IRenderer
 {
-  public IImageFunction? ImageFunction { get; set; }
+  /// <summary>The image function whose samples this renderer takes (null: <see cref="MT.imageFunction"/>).</summary>
+  public IImageFunction? ImageFunction
+  {
+    get => imageFunction;
+    set
+    {
+      imageFunction = value;
+      Kernel = null;
+    }
+  }
+
+  IImageFunction? imageFunction;
+
+  /// <summary>
+  /// The prepared kernel of <see cref="ImageFunction"/> for the frame being rendered, when it has one: chosen by the
+  /// tile renderer once per frame (<see cref="Accel.WhittedKernel.For"/>), cleared when the function changes. It
+  /// takes the same samples as the function's <see cref="IImageFunction.GetSample"/>, faster.
+  /// </summary>
+  internal Accel.WhittedKernel? Kernel;
 
   public int Width { get; set; } = 640;
 

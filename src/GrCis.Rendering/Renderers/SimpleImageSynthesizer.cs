@@ -10,6 +10,9 @@ public class SimpleImageSynthesizer : ImageSynthesizer
   public override void RenderPixelLinear(int x, int y, double[] color)
   {
     MT.StartPixel(x, y, 1);
-    Function.GetSample(x + 0.5, y + 0.5, color);
+    if (Kernel is Accel.WhittedKernel kernel)
+      kernel.Sample(x + 0.5, y + 0.5, color);
+    else
+      Function.GetSample(x + 0.5, y + 0.5, color);
   }
 }

@@ -70,7 +70,7 @@ public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
     if (!IsStreamStart(first, superXY))
       throw new ArgumentOutOfRangeException(nameof(first), first, "A pass must begin at sample 0, 1 or a diagonal's first sample.");
     IImageFunction f = Function;
-    bool whitted = f.GetType() == typeof(RayTracing);
+    Accel.WhittedKernel? kernel = Kernel;
     int bands = color.Length, n = superXY;
     double step = 1.0 / n;
     double amplitude = Math.Clamp(Jittering, 0.0, 1.0) * step;
@@ -110,9 +110,9 @@ public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
         sx += amplitude * (subX + rnd.UniformNumber()) * step;
         sy += amplitude * (subY + rnd.UniformNumber()) * step;
       }
-      // The library's Whitted function called directly (inlined), with or without a profile to devirtualize it.
-      if (whitted)
-        System.Runtime.CompilerServices.Unsafe.As<RayTracing>(f).Sample(sx, sy, color);
+      // The frame's prepared kernel, when the function has one, called directly (inlined).
+      if (kernel != null)
+        kernel.Sample(sx, sy, color);
       else
         f.GetSample(sx, sy, color);
       for (int b = 0; b < bands; b++)

@@ -1,9 +1,10 @@
 using System;
 using Rendering;
+using Rendering.Accel;
 
 namespace GrCis.Rendering.Tests.ImageFunctions;
 
-/// <summary>The mirror's largest reflectance band (<c>RayTracing.MaxBand</c>) is Math.Max folded from band 0, bit for bit.</summary>
+/// <summary>The mirror's largest reflectance band (<c>WhittedKernel.MaxBand</c>) is Math.Max folded from band 0, bit for bit.</summary>
 public class MaxBandTests
 {
   static double Fold(double[] bands)
@@ -26,7 +27,7 @@ public class MaxBandTests
         bands[b] = r.Next(3) == 0 ? r.NextDouble() - 0.5 : pool[r.Next(pool.Length)];
       if (n % 4 == 0)
         Array.Fill(bands, bands[0]);   // all bands equal, as a Phong reflectance gives them
-      Assert.Equal(BitConverter.DoubleToInt64Bits(Fold(bands)), BitConverter.DoubleToInt64Bits(RayTracing.MaxBand(bands)));
+      Assert.Equal(BitConverter.DoubleToInt64Bits(Fold(bands)), BitConverter.DoubleToInt64Bits(WhittedKernel.MaxBand(bands)));
     }
   }
 }

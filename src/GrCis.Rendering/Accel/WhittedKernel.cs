@@ -1,0 +1,327 @@
+using System;
+using System.Collections.Generic;
+using System.Runtime.CompilerServices;
+using MathSupport;
+using OpenTK.Mathematics;
+using Rendering.Observation;
+
+namespace Rendering.Accel;
+
+/// <summary>
+/// The prepared form of <see cref="RayTracing"/>: the same algorithm as <see cref="RayTracing.shade"/>, value for
+/// value and in the same order (the image hashes and <c>WhittedKernelTests</c> hold the two equal), written for
+/// speed. <see cref="For"/> decides once per frame whether a function may be sampled through it: the library's
+/// <see cref="RayTracing"/> and any subclass that keeps its shading (<see cref="LibraryTypes.ShadesAsWhitted"/>;
+/// <see cref="Distributed.DistributedRayTracing"/> changes only the reflected and refracted directions, which the
+/// kernel asks the function for). Everything else is sampled through <see cref="IImageFunction.GetSample"/>.
+/// <para>
+/// What makes it fast, all decided here rather than in the classes students read: the library's own scene, camera,
+/// background, lights and Phong material are read without interface calls (code compiled without a profile, such as
+/// ReadyToRun images and a render's first moments, would otherwise pay one per sample); the Phong model writes into
+/// stack buffers instead of a new array per light; the thread's shading scratch is fetched once per ray.
+/// </para>
+/// </summary>
+internal sealed class WhittedKernel
+{
+  const long HASH_REFRACT = 13L, HASH_REFLECT = 17L, HASH_RECURSION = 101L, HASH_LIGHT = 101L;
+
+  readonly RayTracing function;
+
+  WhittedKernel(RayTracing function) => this.function = function;
+
+  /// <summary>
+  /// The kernel of <paramref name="function"/>, or null when it must be sampled through its own <c>GetSample</c>:
+  /// a function that changes the shading, or one on GrCis's faithful path (<see cref="AccelMode.None"/>).
+  /// </summary>
+  public static WhittedKernel? For(IImageFunction function) =>
+    function is RayTracing rt && rt.Accel != AccelMode.None && LibraryTypes.ShadesAsWhitted(rt) ? new WhittedKernel(rt) : null;
+
+  /// <summary><see cref="RayTracing.GetSample"/> of the function.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]   // into the sample loop
+  public long Sample(double x, double y, double[] color)
+  {
+    Execution.WorkerContext context = Execution.WorkerContext.Current;
+    context.DoubleX = x;
+    context.DoubleY = y;
+    Zero(color);
+    IRayScene sc = function.Scene;
+    ICamera? camera = LibraryScene.Is(sc) ? Unsafe.As<DefaultRayScene>(sc).Camera : sc.Camera;
+    if (camera == null)
+      return 11L;
+    Vector3d p0, p1;
+    if (camera.GetType() == typeof(StaticCamera))
+      Unsafe.As<StaticCamera>(camera).Ray(x, y, out p0, out p1);
+    else if (!camera.GetRay(x, y, out p0, out p1))
+      return 11L;
+    return Shade(0, 1.0, ref p0, ref p1, color);
+  }
+
+  /// <summary><see cref="RayTracing.shade"/> of the function.</summary>
+  [SkipLocalsInit]   // the stack buffers are written before they are read
+  long Shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
+  {
+    RayTracing f = function;
+    ShadingScratch scratch = ShadingScratch.Current;
+    RayObserver? observer = scratch.Observer;
+    int rayDepth = depth;
+    RayKind kind = RayKind.Primary;
+    if (observer != null)
+    {
+      kind = depth == 0 ? RayKind.Primary : scratch.NextKind;
+      scratch.NextKind = RayKind.Secondary;
+      observer.BeginRay(kind, depth, p0, p1);
+    }
+
+    IRayScene sc = f.Scene;
+    Vector3d direction = p1;
+    Intersection? i = f.FirstHitAt(scratch, depth, p0, direction);
+    long hash;
+    bool library = LibraryScene.Is(sc);
+    if (i == null)
+    {
+      f.rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerNormal, depth, p0, direction * 100000.0);
+      IBackground? background = library ? Unsafe.As<DefaultRayScene>(sc).Background : sc.Background;
+      if (background != null)
+        hash = background.GetType() == typeof(DefaultBackground)
+          ? Unsafe.As<DefaultBackground>(background).Fill(color)
+          : background.GetColor(p1, color);
+      else
+        hash = RayTracing.FillBackground(sc, color);
+      goto done;
+    }
+
+    scratch.Hits++;
+    hash = RayCasting.CompleteAndTexture(i);
+    f.rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.unknown, depth, p0, i);
+    int bands = color.Length;
+    Zero(color);
+
+    if (f.DoRecursion && i.RecursionAttribute is RecursionFunction recursion)
+    {
+      hash += HASH_RECURSION * recursion(i, direction, importance, out RayRecursion rr);
+      if (rr != null)
+        hash = rr.Recursion(f, i, hash, depth, color);
+      goto done;
+    }
+
+    Vector3d viewer = -p1.Normalized();
+    double[] surface = i.SurfaceColor!;
+
+    ICollection<ILightSource>? sources = library ? Unsafe.As<DefaultRayScene>(sc).Sources : sc.Sources;
+    if (sources == null || sources.Count == 0)
+      AddScaled(color, surface, 1.0);
+    else
+    {
+      i.Material = scratch.Material(i.Material!, surface, depth);
+      // The library's Phong model writes into a stack buffer instead of a new array per light.
+      bool phong = LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial && surface.Length <= 16;
+      Span<double> buffer = stackalloc double[16];
+
+      // A LinkedList (GrCis's type) is walked by nodes: no boxed enumerator per hit.
+      if (sources is LinkedList<ILightSource> linked)
+      {
+        for (LinkedListNode<ILightSource>? n = linked.First; n != null; n = n.Next)
+          hash = AddLight(scratch, n.Value, i, viewer, phong, surface, buffer, color, hash);
+      }
+      else
+        foreach (ILightSource source in sources)
+          hash = AddLight(scratch, source, i, viewer, phong, surface, buffer, color, hash);
+    }
+
+    if (depth++ >= f.MaxLevel || (!f.DoReflections && !f.DoRefractions))
+      goto done;
+
+    double[] comp = scratch.Buffer(depth, bands);
+    Vector3d origin = i.CoordWorld;
+    Vector3d viewerUnit = default;
+    bool haveUnit = false;
+
+    if (f.DoReflections)
+    {
+      Vector3d r = Geometry.SpecularReflection(i.Normal, viewer);
+      Span<double> ksBuffer = stackalloc double[16];
+      scoped ReadOnlySpan<double> ks = default;
+      bool have;
+      if (LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial pm && pm.Color.Length is > 0 and <= 16)
+      {
+        Span<double> k = ksBuffer[..pm.Color.Length];
+        if (viewer.X == 0.0 && viewer.Y == 0.0 && viewer.Z == 0.0)
+          PhongModel.ColorReflection(pm, i.Normal, viewer, r, ReflectionComponent.SPECULAR_REFLECTION, k);
+        else
+        {
+          // The model's normalized input, kept for the refracted direction (which normalizes the same vector).
+          viewerUnit = viewer.Normalized();
+          haveUnit = true;
+          PhongModel.Directional(pm, i.Normal, viewerUnit, r, ReflectionComponent.SPECULAR_REFLECTION, k);
+        }
+        ks = k;
+        have = true;
+      }
+      else
+      {
+        double[]? arr = i.ReflectanceModel!.ColorReflection(i, viewer, r, ReflectionComponent.SPECULAR_REFLECTION);
+        have = arr != null;
+        if (have)
+          ks = arr;
+      }
+      if (have)
+      {
+        double newImportance = importance * MaxBand(ks);
+        if (newImportance >= f.MinImportance)
+        {
+          if (f.ReflectionDirection(i, r, depth, out Vector3d reflected))
+          {
+            if (observer != null)
+              scratch.NextKind = RayKind.Reflected;
+            hash += HASH_REFLECT * Shade(depth, newImportance, ref origin, ref reflected, comp);
+            if (ks.Length >= bands)
+              for (int b = 0; b < bands; b++)
+                color[b] += ks[b] * comp[b];
+            else
+              for (int b = 0; b < bands; b++)
+                color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
+          }
+        }
+      }
+    }
+
+    if (f.DoRefractions)
+    {
+      IMaterial material = i.Material!;
+      double kt = Kt(material);
+      if (f.FresnelRefraction && kt > 0.0)
+        kt *= 1.0 - RayTracing.SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), Index(material));
+      double newImportance = importance * kt;
+      if (newImportance < f.MinImportance)
+        goto done;
+      Vector3d r = haveUnit
+        ? Geometry.SpecularRefractionUnit(i.Normal, Index(material), viewerUnit)
+        : Geometry.SpecularRefraction(i.Normal, Index(material), viewer);
+      if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0 || !f.RefractionDirection(i, r, depth, out r))
+        goto done;
+      if (observer != null)
+        scratch.NextKind = RayKind.Refracted;
+      hash += HASH_REFRACT * Shade(depth, newImportance, ref origin, ref r, comp);
+      AddScaled(color, comp, kt);
+    }
+
+  done:
+    // Every way out passes here, so an observer sees the end of each ray it saw begin.
+    observer?.EndRay(kind, rayDepth, p0, p1, i);
+    return hash;
+  }
+
+  /// <summary>One light's direct contribution (shadow ray included) added to <paramref name="color"/>; returns the hash.</summary>
+  long AddLight(ShadingScratch scratch, ILightSource source, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
+  {
+    RayTracing f = function;
+    double[]? intensity;
+    Vector3d dir;
+    if (source.GetType() == typeof(PointLightSource))
+      intensity = Unsafe.As<PointLightSource>(source).Intensity(i, out dir);
+    else if (source.GetType() == typeof(AmbientLightSource))
+      intensity = Unsafe.As<AmbientLightSource>(source).Intensity(out dir);
+    else
+      intensity = source.GetIntensity(i, out dir);
+    if (f.rayRegisterer != null && MT.singleRayTracing && source.position is Vector3d lightPosition)
+      f.rayRegisterer.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerShadow, i.CoordWorld, lightPosition);
+    if (intensity == null)
+      return hash;
+    double transmit = 1.0;
+    if (f.DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0))
+    {
+      if (f.TransparentShadows)
+      {
+        scratch.Rays++;
+        transmit = f.ShadowTransmittance(i.CoordWorld, dir);
+      }
+      else
+        transmit = Occluded(scratch, i.CoordWorld, dir) ? 0.0 : 1.0;
+      scratch.Observer?.ShadowRay(i.CoordWorld, dir, transmit <= 0.0);
+      if (transmit <= 0.0)
+      {
+        scratch.Hits++;   // a blocked shadow ray
+        return hash;
+      }
+    }
+    if (phong)
+    {
+      Span<double> r = buffer[..surface.Length];
+      PhongModel.ColorReflection(Unsafe.As<PhongMaterial>(i.Material!), i.Normal, dir, viewer, ReflectionComponent.ALL, r);
+      AddLit(color, transmit, intensity, r);
+    }
+    else
+    {
+      double[]? arr = i.ReflectanceModel!.ColorReflection(i, dir, viewer, ReflectionComponent.ALL);
+      if (arr == null)
+        return hash;
+      AddLit(color, transmit, intensity, arr);
+    }
+    return hash * HASH_LIGHT + source.GetHashCode();
+  }
+
+  /// <summary><see cref="RayTracing"/>'s shadow query (the kernel serves only functions that keep it), counting the ray.</summary>
+  bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
+  {
+    scratch.Rays++;
+    PreparedScene? ps = function.PreparedFor(scratch);
+    return ps != null ? ps.AnyHit(p0, dir) : function.Lists.AnyHit(p0, dir);
+  }
+
+  /// <summary>
+  /// The largest band, as folding <see cref="Math.Max(double, double)"/> from band 0 gives it; its NaN and signed-zero
+  /// rules are applied only where they can matter (a Phong reflectance has all bands equal).
+  /// </summary>
+  internal static double MaxBand(ReadOnlySpan<double> bands)
+  {
+    double max = bands[0];
+    for (int b = 1; b < bands.Length; b++)
+    {
+      double k = bands[b];
+      if (k > max)
+        max = k;
+      else if (!(k < max) && (k != max || k == 0.0))
+        max = Math.Max(max, k);
+    }
+    return max;
+  }
+
+  // A material's Kt and index: the shading's scratch copy (exactly a PhongMaterial) without an interface call.
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static double Kt(IMaterial m) => m.GetType() == typeof(PhongMaterial) ? Unsafe.As<PhongMaterial>(m).Kt : m.Kt;
+
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static double Index(IMaterial m) => m.GetType() == typeof(PhongMaterial) ? Unsafe.As<PhongMaterial>(m).n : m.n;
+
+  /// <summary>color += transmit · light · reflected, band by band; a light or reflectance with fewer bands repeats its last one.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static void AddLit(double[] color, double transmit, double[] light, ReadOnlySpan<double> reflected)
+  {
+    int bands = color.Length;
+    if (light.Length >= bands && reflected.Length >= bands)
+    {
+      // Every band has its own values (the common case): no index clamps.
+      ReadOnlySpan<double> l = light.AsSpan(0, bands), k = reflected[..bands];
+      for (int b = 0; b < bands; b++)
+        color[b] += transmit * l[b] * k[b];
+    }
+    else
+      for (int b = 0; b < bands; b++)
+        color[b] += transmit * light[Math.Min(b, light.Length - 1)] * reflected[Math.Min(b, reflected.Length - 1)];
+  }
+
+  /// <summary>color += k · src; a one-element src adds the same value to every band.</summary>
+  static void AddScaled(double[] color, double[] src, double k)
+  {
+    for (int b = 0; b < color.Length; b++)
+      color[b] += k * src[Math.Min(b, src.Length - 1)];
+  }
+
+  /// <summary>Zeroes a colour of a few bands inline (Array.Clear's call costs more than three stores).</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  internal static void Zero(double[] color)
+  {
+    for (int b = 0; b < color.Length; b++)
+      color[b] = 0.0;
+  }
+}

@@ -1,0 +1,121 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using OpenTK.Mathematics;
+using Rendering;
+using Rendering.Accel;
+using Rendering.Distributed;
+using Rendering.Execution;
+using Rendering.Imaging;
+
+namespace GrCis.Rendering.Tests.Accel;
+
+/// <summary>
+/// The prepared Whitted kernel and the teaching class's <see cref="RayTracing.shade"/> are the same algorithm: every
+/// built-in scene gives the same bits, rays and hits through both, and the kernel is chosen only for functions that
+/// keep Whitted's shading.
+/// </summary>
+public class WhittedKernelTests
+{
+  /// <summary>Overrides <c>shade</c> (by calling it): the renderer must sample it through the teaching class.</summary>
+  sealed class TextbookRayTracing(IRayScene scene) : RayTracing(scene)
+  {
+    public override long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color) =>
+      base.shade(depth, importance, ref p0, ref p1, color);
+  }
+
+  sealed class OwnShadows : RayTracing
+  {
+    protected override bool Occluded(Vector3d p0, Vector3d dir) => base.Occluded(p0, dir);
+  }
+
+  sealed class OwnSample : RayTracing
+  {
+    public override long GetSample(double x, double y, double[] color) => base.GetSample(x, y, color);
+  }
+
+  sealed class WiderMirror : RayTracing
+  {
+    protected internal override bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction)
+    {
+      direction = mirror + new Vector3d(0.0, 0.05, 0.0);
+      return true;
+    }
+  }
+
+  public static IEnumerable<object[]> SceneNames() => Scenes.Names.Select(n => new object[] { n });
+
+  static (FloatImage Image, long Rays, long Hits) Render(IRayScene scene, RayTracing function, ImageSynthesizer synth)
+  {
+    var context = new RenderContext();
+    FloatImage image = TileRenderer.Render(scene, function, synth, new RenderOptions { Threads = 2, TileSize = 8 }, context: context);
+    return (image, context.Rays, context.Hits);
+  }
+
+  static void AssertSameBits(FloatImage expected, FloatImage actual, string what)
+  {
+    Assert.Equal(expected.Data.Length, actual.Data.Length);
+    int differing = 0;
+    for (int i = 0; i < expected.Data.Length; i++)
+      if (BitConverter.SingleToInt32Bits(expected.Data[i]) != BitConverter.SingleToInt32Bits(actual.Data[i]))
+        differing++;
+    Assert.True(differing == 0, $"{what}: {differing} of {expected.Data.Length} values differ between the kernel and shade");
+  }
+
+  [Theory]
+  [MemberData(nameof(SceneNames))]
+  public void Kernel_and_textbook_shade_give_the_same_image_rays_and_hits(string name)
+  {
+    foreach (int spp in new[] { 1, 4 })
+    {
+      ImageSynthesizer Synth() => spp == 1
+        ? new SimpleImageSynthesizer { Width = 40, Height = 30 }
+        : new SupersamplingImageSynthesizer { Width = 40, Height = 30, Supersampling = spp };
+      IRayScene a = Scenes.Create(name), b = Scenes.Create(name);
+      var kernel = Render(a, new RayTracing(a), Synth());
+      var textbook = Render(b, new TextbookRayTracing(b), Synth());
+      AssertSameBits(kernel.Image, textbook.Image, $"{name}, {spp} spp");
+      Assert.Equal(kernel.Rays, textbook.Rays);
+      Assert.Equal(kernel.Hits, textbook.Hits);
+    }
+  }
+
+  [Fact]
+  public void Kernel_is_chosen_only_for_functions_that_keep_the_shading()
+  {
+    Assert.NotNull(WhittedKernel.For(new RayTracing()));
+    Assert.NotNull(WhittedKernel.For(new DistributedRayTracing()));
+    Assert.NotNull(WhittedKernel.For(new WiderMirror()));
+    Assert.Null(WhittedKernel.For(new TextbookRayTracing(new DefaultRayScene())));
+    Assert.Null(WhittedKernel.For(new OwnShadows()));
+    Assert.Null(WhittedKernel.For(new OwnSample()));
+    Assert.Null(WhittedKernel.For(new PathTracing()));
+    Assert.Null(WhittedKernel.For(new RayCasting()));
+    Assert.Null(WhittedKernel.For(new RayTracing { Accel = AccelMode.None }));
+  }
+
+  [Fact]
+  public void A_kept_hook_of_a_subclass_decides_the_kernels_image()
+  {
+    // The kernel asks the function for the mirrored direction: the subclass's own must change the image as shade's does.
+    IRayScene a = Scenes.Create("Five balls"), b = Scenes.Create("Five balls"), c = Scenes.Create("Five balls");
+    var synth = () => new SimpleImageSynthesizer { Width = 40, Height = 30 };
+    FloatImage plain = Render(a, new RayTracing(a), synth()).Image;
+    FloatImage wider = Render(b, new WiderMirror { Scene = b }, synth()).Image;
+    Assert.False(plain.Data.AsSpan().SequenceEqual(wider.Data));
+    Assert.NotNull(WhittedKernel.For(new WiderMirror()));
+    AssertSameBits(wider, Render(c, new WiderMirrorTextbook { Scene = c }, synth()).Image, "a subclass's mirror direction");
+  }
+
+  sealed class WiderMirrorTextbook : RayTracing
+  {
+    protected internal override bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction)
+    {
+      direction = mirror + new Vector3d(0.0, 0.05, 0.0);
+      return true;
+    }
+
+    public override long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color) =>
+      base.shade(depth, importance, ref p0, ref p1, color);
+  }
+}
