@@ -59,7 +59,7 @@ public static class Precedence
         synth.Height = s.Height;
         synthesizer = synth;
         if (!given.HasFlag(GivenSettings.Gamma))
-          s = s with { Gamma = synth.Gamma > 0.001 ? synth.Gamma : 1.0 };
+          s = s with { Gamma = !Rendering.Execution.RenderDefaults.IsLinearGamma(synth.Gamma) ? synth.Gamma : 1.0 };
       }
       else
         notes.Add($"the script's renderer {type} is not an ImageSynthesizer; using the default renderer");

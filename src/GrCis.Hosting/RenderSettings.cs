@@ -16,12 +16,14 @@ public sealed record RenderSettings
   /// <summary>Upper limit of samples per pixel: a 256×256 grid (Blender's default final render takes 4096).</summary>
   public const int MaxSamplesPerPixel = 65536;
 
-  public int Width { get; init; } = 640;
+  /// <summary>Image width in pixels.</summary>
+  public int Width { get; init; } = RenderDefaults.Width;
 
-  public int Height { get; init; } = 480;
+  /// <summary>Image height in pixels.</summary>
+  public int Height { get; init; } = RenderDefaults.Height;
 
   /// <summary>Samples per pixel: 1 = pixel centre; more = an n×n grid (rounded up to a square).</summary>
-  public int SamplesPerPixel { get; init; } = 1;
+  public int SamplesPerPixel { get; init; } = RenderDefaults.SamplesPerPixel;
 
   /// <summary>Jitter of supersamples inside their grid cell: 0 = regular grid, 1 = full.</summary>
   public double Jitter { get; init; } = 1.0;
@@ -39,7 +41,7 @@ public sealed record RenderSettings
   public AccelMode Accel { get; init; } = AccelMode.Bvh;
 
   /// <summary>Display gamma of the shown and saved 8-bit image (1 = linear); the render itself is linear.</summary>
-  public double Gamma { get; init; } = RenderSetup.DefaultGamma;
+  public double Gamma { get; init; } = RenderDefaults.Gamma;
 
   /// <summary>Worker threads; 0 = one per processor.</summary>
   public int Threads { get; init; }
@@ -51,7 +53,7 @@ public sealed record RenderSettings
   public SamplerKind Sampler { get; init; } = SamplerKind.CorrelatedMultiJitter;
 
   /// <summary>Tile side in pixels (the image does not depend on it).</summary>
-  public int TileSize { get; init; } = 32;
+  public int TileSize { get; init; } = RenderDefaults.TileSize;
 
   /// <summary>Scene time for a still of an animated scene; null = the script's time, else the animation's start.</summary>
   public double? Time { get; init; }
@@ -70,7 +72,8 @@ public sealed record RenderSettings
     }
   }
 
-  public int EffectiveThreads => Threads > 0 ? Threads : Environment.ProcessorCount;
+  /// <summary>The worker threads this asks for (<see cref="RenderDefaults.Threads"/>).</summary>
+  public int EffectiveThreads => RenderDefaults.Threads(Threads);
 
   /// <summary>This record, or an <see cref="InvalidSettingException"/> naming the first setting out of range.</summary>
   public RenderSettings Validate()

@@ -20,17 +20,21 @@ public sealed record ScriptContextInit
   /// <summary>The scene's name (<c>SceneName</c>); null = the script's file name.</summary>
   public string? SceneName { get; init; }
 
-  public int Width { get; init; } = 640;
+  /// <summary>Image width in pixels (<c>Width</c>).</summary>
+  public int Width { get; init; } = Rendering.Execution.RenderDefaults.Width;
 
-  public int Height { get; init; } = 480;
+  /// <summary>Image height in pixels (<c>Height</c>).</summary>
+  public int Height { get; init; } = Rendering.Execution.RenderDefaults.Height;
 
-  public int SuperSampling { get; init; } = 1;
+  /// <summary>Samples per pixel (<c>SuperSampling</c>).</summary>
+  public int SuperSampling { get; init; } = Rendering.Execution.RenderDefaults.SamplesPerPixel;
 
   /// <summary>Animation start (<c>Start</c>), seconds.</summary>
-  public double Start { get; init; }
+  public double Start { get; init; } = Rendering.Execution.RenderDefaults.AnimationStart;
 
   /// <summary>Animation end (<c>End</c>), seconds.</summary>
-  public double End { get; init; } = 10.0;
+  public double End { get; init; } = Rendering.Execution.RenderDefaults.AnimationEnd;
 
-  public double Fps { get; init; } = 25.0;
+  /// <summary>Frames per second (<c>FPS</c>).</summary>
+  public double Fps { get; init; } = Rendering.Execution.RenderDefaults.Fps;
 }

@@ -1,4 +1,10 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
 using System.Linq;
+using GrCis.Cli.Animation;
+using GrCis.Cli.SceneSources;
+using GrCis.Hosting;
 
 namespace GrCis.Cli.Tests;
 
@@ -78,5 +84,28 @@ public class InfoCommandTests
     CliRun run = CliRun.Of(dir.Path, "info", "five bals");
     Assert.Equal(ExitCodes.Usage, run.ExitCode);
     Assert.Contains("did you mean 'Five balls'", run.Error);
+  }
+
+  public static IEnumerable<object[]> Scripts() =>
+    Directory.GetFiles(RepoPaths.Scripts, "*.cs").Select(Path.GetFileName).OrderBy(f => f, StringComparer.Ordinal)
+      .Select(f => new object[] { f! });
+
+  [Theory]
+  [MemberData(nameof(Scripts))]
+  public void Info_reports_the_frames_animate_renders_for_every_script(string file)
+  {
+    using var dir = new TempDirectory();
+    CliRun run = CliRun.Of(dir.Path, "info", RepoPaths.Script(file));
+    Assert.Equal(0, run.ExitCode);
+    string animation = Value(run, "animation");
+
+    // What grcis animate renders without options: its plan over the prepared script.
+    using var source = new ScriptSceneSource(RepoPaths.Script(file), "", Array.Empty<string>());
+    PreparedRender prepared = new RenderRequest(source, new RenderSettings(), GivenSettings.None).Prepare();
+    AnimationPlan plan = AnimationPlan.Create(null, null, null, prepared.Timing, prepared.Scene, null, ShardSpec.All);
+    if (animation.StartsWith("none", StringComparison.Ordinal))
+      Assert.False(Rendering.SceneCloner.IsTimeDependent(prepared.Scene), $"{file}: info calls an animated scene still");
+    else
+      Assert.EndsWith($", {plan.Frames.Count} frames", animation);
   }
 }

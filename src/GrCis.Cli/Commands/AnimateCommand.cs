@@ -148,7 +148,7 @@ public sealed class AnimateCommand
     if (open > 0.0 && (!renderer.IsAnimated || renderer.Sequential))
       env.Error.WriteLine("grcis: note: --shutter has no effect: " +
         (renderer.Sequential ? "the script's own image function renders its scene at one time per frame" : "nothing in this scene moves"));
-    int threads = settings.Threads > 0 ? settings.Threads : Environment.ProcessorCount;
+    int threads = settings.EffectiveThreads;
     ParallelMode mode = renderer.Sequential ? ParallelMode.Tiles : FrameScheduler.Choose(requested, settings.Size, threads, todo.Count);
     var scheduler = new FrameScheduler(renderer, store);
 

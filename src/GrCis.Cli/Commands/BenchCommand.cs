@@ -43,7 +43,7 @@ public static class BenchCommand
       int t = parse.GetValue(threads);
       if (t < 0)
         throw new UsageException($"invalid --threads {t}: must be 0 (one per processor) or more");
-      int effective = t == 0 ? Environment.ProcessorCount : t;
+      int effective = Rendering.Execution.RenderDefaults.Threads(t);
       string? meshFile = parse.GetValue(mesh);
       if (meshFile != null && !System.IO.File.Exists(meshFile))
         throw new UsageException($"--mesh '{meshFile}': no such file");

@@ -73,16 +73,16 @@ public sealed class InfoCommand
     return ExitCodes.Success;
   }
 
-  /// <summary>"start 0 s, end 4 s, 12 fps, 49 frames", from the script's context, else from its animated scene.</summary>
+  /// <summary>
+  /// "start 0 s, end 4 s, 12 fps, 49 frames": the range <c>grcis animate</c> renders without options
+  /// (<see cref="AnimationRange.Resolve"/>: the script's context, else its animated scene, else the defaults).
+  /// </summary>
   static string Animation(ScriptScene run)
   {
     bool animated = SceneCloner.IsTimeDependent(run.Scene);
     if (run.Start == null && run.End == null && run.Fps == null && !animated)
       return "none (a still scene)";
-    var td = run.Scene as ITimeDependent;
-    double start = run.Start ?? td?.Start ?? 0.0;
-    double end = run.End ?? td?.End ?? start;
-    double fps = run.Fps ?? 25.0;
+    (double start, double end, double fps) = AnimationRange.Resolve(null, null, null, new Timing(run.Start, run.End, run.Fps), run.Scene);
     string fpsSource = run.Fps != null ? "" : " (default)";
     string frames;
     try
@@ -95,6 +95,8 @@ public sealed class InfoCommand
     }
     return string.Create(CultureInfo.InvariantCulture, $"start {start} s, end {end} s, {fps} fps{fpsSource}, {frames}");
   }
+
+  sealed record Timing(double? Start, double? End, double? Fps) : ISceneTiming;
 
   static void Line(System.IO.TextWriter o, string key, string value) => o.WriteLine($"{key + ":",-15}{value}");
 }

@@ -55,7 +55,7 @@ public sealed class RenderOptionSet
   readonly Option<double> gamma = new("--gamma")
   {
     Description = "Display gamma of the PNG (1 = linear)",
-    DefaultValueFactory = _ => 2.2,
+    DefaultValueFactory = _ => Rendering.Execution.RenderDefaults.Gamma,
   };
 
   readonly Option<bool> noShadows = new("--no-shadows") { Description = "Do not cast shadow rays" };

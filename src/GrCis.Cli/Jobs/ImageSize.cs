@@ -7,7 +7,7 @@ namespace GrCis.Cli.Jobs;
 /// <summary>Image size given as <c>WxH</c> on the command line.</summary>
 public readonly record struct ImageSize(int Width, int Height)
 {
-  public static readonly ImageSize Default = new(640, 480);
+  public static readonly ImageSize Default = new(Rendering.Execution.RenderDefaults.Width, Rendering.Execution.RenderDefaults.Height);
 
   /// <exception cref="UsageException">Not two positive integers separated by 'x', or too large.</exception>
   public static ImageSize Parse(string text)

@@ -10,7 +10,8 @@ namespace GrCis.Hosting;
 public static class AnimationRange
 {
   /// <summary>Used when neither the user nor the scene gives a range.</summary>
-  public const double DefaultStart = 0.0, DefaultEnd = 10.0, DefaultFps = 25.0;
+  public const double DefaultStart = Rendering.Execution.RenderDefaults.AnimationStart, DefaultEnd = Rendering.Execution.RenderDefaults.AnimationEnd,
+    DefaultFps = Rendering.Execution.RenderDefaults.Fps;
 
   /// <param name="from">Start the user gave, or null.</param>
   /// <param name="to">End the user gave, or null.</param>

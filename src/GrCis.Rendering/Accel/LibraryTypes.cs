@@ -72,6 +72,12 @@ internal static class LibraryTypes
     SubclassCheck.OverridesNothing(light, typeof(RectangleLightSource)) || SubclassCheck.OverridesNothing(light, typeof(SphereLightSource));
 
   /// <summary>
+  /// The library's ambient light (or a subclass overriding nothing): light without a direction, which the path tracer
+  /// leaves out (its indirect light replaces it). A subclass with its own intensity is a light like any other.
+  /// </summary>
+  public static bool IsAmbientLight(ILightSource light) => SubclassCheck.OverridesNothing(light, typeof(AmbientLightSource));
+
+  /// <summary>
   /// The library's Phong model (or a subclass overriding nothing): the shading may evaluate it for a
   /// <see cref="PhongMaterial"/> into stack buffers instead of a new array per light. Asked per hit (hits of list members carry no prepared decision): the exact
   /// type is answered inline.

@@ -10,8 +10,8 @@ namespace Rendering;
 [Serializable]
 public class StaticCamera : ICamera
 {
-  protected double width = 640.0;
-  protected double height = 480.0;
+  protected double width = Execution.RenderDefaults.Width;
+  protected double height = Execution.RenderDefaults.Height;
 
   public Vector3d center;
   public Vector3d direction;

@@ -7,7 +7,7 @@ public sealed record RenderOptions
   public int Threads { get; init; }
 
   /// <summary>Tile side in pixels.</summary>
-  public int TileSize { get; init; } = 32;
+  public int TileSize { get; init; } = RenderDefaults.TileSize;
 
   /// <summary>Seed of all sample randomness; the image depends on it, not on threads or tile order.</summary>
   public long Seed { get; init; }
@@ -21,5 +21,6 @@ public sealed record RenderOptions
   /// <summary>Only these tiles (a part of a scaled-out still, see <see cref="Parts.PartLayout"/>); null = every tile.</summary>
   public System.Collections.Generic.IReadOnlyList<Tile>? Tiles { get; init; }
 
-  public int EffectiveThreads => Threads > 0 ? Threads : System.Environment.ProcessorCount;
+  /// <summary>The worker threads this asks for (<see cref="RenderDefaults.Threads"/>).</summary>
+  public int EffectiveThreads => RenderDefaults.Threads(Threads);
 }

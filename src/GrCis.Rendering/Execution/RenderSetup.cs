@@ -12,7 +12,7 @@ namespace Rendering.Execution;
 public static class RenderSetup
 {
   /// <summary>Display gamma used when none is given (GrCis's default).</summary>
-  public const double DefaultGamma = 2.2;
+  public const double DefaultGamma = RenderDefaults.Gamma;
 
   /// <summary>One centred sample for <paramref name="samplesPerPixel"/> ≤ 1, else an n×n grid (rounded up to a square).</summary>
   public static ImageSynthesizer CreateSynthesizer(int width, int height, int samplesPerPixel, double jittering, double gamma = DefaultGamma)

@@ -40,7 +40,7 @@ public readonly record struct DisplayEncoding
   /// renderer's <c>Gamma</c> (≤ 0.001 means linear, as in GrCis's <c>ApplyGamma</c>) and truncation.
   /// </summary>
   public static DisplayEncoding ForRender(double gamma) =>
-    new(gamma > 0.001 && !double.IsInfinity(gamma) ? gamma : 1.0, Quantization.Truncate);
+    new(!Execution.RenderDefaults.IsLinearGamma(gamma) && !double.IsInfinity(gamma) ? gamma : 1.0, Quantization.Truncate);
 
   /// <summary>No gamma, nearest byte: for data maps and other images that are not renders.</summary>
   public static DisplayEncoding LinearRound => new(1.0, Quantization.Round);

@@ -129,11 +129,10 @@ internal struct PathBsdf
   }
 
   /// <summary>
-  /// True when <paramref name="material"/> supplies its own scattering (<see cref="IScatteringMaterial"/>). The library's
-  /// <see cref="PhongMaterial"/> itself does not: its exact type answers without the interface test.
+  /// True when <paramref name="material"/> supplies its own scattering (<see cref="IScatteringMaterial"/>); the
+  /// library's <see cref="PhongMaterial"/> does not.
   /// </summary>
-  public static bool HasOwnScattering(IMaterial? material) =>
-    material != null && material.GetType() != typeof(PhongMaterial) && material is IScatteringMaterial;
+  public static bool HasOwnScattering(IMaterial? material) => material is IScatteringMaterial;
 
   /// <summary>The smooth (non-delta) part of the BSDF for light arriving from <paramref name="wi"/>, without the cosine.</summary>
   public readonly Rgb Eval(Vector3d wi)

@@ -30,12 +30,12 @@ public abstract class ImageSynthesizer : IRenderer
   /// </summary>
   internal Accel.WhittedKernel? Kernel;
 
-  public int Width { get; set; } = 640;
+  public int Width { get; set; } = Execution.RenderDefaults.Width;
 
-  public int Height { get; set; } = 480;
+  public int Height { get; set; } = Execution.RenderDefaults.Height;
 
   /// <summary>Display gamma; values ≤ 0.001 mean linear output.</summary>
-  public double Gamma { get; set; } = 2.2;
+  public double Gamma { get; set; } = Execution.RenderDefaults.Gamma;
 
   public int Adaptive { get; set; } = 1;
 
@@ -89,7 +89,7 @@ public abstract class ImageSynthesizer : IRenderer
   /// <summary>c ← max(c, 0)^gamma: the inverse of <see cref="ApplyGamma"/> on [0, 1]; gamma ≤ 0.001 leaves the colour as it is.</summary>
   public static void RemoveGamma(Span<double> color, double gamma)
   {
-    if (gamma <= 0.001)
+    if (Execution.RenderDefaults.IsLinearGamma(gamma))
       return;
     for (int b = 0; b < color.Length; b++)
       color[b] = color[b] > 0.0 ? Math.Pow(color[b], gamma) : 0.0;   // negative or NaN → black, as ApplyGamma
@@ -98,7 +98,7 @@ public abstract class ImageSynthesizer : IRenderer
   /// <summary>c ← clamp(c^(1/gamma), 0, 1); gamma ≤ 0.001 leaves the colour linear.</summary>
   public static void ApplyGamma(Span<double> color, double gamma)
   {
-    if (gamma <= 0.001)
+    if (Execution.RenderDefaults.IsLinearGamma(gamma))
       return;
     double inv = 1.0 / gamma;
     for (int b = 0; b < color.Length; b++)

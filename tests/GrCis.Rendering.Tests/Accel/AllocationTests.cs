@@ -13,6 +13,8 @@ namespace GrCis.Rendering.Tests.Accel;
 /// object per thread and recursion depth (with its own surface-colour copy), attributes and texture lists are
 /// resolved at prepare time, and lights are walked without a boxed enumerator. Bounds allow 8 B/pixel
 /// (the per-block colour buffer amortised); a mesh hit adds its 40-byte hit record (triangle, barycentrics).
+/// Whitted functions are sampled through the frame's prepared kernel, as the tile renderer samples them; the
+/// teaching class's own <c>shade</c> is free to allocate as GrCis's does.
 /// </summary>
 public class AllocationTests
 {
@@ -27,6 +29,7 @@ public class AllocationTests
     f.Width = 640;
     f.Height = 480;
     f.Prepare(scene);
+    renderer.Kernel = WhittedKernel.For(f);   // as the tile renderer chooses it for the frame
     MT.SetRendering(scene, f, renderer);
     try
     {

@@ -39,7 +39,7 @@ internal sealed class SceneLights
     if (scene.Sources is IEnumerable<ILightSource> sources)
       foreach (ILightSource source in sources)
       {
-        if (source == null || source.GetType() == typeof(AmbientLightSource))
+        if (source == null || Accel.LibraryTypes.IsAmbientLight(source))
           continue;
         deltas.Add((ILight?)GrCisLight.For(source) ?? new CustomLight(source));
       }
