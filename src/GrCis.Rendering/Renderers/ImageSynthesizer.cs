@@ -10,17 +10,24 @@ namespace Rendering;
 /// </summary>
 public abstract class ImageSynthesizer : IRenderer
 {
+  /// <summary>The image function sampled for each pixel; when null, <see cref="MT.imageFunction"/> is used.</summary>
   public IImageFunction? ImageFunction { get; set; }
 
+  /// <inheritdoc/>
+  /// <remarks>Default 640.</remarks>
   public int Width { get; set; } = 640;
 
+  /// <inheritdoc/>
+  /// <remarks>Default 480.</remarks>
   public int Height { get; set; } = 480;
 
   /// <summary>Display gamma; values ≤ 0.001 mean linear output.</summary>
   public double Gamma { get; set; } = 2.2;
 
+  /// <summary>Adaptive-refinement level as GrCis's scripts set it (default 1); the library's synthesizers keep it but sample every pixel alike.</summary>
   public int Adaptive { get; set; } = 1;
 
+  /// <summary>Shared progress record, or null; <see cref="RenderRectangle"/> stops before the next row once its <see cref="Progress.Continue"/> is false.</summary>
   public Progress? ProgressData { get; set; }
 
   /// <summary>Samples one pixel's linear colour; sets <see cref="MT"/>'s pixel and sample rank.</summary>
@@ -43,6 +50,7 @@ public abstract class ImageSynthesizer : IRenderer
   /// <summary>Whether this class overrides <see cref="RenderPixel"/> (a renderer written against GrCis).</summary>
   readonly bool displayPixels;
 
+  /// <summary>Sets up a synthesizer of the default size (640 × 480, gamma 2.2) and notes whether the class overrides <see cref="RenderPixel"/>.</summary>
   protected ImageSynthesizer() => displayPixels = Accel.LibraryTypes.ReturnsDisplayPixels(GetType());
 
   /// <summary>Whether <paramref name="type"/> overrides this class's virtual method <paramref name="name"/> (not merely hides it).</summary>
