@@ -21,5 +21,6 @@ public sealed record RenderOptions
   /// <summary>Only these tiles (a part of a scaled-out still, see <see cref="Parts.PartLayout"/>); null = every tile.</summary>
   public System.Collections.Generic.IReadOnlyList<Tile>? Tiles { get; init; }
 
+  /// <summary>The number of worker threads used: <see cref="Threads"/>, or the processor count when it is 0 (or less).</summary>
   public int EffectiveThreads => Threads > 0 ? Threads : System.Environment.ProcessorCount;
 }
