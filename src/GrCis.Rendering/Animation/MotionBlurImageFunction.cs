@@ -17,7 +17,7 @@ namespace Rendering;
 /// </remarks>
 public class MotionBlurImageFunction : IImageFunction
 {
-  /// <summary>Motion blur around <paramref name="inner"/>; no blur until <see cref="Shutter"/> is set (25 frames per second).</summary>
+  /// <summary>Motion blur around <paramref name="inner"/>; no blur until <see cref="Shutter"/> is set; <see cref="Fps"/> is 25 until set.</summary>
   /// <param name="inner">The image function that renders each sample; it must render <see cref="MT.scene"/> (see the remarks).</param>
   /// <exception cref="ArgumentNullException"><paramref name="inner"/> is null.</exception>
   public MotionBlurImageFunction(IImageFunction inner)

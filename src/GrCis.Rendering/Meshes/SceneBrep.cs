@@ -31,7 +31,7 @@ public partial class SceneBrep : ICloneable
   /// <summary>The corner table's opposite corner of each corner (<see cref="NULL"/> on a border), or null until <see cref="BuildCornerTable"/>.</summary>
   protected List<int>? oppositePtr;
 
-  /// <summary>Statistics of the last <see cref="BuildCornerTable"/>: unmatched and shared edges.</summary>
+  /// <summary>Statistics of the last <see cref="BuildCornerTable"/>: edges found (an edge of two triangles counts once; see <see cref="statShared"/>).</summary>
   public int statEdges;
   /// <summary>Statistics of the last <see cref="BuildCornerTable"/>: edges shared by two triangles (linked).</summary>
   public int statShared;

@@ -53,7 +53,7 @@ public static class KeyValueText
 
   /// <summary>
   /// Reads the text of <paramref name="key"/> in a parsed <c>param</c> map into <paramref name="val"/> as a number of
-  /// the parameter's type (invariant culture, e.g. <c>1.5</c>). False, with <paramref name="val"/> unchanged, when the map
+  /// <paramref name="val"/>'s type (invariant culture, e.g. <c>1.5</c>). False, with <paramref name="val"/> unchanged, when the map
   /// is null, the key is missing or the text does not parse; so <paramref name="val"/> may hold the default beforehand.
   /// </summary>
   /// <param name="rec">The map from <see cref="Parse"/>, or null.</param>
@@ -239,7 +239,7 @@ public static class KeyValueText
   // ---- One value ---------------------------------------------------------------------------
   // Invariant culture; false and 'val' unchanged when the text does not parse.
 
-  /// <summary>Parses <paramref name="s"/> as a number of the parameter's type (invariant culture); false, with <paramref name="val"/> unchanged, when it does not parse.</summary>
+  /// <summary>Parses <paramref name="s"/> as a number of <paramref name="val"/>'s type (invariant culture); false, with <paramref name="val"/> unchanged, when it does not parse.</summary>
   /// <param name="s">The text.</param>
   /// <param name="val">Receives the value.</param>
   public static bool TryParseValue(string s, ref int val)

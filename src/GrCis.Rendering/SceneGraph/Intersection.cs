@@ -78,7 +78,7 @@ public class Intersection : IComparable<Intersection>
 
   /// <summary>True once <see cref="Complete"/> (or another completion) has filled the fields; a second completion does nothing.</summary>
   public bool completed;
-  /// <summary>Set by the library's textures once they have changed the hit (<see cref="CheckerTexture"/>, <see cref="ImageTexture"/>).</summary>
+  /// <summary>Set true by the library's textures (<see cref="CheckerTexture"/>, <see cref="ImageTexture"/>) when they are applied to the hit.</summary>
   public bool textureApplied;
 
   /// <summary>An empty hit with no solid.</summary>
@@ -104,7 +104,7 @@ public class Intersection : IComparable<Intersection>
   public int CompareTo(Intersection? other) => other == null ? 1 : T.CompareTo(other.T);
 
   /// <summary>
-  /// Computes world coordinates, normal (facing the side the ray came from), material,
+  /// Computes world coordinates, normal (see <see cref="Normal"/>), material,
   /// surface colour and textures, resolving attributes up the scene hierarchy.
   /// </summary>
   public void Complete()
