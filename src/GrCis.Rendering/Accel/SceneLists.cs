@@ -10,8 +10,11 @@ namespace Rendering.Accel;
 /// </summary>
 public sealed class SceneLists : ISceneQuery
 {
+  /// <summary>The list search of the scene whose root is <paramref name="source"/>.</summary>
+  /// <param name="source">The scene's root (<see cref="IRayScene.Intersectable"/>), or null for an empty scene.</param>
   public SceneLists(IIntersectable? source) => Source = source;
 
+  /// <summary>The scene's root that every query asks.</summary>
   public IIntersectable? Source { get; }
 
   /// <inheritdoc/>

@@ -11,6 +11,7 @@ public struct SolidRecord
   /// <summary>Ray parameter (the same for local and world rays: transforms are affine).</summary>
   public double T;
 
+  /// <summary>The hit point in the solid's local coordinates.</summary>
   public Vector3d CoordLocal;
 
   /// <summary>Solid-specific payload (face, cap, patch index …).</summary>
@@ -19,6 +20,8 @@ public struct SolidRecord
   /// <summary>Second solid-specific payload (e.g. the local ray direction some solids keep).</summary>
   public Vector3d Aux;
 
+  /// <summary>The ray enters the solid here (<see cref="Intersection.Enter"/>).</summary>
   public bool Enter;
+  /// <summary>The ray hits the surface from its front (<see cref="Intersection.Front"/>).</summary>
   public bool Front;
 }

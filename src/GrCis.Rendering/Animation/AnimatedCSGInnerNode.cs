@@ -24,8 +24,13 @@ namespace Rendering;
 [Serializable]
 public class AnimatedCSGInnerNode : CSGInnerNode, ITimeDependent
 {
+  /// <summary>The current time (<see cref="Time"/>).</summary>
   protected double time;
 
+  /// <summary>An animated inner node at time <paramref name="start"/>.</summary>
+  /// <param name="op">How the children combine (see <see cref="CSGInnerNode"/>).</param>
+  /// <param name="start">Start of the time range in seconds (<see cref="Start"/>), also the initial time.</param>
+  /// <param name="end">End of the time range in seconds (<see cref="End"/>).</param>
   public AnimatedCSGInnerNode(SetOperation op, double start = 0.0, double end = 0.0) : base(op)
   {
     Start = start;
@@ -33,10 +38,13 @@ public class AnimatedCSGInnerNode : CSGInnerNode, ITimeDependent
     time = start;
   }
 
+  /// <inheritdoc/>
   public double Start { get; set; }
 
+  /// <inheritdoc/>
   public double End { get; set; }
 
+  /// <summary>Current time in seconds; setting it passes the time to the time-dependent children and attribute values.</summary>
   public double Time
   {
     get => time;

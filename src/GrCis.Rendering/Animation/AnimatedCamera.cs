@@ -19,8 +19,13 @@ public class AnimatedCamera : StaticCamera, ITimeDependent
   /// <summary>Camera centre at time Start.</summary>
   protected Vector3d center0;
 
+  /// <summary>The current time (<see cref="Time"/>).</summary>
   protected double time;
 
+  /// <summary>A camera at <paramref name="cen"/> looking at <paramref name="lookat"/>, circling it once over the time range 0 to 10 s (change <see cref="Start"/> and <see cref="End"/> to change the period).</summary>
+  /// <param name="lookat">The point the camera circles and looks at, in world coordinates.</param>
+  /// <param name="cen">Position of the camera at time <see cref="Start"/>.</param>
+  /// <param name="ang">Horizontal field of view in degrees.</param>
   public AnimatedCamera(Vector3d lookat, Vector3d cen, double ang)
     : base(cen, lookat - cen, ang)
   {
@@ -31,10 +36,13 @@ public class AnimatedCamera : StaticCamera, ITimeDependent
     time = 0.0;
   }
 
+  /// <summary>Time in seconds when the camera is at its initial position.</summary>
   public double Start { get; set; }
 
+  /// <summary>Time in seconds when one full circle is done: End − Start is the period.</summary>
   public double End { get; set; }
 
+  /// <summary>Current time in seconds; setting it moves the camera to its place on the circle.</summary>
   public double Time
   {
     get => time;

@@ -29,8 +29,16 @@ public class AnimatedNodeTransform : AnimatedCSGInnerNode
   /// <summary>Current offset and rotation (as last read from the animator).</summary>
   public Vector3d Translation { get; protected set; }
 
+  /// <summary>Current rotation, as last read from the animator (identity before that).</summary>
   public Quaterniond Rotation { get; protected set; } = Quaterniond.Identity;
 
+  /// <summary>A moving inner node; its transform is <paramref name="origin"/> until the time is first set.</summary>
+  /// <param name="translationName">Name of the animator's Vector3d property with the offset, or null for none.</param>
+  /// <param name="rotationName">Name of the animator's Quaterniond property with the rotation, or null for none.</param>
+  /// <param name="origin">Transform at rest (<see cref="Origin"/>).</param>
+  /// <param name="op">How the children combine (default <see cref="SetOperation.Union"/>).</param>
+  /// <param name="start">Start of the time range in seconds, also the initial time.</param>
+  /// <param name="end">End of the time range in seconds.</param>
   public AnimatedNodeTransform(
     string? translationName,
     string? rotationName,
@@ -46,8 +54,10 @@ public class AnimatedNodeTransform : AnimatedCSGInnerNode
     ToParent = origin;
   }
 
+  /// <summary>True: this node's transform changes with time.</summary>
   public override bool AnimatesTransform => true;
 
+  /// <summary>Reads the offset and rotation from the scene's animator (when there is one), rebuilds <see cref="DefaultSceneNode.ToParent"/>, then passes the time on as the base class does.</summary>
   protected override void setTime(double newTime)
   {
     if (MT.scene?.Animator is ITimeDependentProperty animator)

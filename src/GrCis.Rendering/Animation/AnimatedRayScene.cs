@@ -15,16 +15,20 @@ namespace Rendering;
 [Serializable]
 public class AnimatedRayScene : DefaultRayScene, ITimeDependent
 {
+  /// <summary>The current time (<see cref="Time"/>).</summary>
   protected double time;
 
+  /// <summary>An empty animated scene with the time range 0 to 10 s.</summary>
   public AnimatedRayScene()
   {
     Start = 0.0;
     End = 10.0;
   }
 
+  /// <inheritdoc/>
   public double Start { get; set; }
 
+  /// <inheritdoc/>
   public double End { get; set; }
 
   /// <summary>Current time, clamped to [Start, End].</summary>

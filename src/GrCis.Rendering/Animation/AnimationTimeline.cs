@@ -9,6 +9,11 @@ namespace Rendering;
 /// </summary>
 public sealed class AnimationTimeline
 {
+  /// <summary>The frames from <paramref name="start"/> to <paramref name="end"/> at <paramref name="fps"/> frames per second.</summary>
+  /// <param name="start">Time of the first frame in seconds.</param>
+  /// <param name="end">End of the animation in seconds, not before <paramref name="start"/>.</param>
+  /// <param name="fps">Frames per second, positive.</param>
+  /// <exception cref="ArgumentOutOfRangeException">A time is not finite, the end comes before the start, the rate is not positive, or the frames would be too many.</exception>
   public AnimationTimeline(double start, double end, double fps)
   {
     if (!double.IsFinite(start) || !double.IsFinite(end))
@@ -26,12 +31,16 @@ public sealed class AnimationTimeline
     FrameCount = (int)frames;
   }
 
+  /// <summary>Time of the first frame in seconds.</summary>
   public double Start { get; }
 
+  /// <summary>End of the animation in seconds (the last frame lies at most half a frame after it).</summary>
   public double End { get; }
 
+  /// <summary>Frames per second.</summary>
   public double Fps { get; }
 
+  /// <summary>Number of frames, both ends included (see <see cref="AnimationTimeline"/>).</summary>
   public int FrameCount { get; }
 
   /// <summary>Time of frame <paramref name="k"/> (0-based).</summary>

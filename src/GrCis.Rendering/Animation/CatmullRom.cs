@@ -21,6 +21,15 @@ public static class CatmullRom
     w3 = 0.5 * (f3 - f2);
   }
 
+  /// <summary>
+  /// The curve point at fraction <paramref name="f"/> of the segment from <paramref name="p1"/> to <paramref name="p2"/>;
+  /// <paramref name="f"/> ≤ 0 gives exactly p1, <paramref name="f"/> ≥ 1 exactly p2. The other overloads do the same for their types.
+  /// </summary>
+  /// <param name="p0">The knot before the segment.</param>
+  /// <param name="p1">The segment's first knot.</param>
+  /// <param name="p2">The segment's second knot.</param>
+  /// <param name="p3">The knot after the segment.</param>
+  /// <param name="f">Fraction of the segment, 0 to 1.</param>
   public static double Interpolate(double p0, double p1, double p2, double p3, double f)
   {
     // The end points are returned exactly, not up to rounding.
@@ -32,9 +41,11 @@ public static class CatmullRom
     return w0 * p0 + w1 * p1 + w2 * p2 + w3 * p3;
   }
 
+  /// <inheritdoc cref="Interpolate(double, double, double, double, double)"/>
   public static float Interpolate(float p0, float p1, float p2, float p3, double f) =>
     (float)Interpolate((double)p0, p1, p2, p3, f);
 
+  /// <inheritdoc cref="Interpolate(double, double, double, double, double)"/>
   public static Vector3d Interpolate(Vector3d p0, Vector3d p1, Vector3d p2, Vector3d p3, double f)
   {
     if (f <= 0.0)
@@ -45,6 +56,7 @@ public static class CatmullRom
     return w0 * p0 + w1 * p1 + w2 * p2 + w3 * p3;
   }
 
+  /// <inheritdoc cref="Interpolate(double, double, double, double, double)"/>
   public static Vector4d Interpolate(Vector4d p0, Vector4d p1, Vector4d p2, Vector4d p3, double f)
   {
     if (f <= 0.0)
@@ -55,9 +67,11 @@ public static class CatmullRom
     return w0 * p0 + w1 * p1 + w2 * p2 + w3 * p3;
   }
 
+  /// <inheritdoc cref="Interpolate(double, double, double, double, double)"/>
   public static Vector3 Interpolate(Vector3 p0, Vector3 p1, Vector3 p2, Vector3 p3, double f) =>
     (Vector3)Interpolate((Vector3d)p0, p1, p2, p3, f);
 
+  /// <inheritdoc cref="Interpolate(double, double, double, double, double)"/>
   public static Vector4 Interpolate(Vector4 p0, Vector4 p1, Vector4 p2, Vector4 p3, double f) =>
     (Vector4)Interpolate((Vector4d)p0, p1, p2, p3, f);
 

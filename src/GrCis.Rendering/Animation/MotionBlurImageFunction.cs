@@ -17,12 +17,16 @@ namespace Rendering;
 /// </remarks>
 public class MotionBlurImageFunction : IImageFunction
 {
+  /// <summary>Motion blur around <paramref name="inner"/>; no blur until <see cref="Shutter"/> is set; <see cref="Fps"/> is 25 until set.</summary>
+  /// <param name="inner">The image function that renders each sample; it must render <see cref="MT.scene"/> (see the remarks).</param>
+  /// <exception cref="ArgumentNullException"><paramref name="inner"/> is null.</exception>
   public MotionBlurImageFunction(IImageFunction inner)
   {
     ArgumentNullException.ThrowIfNull(inner);
     Inner = inner;
   }
 
+  /// <summary>The wrapped image function.</summary>
   public IImageFunction Inner { get; }
 
   /// <summary>Time of the frame: the shutter opens here.</summary>
@@ -34,12 +38,14 @@ public class MotionBlurImageFunction : IImageFunction
   /// <summary>Frames per second of the animation (the shutter interval is Shutter / Fps seconds).</summary>
   public double Fps { get; set; } = 25.0;
 
+  /// <summary>Image width in pixels: the wrapped function's.</summary>
   public double Width
   {
     get => Inner.Width;
     set => Inner.Width = value;
   }
 
+  /// <summary>Image height in pixels: the wrapped function's.</summary>
   public double Height
   {
     get => Inner.Height;
@@ -55,6 +61,15 @@ public class MotionBlurImageFunction : IImageFunction
     return FrameTime + (rank + u) / total * (Shutter / Fps);
   }
 
+  /// <summary>
+  /// With <see cref="Shutter"/> &gt; 0 and a time-dependent worker scene, moves that scene (and <see cref="MT.time"/>) to
+  /// the time of this sample (<see cref="SampleTime"/>), else sets <see cref="MT.time"/> to <see cref="FrameTime"/>; then
+  /// returns the wrapped function's sample.
+  /// </summary>
+  /// <param name="x">Horizontal image coordinate in pixels.</param>
+  /// <param name="y">Vertical image coordinate in pixels.</param>
+  /// <param name="color">Receives the colour.</param>
+  /// <exception cref="InvalidOperationException">The wrapped function is bound to another scene than the worker's.</exception>
   public long GetSample(double x, double y, double[] color)
   {
     if (Shutter > 0.0 && MT.scene is ITimeDependent scene)

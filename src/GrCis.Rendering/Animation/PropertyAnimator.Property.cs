@@ -37,6 +37,7 @@ public partial class PropertyAnimator
     /// <summary>Duration of one pass for <see cref="InterpolationStyle.Cyclic"/> and <see cref="InterpolationStyle.Pendulum"/>.</summary>
     public double tPeriod;
 
+    /// <summary>How the curve is played over time (once, repeated, back and forth).</summary>
     public InterpolationStyle style;
 
     /// <summary>Seconds between neighbouring knots on the curve.</summary>

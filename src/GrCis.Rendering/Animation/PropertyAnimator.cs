@@ -27,10 +27,16 @@ public partial class PropertyAnimator : ITimeDependentProperty
   /// <summary>Property name → <see cref="Property{T}"/>; shared by clones.</summary>
   protected Dictionary<string, object> properties = new();
 
+  /// <summary>Start of the time range (<see cref="Start"/>).</summary>
   protected double start;
+  /// <summary>End of the time range (<see cref="End"/>).</summary>
   protected double end = 10.0;
+  /// <summary>The current time (<see cref="Time"/>); −∞ until it is first set.</summary>
   protected double time = double.NegativeInfinity;
 
+  /// <summary>An animator without properties, time range 0 to 10 s; add properties with <see cref="newProperty{T}"/>.</summary>
+  /// <param name="nxtGen">Next general animator of the chain (receives the same times), or null.</param>
+  /// <param name="nxtProp">Next property animator of the chain (receives the same times, answers unknown names), or null.</param>
   public PropertyAnimator(in ITimeDependent? nxtGen = null, in ITimeDependentProperty? nxtProp = null)
   {
     nextGeneral = nxtGen;
@@ -39,6 +45,7 @@ public partial class PropertyAnimator : ITimeDependentProperty
     End = 10.0;
   }
 
+  /// <summary>Start of the time range in seconds; setting it sets the chain's too.</summary>
   public double Start
   {
     get => start;
@@ -52,6 +59,7 @@ public partial class PropertyAnimator : ITimeDependentProperty
     }
   }
 
+  /// <summary>End of the time range in seconds; setting it sets the chain's too.</summary>
   public double End
   {
     get => end;
@@ -65,6 +73,7 @@ public partial class PropertyAnimator : ITimeDependentProperty
     }
   }
 
+  /// <summary>Current time in seconds, clamped to [Start, End]; setting it sets the chain's too.</summary>
   public double Time
   {
     get => time;
@@ -149,6 +158,9 @@ public partial class PropertyAnimator : ITimeDependentProperty
     };
   }
 
+  /// <summary>The named double or float property's current value; false (and <paramref name="d"/> unchanged) when neither this animator nor its chain has one.</summary>
+  /// <param name="name">The property's name.</param>
+  /// <param name="d">Receives the value.</param>
   public virtual bool TryGetValue(in string name, ref double d)
   {
     if (properties.TryGetValue(name, out object? p))
@@ -167,6 +179,9 @@ public partial class PropertyAnimator : ITimeDependentProperty
     return nextProperty?.TryGetValue(name, ref d) ?? false;
   }
 
+  /// <summary>The named double or float property's current value; false (and <paramref name="f"/> unchanged) when neither this animator nor its chain has one.</summary>
+  /// <param name="name">The property's name.</param>
+  /// <param name="f">Receives the value.</param>
   public virtual bool TryGetValue(in string name, ref float f)
   {
     double d = f;
@@ -178,6 +193,9 @@ public partial class PropertyAnimator : ITimeDependentProperty
     return nextProperty?.TryGetValue(name, ref f) ?? false;
   }
 
+  /// <summary>The named Vector3d or Vector3 property's current value; false (and <paramref name="v3"/> unchanged) when neither this animator nor its chain has one.</summary>
+  /// <param name="name">The property's name.</param>
+  /// <param name="v3">Receives the value.</param>
   public virtual bool TryGetValue(in string name, ref Vector3d v3)
   {
     if (properties.TryGetValue(name, out object? p))
@@ -196,6 +214,9 @@ public partial class PropertyAnimator : ITimeDependentProperty
     return nextProperty?.TryGetValue(name, ref v3) ?? false;
   }
 
+  /// <summary>The named Vector3d or Vector3 property's current value; false (and <paramref name="v3"/> unchanged) when neither this animator nor its chain has one.</summary>
+  /// <param name="name">The property's name.</param>
+  /// <param name="v3">Receives the value.</param>
   public virtual bool TryGetValue(in string name, ref Vector3 v3)
   {
     Vector3d d = v3;
@@ -207,6 +228,9 @@ public partial class PropertyAnimator : ITimeDependentProperty
     return nextProperty?.TryGetValue(name, ref v3) ?? false;
   }
 
+  /// <summary>The named Vector4d or Vector4 property's current value; false (and <paramref name="v4"/> unchanged) when neither this animator nor its chain has one.</summary>
+  /// <param name="name">The property's name.</param>
+  /// <param name="v4">Receives the value.</param>
   public virtual bool TryGetValue(in string name, ref Vector4d v4)
   {
     if (properties.TryGetValue(name, out object? p))
@@ -225,6 +249,9 @@ public partial class PropertyAnimator : ITimeDependentProperty
     return nextProperty?.TryGetValue(name, ref v4) ?? false;
   }
 
+  /// <summary>The named Vector4d or Vector4 property's current value; false (and <paramref name="v4"/> unchanged) when neither this animator nor its chain has one.</summary>
+  /// <param name="name">The property's name.</param>
+  /// <param name="v4">Receives the value.</param>
   public virtual bool TryGetValue(in string name, ref Vector4 v4)
   {
     Vector4d d = v4;
@@ -236,6 +263,9 @@ public partial class PropertyAnimator : ITimeDependentProperty
     return nextProperty?.TryGetValue(name, ref v4) ?? false;
   }
 
+  /// <summary>The named quaternion property's current value (interpolated on the unit sphere); false (and <paramref name="q"/> unchanged) when neither this animator nor its chain has one.</summary>
+  /// <param name="name">The property's name.</param>
+  /// <param name="q">Receives the value.</param>
   public virtual bool TryGetValue(in string name, ref Quaterniond q)
   {
     if (properties.TryGetValue(name, out object? p) && p is Property<Quaterniond> pq && TryEval(pq, time, out Quaterniond v))
@@ -246,6 +276,9 @@ public partial class PropertyAnimator : ITimeDependentProperty
     return nextProperty?.TryGetValue(name, ref q) ?? false;
   }
 
+  /// <summary>The named matrix property's current value; false (and <paramref name="m4"/> unchanged) when neither this animator nor its chain has one.</summary>
+  /// <param name="name">The property's name.</param>
+  /// <param name="m4">Receives the value.</param>
   public virtual bool TryGetValue(in string name, ref Matrix4d m4)
   {
     if (properties.TryGetValue(name, out object? p) && p is Property<Matrix4d> pm && TryEval(pm, time, out Matrix4d v))

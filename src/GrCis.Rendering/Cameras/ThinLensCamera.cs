@@ -34,14 +34,30 @@ public class ThinLensCamera : StaticCamera
   {
   }
 
+  /// <summary>A thin-lens camera with the pinhole's placement (see <see cref="StaticCamera(Vector3d, Vector3d, double)"/>); the lens radius is 0 until set.</summary>
+  /// <param name="cen">Position of the camera (centre of the lens) in world coordinates.</param>
+  /// <param name="dir">Viewing direction; it is normalised.</param>
+  /// <param name="ang">Horizontal field of view in degrees.</param>
   public ThinLensCamera(Vector3d cen, Vector3d dir, double ang) : base(cen, dir, ang)
   {
   }
 
+  /// <summary>A thin-lens camera with the given up vector (see <see cref="StaticCamera(Vector3d, Vector3d, Vector3d, double)"/>); the lens radius is 0 until set.</summary>
+  /// <param name="cen">Position of the camera (centre of the lens) in world coordinates.</param>
+  /// <param name="dir">Viewing direction; it is normalised.</param>
+  /// <param name="upv">Up direction, not parallel to <paramref name="dir"/>.</param>
+  /// <param name="ang">Horizontal field of view in degrees.</param>
   public ThinLensCamera(Vector3d cen, Vector3d dir, Vector3d upv, double ang) : base(cen, dir, upv, ang)
   {
   }
 
+  /// <summary>A thin-lens camera with its aperture and focus.</summary>
+  /// <param name="cen">Position of the camera (centre of the lens) in world coordinates.</param>
+  /// <param name="dir">Viewing direction; it is normalised.</param>
+  /// <param name="ang">Horizontal field of view in degrees.</param>
+  /// <param name="lensRadius">Radius of the lens (<see cref="LensRadius"/>) in world units; 0 is a pinhole.</param>
+  /// <param name="focusDistance">Distance of the plane in sharp focus (<see cref="FocusDistance"/>), positive.</param>
+  /// <exception cref="ArgumentOutOfRangeException">The radius is negative or the distance is not positive (or either is not finite).</exception>
   public ThinLensCamera(Vector3d cen, Vector3d dir, double ang, double lensRadius, double focusDistance) : base(cen, dir, ang)
   {
     LensRadius = lensRadius;
@@ -75,6 +91,7 @@ public class ThinLensCamera : StaticCamera
   /// <summary>Focuses on <paramref name="point"/>: the plane of sharp focus passes through it.</summary>
   public void FocusOn(Vector3d point) => FocusDistance = Vector3d.Dot(point - center, direction.Normalized());
 
+  /// <summary>Recomputes the pinhole's image plane and the lens axes (right and up in the image) and the unit viewing axis.</summary>
   protected override void prepare()
   {
     base.prepare();
@@ -83,6 +100,15 @@ public class ThinLensCamera : StaticCamera
     viewAxis = direction.Normalized();
   }
 
+  /// <summary>
+  /// A ray of image point (x, y) through the lens: it starts at a point of the lens disk (the 2D sample of the
+  /// current worker's sampler, <see cref="SampleDimension.Lens"/>) and passes through the point where the pinhole ray
+  /// meets the plane of sharp focus. With <see cref="LensRadius"/> 0 the pinhole ray. Always true.
+  /// </summary>
+  /// <param name="x">Horizontal image coordinate in pixels, 0 at the left edge.</param>
+  /// <param name="y">Vertical image coordinate in pixels, 0 at the top edge.</param>
+  /// <param name="p0">Origin of the ray on the lens (world coordinates).</param>
+  /// <param name="p1">Direction of the ray, unit length.</param>
   public override bool GetRay(double x, double y, out Vector3d p0, out Vector3d p1)
   {
     base.GetRay(x, y, out p0, out p1);

@@ -48,6 +48,7 @@ public static class Interruption
       this.previous = previous;
     }
 
+    /// <summary>Gives the thread its previous token back.</summary>
     public void Dispose()
     {
       if (context != null)

@@ -15,6 +15,9 @@ public sealed class NoiseImage
 {
   readonly float[] variance;
 
+  /// <summary>An image of the given size with no estimate yet (every pixel NaN).</summary>
+  /// <param name="width">Width in pixels.</param>
+  /// <param name="height">Height in pixels.</param>
   public NoiseImage(int width, int height)
   {
     Variance = new FloatImage(width, height, 1);
@@ -25,8 +28,10 @@ public sealed class NoiseImage
   /// <summary>Estimated variance of each pixel's value (mean over its colour bands); NaN = no estimate.</summary>
   public FloatImage Variance { get; }
 
+  /// <summary>Width in pixels.</summary>
   public int Width => Variance.Width;
 
+  /// <summary>Height in pixels.</summary>
   public int Height => Variance.Height;
 
   /// <summary>

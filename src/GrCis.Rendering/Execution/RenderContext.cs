@@ -59,6 +59,7 @@ public sealed class RenderContext
       this.scratch = scratch;
     }
 
+    /// <summary>Adds the thread's counts under this scope to the render (and to the enclosing scope) and gives the thread its previous scratch back.</summary>
     public void Dispose()
     {
       if (context == null || worker == null || previous == null || scratch == null)

@@ -21,6 +21,6 @@ public sealed record RenderOptions
   /// <summary>Only these tiles (a part of a scaled-out still, see <see cref="Parts.PartLayout"/>); null = every tile.</summary>
   public System.Collections.Generic.IReadOnlyList<Tile>? Tiles { get; init; }
 
-  /// <summary>The worker threads this asks for (<see cref="RenderDefaults.Threads"/>).</summary>
+  /// <summary>The number of worker threads used: <see cref="Threads"/>, or the processor count when it is 0 (or less) (<see cref="RenderDefaults.Threads"/>).</summary>
   public int EffectiveThreads => RenderDefaults.Threads(Threads);
 }

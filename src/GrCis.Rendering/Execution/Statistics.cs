@@ -9,8 +9,10 @@ namespace Rendering;
 /// </summary>
 public static class Statistics
 {
+  /// <summary>Primary rays counted through <see cref="IncrementRaysCounters"/> (the library's renders do not add to it).</summary>
   public static int primaryRaysCount;
 
+  /// <summary>All rays: every finished render adds the rays it cast, and <see cref="IncrementRaysCounters"/> adds its amount.</summary>
   public static int allRaysCount;
 
   /// <summary>Counts <paramref name="amount"/> rays, also as primary ones when <paramref name="primary"/>; thread-safe.</summary>
@@ -21,6 +23,7 @@ public static class Statistics
       Interlocked.Add(ref primaryRaysCount, amount);
   }
 
+  /// <summary>Sets both counters to zero.</summary>
   public static void Reset()
   {
     primaryRaysCount = 0;

@@ -44,8 +44,10 @@ public sealed class WorkerContext
   /// <summary>What the worker renders: the scene (its clone), the image function and the renderer (<c>MT.scene</c> ...).</summary>
   public IRayScene? Scene { get; internal set; }
 
+  /// <summary>The image function the worker samples (<c>MT.imageFunction</c>).</summary>
   public IImageFunction? ImageFunction { get; internal set; }
 
+  /// <summary>The renderer the worker runs, or null (<c>MT.renderer</c>).</summary>
   public IRenderer? Renderer { get; internal set; }
 
   /// <summary>Index of the worker among its render's threads (<c>MT.threadID</c>).</summary>
@@ -178,6 +180,7 @@ public sealed class WorkerContext
     /// <summary>The worker's context.</summary>
     public WorkerContext? Context => worker;
 
+    /// <summary>Adds the worker's ray and hit counts to its render and to the thread's previous context, and makes that context current again.</summary>
     public void Dispose()
     {
       if (worker == null || previous == null)

@@ -10,13 +10,21 @@
 /// </summary>
 public abstract class AbstractRayRegisterer
 {
+  /// <summary>Called by the ray tracer for a ray it traced; what <paramref name="parameters"/> hold depends on <paramref name="rayType"/> (see the class).</summary>
+  /// <param name="rayType">The kind of ray.</param>
+  /// <param name="parameters">The ray's data, in the order the class lists.</param>
   public abstract void RegisterRay(RayType rayType, params object[] parameters);
 
+  /// <summary>Kinds of rays reported to <see cref="RegisterRay"/>.</summary>
   public enum RayType
   {
+    /// <summary>A ray that hit nothing.</summary>
     rayVisualizerNormal,
+    /// <summary>A shadow ray towards a light.</summary>
     rayVisualizerShadow,
+    /// <summary>GrCis's kind for its own tools; the library never reports it.</summary>
     mapsNormal,
+    /// <summary>A ray that hit a surface.</summary>
     unknown,
   }
 }

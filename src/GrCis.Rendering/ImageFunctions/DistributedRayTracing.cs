@@ -31,6 +31,8 @@ public class DistributedRayTracing : MonteCarloRayTracing
   /// <summary>Lobes with an exponent at or above this are treated as ideal (narrower than the pixel footprint of usual scenes).</summary>
   public int IdealExponent = 100000;
 
+  /// <summary>Distributed ray tracing of <paramref name="sc"/>, with glossy reflections and refractions on and Whitted's other defaults.</summary>
+  /// <param name="sc">The scene, or null to render the current scene (<see cref="MT.scene"/>).</param>
   public DistributedRayTracing(IRayScene? sc = null) : base(sc)
   {
   }
@@ -46,9 +48,19 @@ public class DistributedRayTracing : MonteCarloRayTracing
     IdealExponent = d.IdealExponent;
   }
 
+  /// <summary>
+  /// With <see cref="GlossyReflections"/> and a <see cref="PhongMaterial"/> whose H is below <see cref="IdealExponent"/>, a
+  /// direction from the cos^H lobe around <paramref name="mirror"/>; false when it points to the other side of the
+  /// surface than the mirror direction. Otherwise the mirror direction itself.
+  /// </summary>
   protected internal override bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction) =>
     Lobe(GlossyReflections, i, mirror, SampleDimension.GlossyReflection, depth, out direction);
 
+  /// <summary>
+  /// With <see cref="GlossyRefractions"/> and a <see cref="PhongMaterial"/> whose H is below <see cref="IdealExponent"/>, a
+  /// direction from the cos^H lobe around <paramref name="refracted"/>; false when it points to the other side of the
+  /// surface than the ideal direction. Otherwise the ideal direction itself.
+  /// </summary>
   protected internal override bool RefractionDirection(Intersection i, Vector3d refracted, int depth, out Vector3d direction) =>
     Lobe(GlossyRefractions, i, refracted.Normalized(), SampleDimension.GlossyRefraction, depth, out direction);
 

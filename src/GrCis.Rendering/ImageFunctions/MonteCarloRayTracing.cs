@@ -13,6 +13,8 @@ namespace Rendering;
 [Serializable]
 public abstract class MonteCarloRayTracing : RayTracing
 {
+  /// <summary>A Monte Carlo image function of <paramref name="sc"/>.</summary>
+  /// <param name="sc">The scene, or null to render the current scene (<see cref="MT.scene"/>).</param>
   protected MonteCarloRayTracing(IRayScene? sc = null) : base(sc)
   {
   }

@@ -45,6 +45,8 @@ public class PathTracing : MonteCarloRayTracing
   /// <summary>Phong exponents at or above this make an ideal mirror (a delta lobe).</summary>
   public int MirrorExponent = 100000;
 
+  /// <summary>Path tracing of <paramref name="sc"/> with paths up to 64 vertices deep (<see cref="RayTracing.MaxLevel"/>).</summary>
+  /// <param name="sc">The scene, or null to render the current scene (<see cref="MT.scene"/>).</param>
   public PathTracing(IRayScene? sc = null) : base(sc) => MaxLevel = 64;
 
   /// <summary>False: a path scatters by the materials at every bounce, whatever --no-reflections and --no-refractions say.</summary>

@@ -13,9 +13,13 @@ public class RayRecursion
   /// <summary>One more ray to trace, with the coefficient its colour is multiplied by.</summary>
   public struct RayContribution
   {
+    /// <summary>Origin of the ray in world coordinates.</summary>
     public Vector3d origin;
+    /// <summary>Direction of the ray in world coordinates.</summary>
     public Vector3d direction;
+    /// <summary>What the ray's colour is multiplied by: one value per band, one value for every band, or null for 1.</summary>
     public double[]? coefficient;
+    /// <summary>Importance of the ray, handed to the tracer's shading: the rays it spawns in turn are traced while their importance stays at or above <see cref="RayTracing.MinImportance"/>.</summary>
     public double importance;
 
     /// <summary>A ray from <paramref name="p0"/> (moved by <see cref="Intersection.RAY_EPSILON"/> along the ray, off the surface).</summary>
@@ -42,6 +46,8 @@ public class RayRecursion
       importance = imp;
     }
 
+    /// <summary>A copy of <paramref name="r"/> (the coefficient array is shared).</summary>
+    /// <param name="r">The ray to copy.</param>
     public RayContribution(RayContribution r)
     {
       origin = r.origin;
@@ -71,8 +77,12 @@ public class RayRecursion
   /// <summary>Further rays (null or empty = none).</summary>
   public List<RayContribution>? Rays;
 
+  /// <summary>Nothing to add and no rays; fill <see cref="DirectContribution"/> and <see cref="Rays"/> afterwards.</summary>
   public RayRecursion() { }
 
+  /// <summary>A direct colour and at most one further ray.</summary>
+  /// <param name="direct">Colour added directly (<see cref="DirectContribution"/>), or null.</param>
+  /// <param name="ray">A ray to trace, or null.</param>
   public RayRecursion(in double[]? direct, in RayContribution? ray = null)
   {
     DirectContribution = direct;
@@ -81,12 +91,19 @@ public class RayRecursion
       Rays.Add(ray.Value);
   }
 
+  /// <summary>A direct colour and up to two further rays (e.g. a reflected and a refracted one).</summary>
+  /// <param name="direct">Colour added directly (<see cref="DirectContribution"/>), or null.</param>
+  /// <param name="ray1">A ray to trace, or null.</param>
+  /// <param name="ray2">Another ray to trace, or null.</param>
   public RayRecursion(double[]? direct, RayContribution? ray1, RayContribution? ray2) : this(direct, ray1)
   {
     if (ray2 != null)
       Rays!.Add(ray2.Value);
   }
 
+  /// <summary>A direct colour and a list of further rays.</summary>
+  /// <param name="direct">Colour added directly (<see cref="DirectContribution"/>), or null.</param>
+  /// <param name="rays">The rays to trace (<see cref="Rays"/>; the list is kept, not copied), or null.</param>
   public RayRecursion(in double[]? direct, in List<RayContribution>? rays)
   {
     DirectContribution = direct;

@@ -11,13 +11,22 @@ public sealed class FloatImage
   /// <summary>Upper bound on Width * Height * Bands, so the buffer always fits one array.</summary>
   public const long MaxSamples = 1L << 30;
 
+  /// <summary>Width in pixels.</summary>
   public int Width { get; }
+  /// <summary>Height in pixels.</summary>
   public int Height { get; }
+  /// <summary>Channels per pixel (3 for RGB).</summary>
   public int Bands { get; }
 
   /// <summary>Row-major samples, top row first; sample (x, y, band) is at (y * Width + x) * Bands + band.</summary>
   public float[] Data { get; }
 
+  /// <summary>A black image (every sample 0).</summary>
+  /// <param name="width">Width in pixels, positive.</param>
+  /// <param name="height">Height in pixels, positive.</param>
+  /// <param name="bands">Channels per pixel, positive (default 3).</param>
+  /// <exception cref="ArgumentOutOfRangeException">A size or the band count is not positive.</exception>
+  /// <exception cref="ArgumentException">The image would have more than <see cref="MaxSamples"/> samples.</exception>
   public FloatImage(int width, int height, int bands = 3)
   {
     Validate(width, height, bands);
@@ -41,6 +50,8 @@ public sealed class FloatImage
     Data = data;
   }
 
+  /// <summary>Sample <paramref name="band"/> of pixel (<paramref name="x"/>, <paramref name="y"/>); (0, 0) is the top-left pixel.</summary>
+  /// <exception cref="ArgumentOutOfRangeException">A coordinate or the band lies outside the image.</exception>
   public float this[int x, int y, int band]
   {
     get => Data[SampleIndex(x, y, band)];
@@ -67,6 +78,8 @@ public sealed class FloatImage
       color[b] = Data[i + b];
   }
 
+  /// <summary>A new array with the <see cref="Bands"/> channels of pixel (x, y).</summary>
+  /// <exception cref="ArgumentOutOfRangeException">The pixel lies outside the image.</exception>
   public double[] GetPixel(int x, int y)
   {
     double[] color = new double[Bands];

@@ -12,6 +12,9 @@ namespace Rendering.Imaging;
 /// </summary>
 public static class PfmWriter
 {
+  /// <summary>Writes <paramref name="image"/> (1 or 3 bands) to <paramref name="output"/> as a PFM file.</summary>
+  /// <exception cref="ArgumentNullException">An argument is null.</exception>
+  /// <exception cref="ArgumentException">The image has neither 1 nor 3 bands.</exception>
   public static void Write(FloatImage image, Stream output)
   {
     ArgumentNullException.ThrowIfNull(image);
@@ -37,6 +40,7 @@ public static class PfmWriter
     }
   }
 
+  /// <summary>The bytes of the PFM file of <paramref name="image"/> (1 or 3 bands; see <see cref="Write"/>).</summary>
   public static byte[] Encode(FloatImage image)
   {
     using MemoryStream ms = new();

@@ -52,6 +52,7 @@ public sealed class PngEncoder
     }
   }
 
+  /// <summary>The bytes of the PNG file of <paramref name="image"/>.</summary>
   public byte[] Encode(Rgb8Image image)
   {
     using MemoryStream ms = new();
@@ -59,6 +60,8 @@ public sealed class PngEncoder
     return ms.ToArray();
   }
 
+  /// <summary>Writes <paramref name="image"/> to <paramref name="output"/> as a PNG file.</summary>
+  /// <exception cref="ArgumentNullException"><paramref name="image"/> is null.</exception>
   public void Encode(Rgb8Image image, Stream output)
   {
     ArgumentNullException.ThrowIfNull(image);

@@ -11,14 +11,22 @@ public sealed class Rgb8Image
   /// <summary>Upper bound on Width * Height, so the RGB buffer always fits one array.</summary>
   public const long MaxPixels = 1L << 28;
 
+  /// <summary>Width in pixels.</summary>
   public int Width { get; }
+  /// <summary>Height in pixels.</summary>
   public int Height { get; }
 
   /// <summary>Row-major RGB bytes; pixel (x, y) starts at (y * Width + x) * 3.</summary>
   public byte[] Data { get; }
 
+  /// <summary>Bytes per row: 3 × <see cref="Width"/>.</summary>
   public int Stride => Width * 3;
 
+  /// <summary>A black image (every byte 0).</summary>
+  /// <param name="width">Width in pixels, positive.</param>
+  /// <param name="height">Height in pixels, positive.</param>
+  /// <exception cref="ArgumentOutOfRangeException">A size is not positive.</exception>
+  /// <exception cref="ArgumentException">The image would have more than <see cref="MaxPixels"/> pixels.</exception>
   public Rgb8Image(int width, int height)
   {
     Validate(width, height);
@@ -40,12 +48,16 @@ public sealed class Rgb8Image
     Data = data;
   }
 
+  /// <summary>The red, green and blue bytes of pixel (x, y); (0, 0) is the top-left pixel.</summary>
+  /// <exception cref="ArgumentOutOfRangeException">The pixel lies outside the image.</exception>
   public (byte R, byte G, byte B) GetPixel(int x, int y)
   {
     int i = PixelIndex(x, y);
     return (Data[i], Data[i + 1], Data[i + 2]);
   }
 
+  /// <summary>Sets the red, green and blue bytes of pixel (x, y).</summary>
+  /// <exception cref="ArgumentOutOfRangeException">The pixel lies outside the image.</exception>
   public void SetPixel(int x, int y, byte r, byte g, byte b)
   {
     int i = PixelIndex(x, y);
@@ -54,6 +66,8 @@ public sealed class Rgb8Image
     Data[i + 2] = b;
   }
 
+  /// <summary>Index of the red byte of pixel (x, y) in <see cref="Data"/>.</summary>
+  /// <exception cref="ArgumentOutOfRangeException">The pixel lies outside the image.</exception>
   public int PixelIndex(int x, int y)
   {
     if ((uint)x >= (uint)Width)

@@ -7,16 +7,25 @@ namespace Rendering;
 [Serializable]
 public class PointLightSource : ILightSource
 {
+  /// <summary>Intensity per colour band (usually RGB); it does not fall off with distance.</summary>
   public double[] intensity;
 
+  /// <summary>Position of the light in world coordinates.</summary>
   public Vector3d? position { get; set; }
 
+  /// <summary>A point light of the same intensity in all three bands, e.g. <c>new PointLightSource(new Vector3d(-5.0, 4.0, -3.0), 1.2)</c>.</summary>
+  /// <param name="pos">Position of the light in world coordinates.</param>
+  /// <param name="intens">Intensity of each band.</param>
   public PointLightSource(Vector3d pos, double intens)
   {
     position = pos;
     intensity = new[] { intens, intens, intens };
   }
 
+  /// <summary>A point light of the given intensity per band.</summary>
+  /// <param name="pos">Position of the light in world coordinates.</param>
+  /// <param name="intens">Intensity per band (copied).</param>
+  /// <exception cref="ArgumentNullException"><paramref name="intens"/> is null.</exception>
   public PointLightSource(Vector3d pos, double[] intens)
   {
     ArgumentNullException.ThrowIfNull(intens);
@@ -40,6 +49,12 @@ public class PointLightSource : ILightSource
     return result;
   }
 
+  /// <summary>
+  /// <see cref="intensity"/> (this light's own array, not attenuated) when the surface at the hit faces the light;
+  /// null when it faces away (<c>dir · Normal ≤ 0</c>). Shadows are the image function's business.
+  /// </summary>
+  /// <param name="intersection">The completed hit to light (its world point and normal are read).</param>
+  /// <param name="dir">From the hit point to the light, not normalised (its length is the distance).</param>
   public virtual double[]? GetIntensity(Intersection intersection, out Vector3d dir) => Intensity(intersection, out dir);
 
   /// <summary><see cref="GetIntensity"/> of this class itself (the prepared Whitted kernel calls it directly for exactly this type).</summary>

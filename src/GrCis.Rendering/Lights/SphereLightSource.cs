@@ -12,13 +12,22 @@ namespace Rendering;
 [Serializable]
 public class SphereLightSource : PointLightSource
 {
+  /// <summary>Radius of the light sphere in world units; 0 (or less) makes it a point light.</summary>
   public double radius;
 
   /// <summary>Attenuation 1 / (d0 + d1·r + d2·r²) as for <see cref="RectangleLightSource.Dim"/>; null = none.</summary>
   public double[]? Dim;
 
+  /// <summary>A spherical light of the same intensity in all three bands, without attenuation.</summary>
+  /// <param name="pos">Centre in world coordinates.</param>
+  /// <param name="rad">Radius in world units (<see cref="radius"/>).</param>
+  /// <param name="intens">Intensity of each band.</param>
   public SphereLightSource(Vector3d pos, double rad, double intens) : base(pos, intens) => radius = rad;
 
+  /// <summary>A spherical light of the given intensity per band, without attenuation.</summary>
+  /// <param name="pos">Centre in world coordinates.</param>
+  /// <param name="rad">Radius in world units (<see cref="radius"/>).</param>
+  /// <param name="intens">Intensity per band (copied).</param>
   public SphereLightSource(Vector3d pos, double rad, double[] intens) : base(pos, intens) => radius = rad;
 
   /// <summary>This light's instance of <see cref="SampleDimension.SphereLight"/>: from its position and radius, the same in every clone and run.</summary>
@@ -30,6 +39,13 @@ public class SphereLightSource : PointLightSource
     return (int)(h ^ (h >> 32));
   }
 
+  /// <summary>
+  /// Light from one point of the sphere, chosen for the current sample: the nearer point of the sphere along a
+  /// direction uniform in the cone the sphere subtends. From inside the sphere, or with radius 0, the centre.
+  /// Null when the surface faces away from that point; the intensity is attenuated only when <see cref="Dim"/> is set.
+  /// </summary>
+  /// <param name="intersection">The completed hit to light (its world point and normal are read).</param>
+  /// <param name="dir">From the hit point to the chosen light point, not normalised.</param>
   public override double[]? GetIntensity(Intersection intersection, out Vector3d dir)
   {
     Vector3d p = intersection.CoordWorld;

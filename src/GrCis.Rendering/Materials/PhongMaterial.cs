@@ -6,6 +6,7 @@ namespace Rendering;
 [Serializable]
 public class PhongMaterial : IMaterial
 {
+  /// <inheritdoc/>
   public double[] Color { get; set; }
 
   /// <summary>Ambient coefficient.</summary>
@@ -20,6 +21,7 @@ public class PhongMaterial : IMaterial
   /// <summary>Specular exponent (shininess).</summary>
   public int H { get; set; }
 
+  /// <summary>Transparency coefficient (0 = opaque, the default): the weight of the refracted ray and of the light passing through the surface.</summary>
   public double Kt { get; set; }
 
   /// <summary>Weight of Schlick's Fresnel approximation: 0 = pure Phong, 1 = full Schlick.</summary>
@@ -55,6 +57,17 @@ public class PhongMaterial : IMaterial
     }
   }
 
+  /// <summary>
+  /// A Phong material, e.g. <c>new PhongMaterial(new double[] { 1.0, 0.6, 0.1 }, 0.1, 0.8, 0.2, 16)</c>; opaque
+  /// (<see cref="Kt"/> 0) with index of refraction <see cref="n"/> 1.5 until set.
+  /// </summary>
+  /// <param name="color">Surface colour per band (<see cref="Color"/>); the array is kept, not copied.</param>
+  /// <param name="ka">Ambient coefficient (<see cref="Ka"/>).</param>
+  /// <param name="kd">Diffuse coefficient (<see cref="Kd"/>).</param>
+  /// <param name="ks">Specular coefficient (<see cref="Ks"/>).</param>
+  /// <param name="h">Specular exponent (<see cref="H"/>): the higher, the smaller and sharper the highlight.</param>
+  /// <param name="schlick">Weight of Schlick's Fresnel term (<see cref="Sch"/>), 0 to 1; default 1.</param>
+  /// <exception cref="ArgumentNullException"><paramref name="color"/> is null.</exception>
   public PhongMaterial(double[] color, double ka, double kd, double ks, int h, double schlick = 1.0)
   {
     ArgumentNullException.ThrowIfNull(color);
@@ -71,6 +84,9 @@ public class PhongMaterial : IMaterial
   /// <summary>The default material: warm yellow, ka 0.2, kd 0.7, ks 0.2, h 16.</summary>
   public PhongMaterial() : this(new[] { 1.0, 0.9, 0.4 }, 0.2, 0.7, 0.2, 16) { }
 
+  /// <summary>A copy of <paramref name="m"/>: every coefficient, and copies of its colour and emission arrays.</summary>
+  /// <param name="m">The material to copy.</param>
+  /// <exception cref="ArgumentNullException"><paramref name="m"/> is null.</exception>
   public PhongMaterial(PhongMaterial m)
   {
     ArgumentNullException.ThrowIfNull(m);
@@ -85,6 +101,7 @@ public class PhongMaterial : IMaterial
     Emission = (double[]?)m.Emission?.Clone();
   }
 
+  /// <summary>A deep copy (see <see cref="PhongMaterial(PhongMaterial)"/>).</summary>
   public virtual object Clone() => new PhongMaterial(this);
 
   /// <summary>Copies every coefficient of <paramref name="m"/> and shares <paramref name="color"/> (shading scratch copies).</summary>

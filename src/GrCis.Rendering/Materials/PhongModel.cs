@@ -11,11 +11,31 @@ namespace Rendering;
 [Serializable]
 public class PhongModel : IReflectanceModel
 {
+  /// <summary>A new default <see cref="PhongMaterial"/> (see <see cref="PhongMaterial()"/>).</summary>
   public IMaterial DefaultMaterial() => new PhongMaterial();
 
+  /// <summary>Reflected colour at a completed hit: its <see cref="Intersection.Material"/> and <see cref="Intersection.Normal"/>.</summary>
+  /// <param name="intersection">The completed hit.</param>
+  /// <param name="input">From the surface point towards the light, any length; zero for ambient light.</param>
+  /// <param name="output">Unit direction from the surface point towards the viewer.</param>
+  /// <param name="comp">Which parts to compute (flags).</param>
   public double[]? ColorReflection(Intersection intersection, Vector3d input, Vector3d output, ReflectionComponent comp) =>
     ColorReflection(intersection.Material!, intersection.Normal, input, output, comp);
 
+  /// <summary>
+  /// Phong reflectance of a <see cref="PhongMaterial"/> (null for any other material), a new array of one value per band
+  /// of the material's colour. Ambient light (zero <paramref name="input"/>) gives Ka·colour (Ka·Kt·colour seen from
+  /// behind the surface). Otherwise Kd·|cos α|·colour plus the colourless highlight Ks·cos^H β, where β is measured from
+  /// the mirrored light direction; when light and viewer are on opposite sides and <paramref name="comp"/> asks for
+  /// <see cref="ReflectionComponent.SPECULAR_REFRACTION"/>, the highlight is about the refracted direction and both terms
+  /// are weighted by Kt. With <see cref="PhongMaterial.Sch"/> &gt; 0, Schlick's term moves part of Kd and Kt into Ks
+  /// at grazing angles; total internal reflection moves Kt into Ks.
+  /// </summary>
+  /// <param name="material">The surface material.</param>
+  /// <param name="normal">Unit surface normal.</param>
+  /// <param name="input">From the surface point towards the light, any length; zero for ambient light.</param>
+  /// <param name="output">Unit direction from the surface point towards the viewer.</param>
+  /// <param name="comp">Which parts to compute (flags).</param>
   public double[]? ColorReflection(IMaterial material, Vector3d normal, Vector3d input, Vector3d output, ReflectionComponent comp)
   {
     if (material is not PhongMaterial mat)

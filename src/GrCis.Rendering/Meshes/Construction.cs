@@ -18,6 +18,7 @@ public class Construction
     name = "Josef Pelikán";
   }
 
+  /// <summary>A construction with nothing to set up (a student's version may prepare its data here).</summary>
   public Construction()
   {
   }

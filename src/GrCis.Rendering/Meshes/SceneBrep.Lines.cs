@@ -35,6 +35,8 @@ public partial class SceneBrep
     return vertexPtr.Count / 2 - 1;
   }
 
+  /// <summary>The two vertices of line <paramref name="li"/>.</summary>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="li"/> is not a line of the mesh.</exception>
   public void GetLineVertices(int li, out int v1, out int v2)
   {
     if ((uint)li >= (uint)Lines)

@@ -18,17 +18,25 @@ public partial class SceneBrep : ICloneable
   public const int NULL = -1;
 
   // GrCis's names; protected as in GrCis, for subclasses.
+  /// <summary>Vertex positions, indexed by vertex handle.</summary>
   protected List<Vector3> geometry = new();
+  /// <summary>Vertex normals (one per vertex), or null when the mesh has none.</summary>
   protected List<Vector3>? normals;
+  /// <summary>Vertex colours, RGB in [0, 1] (one per vertex), or null when the mesh has none.</summary>
   protected List<Vector3>? colors;
+  /// <summary>Vertex texture coordinates (one per vertex), or null when the mesh has none.</summary>
   protected List<Vector2>? txtCoords;
+  /// <summary>The corner table's vertex of each corner: three corners per triangle (or two per line in line mode).</summary>
   protected List<int> vertexPtr = new();
+  /// <summary>The corner table's opposite corner of each corner (<see cref="NULL"/> on a border), or null until <see cref="BuildCornerTable"/>.</summary>
   protected List<int>? oppositePtr;
 
-  /// <summary>Statistics of the last <see cref="BuildCornerTable"/>: unmatched and shared edges.</summary>
+  /// <summary>Statistics of the last <see cref="BuildCornerTable"/>: edges found (an edge of two triangles counts once; see <see cref="statShared"/>).</summary>
   public int statEdges;
+  /// <summary>Statistics of the last <see cref="BuildCornerTable"/>: edges shared by two triangles (linked).</summary>
   public int statShared;
 
+  /// <summary>An empty mesh.</summary>
   public SceneBrep() => Reset();
 
   /// <summary>Removes everything.</summary>
@@ -45,6 +53,7 @@ public partial class SceneBrep : ICloneable
 
   object ICloneable.Clone() => Clone();
 
+  /// <summary>A deep copy: its own lists of vertices, attributes and corners.</summary>
   public SceneBrep Clone()
   {
     var copy = new SceneBrep
@@ -76,19 +85,25 @@ public partial class SceneBrep : ICloneable
     vertexPtr.Capacity = Math.Max(vertexPtr.Capacity, vertexPtr.Count + 3 * additionalVertices);
   }
 
+  /// <summary>Number of vertices.</summary>
   public int Vertices => geometry.Count;
 
   /// <summary>Number of normals: 0 or <see cref="Vertices"/>.</summary>
   public int Normals => normals?.Count ?? 0;
 
+  /// <summary>True when the mesh has vertex normals.</summary>
   public bool HasNormals() => normals != null;
 
+  /// <summary>Number of vertex colours: 0 or <see cref="Vertices"/>.</summary>
   public int Colors => colors?.Count ?? 0;
 
+  /// <summary>True when the mesh has vertex colours.</summary>
   public bool HasColors() => colors != null;
 
+  /// <summary>Number of texture coordinates: 0 or <see cref="Vertices"/>.</summary>
   public int TxtCoords => txtCoords?.Count ?? 0;
 
+  /// <summary>True when the mesh has texture coordinates.</summary>
   public bool HasTxtCoords() => txtCoords != null;
 
   /// <summary>Number of triangles; 0 when the mesh holds lines.</summary>
@@ -108,10 +123,16 @@ public partial class SceneBrep : ICloneable
     return handle;
   }
 
+  /// <summary>Position of vertex <paramref name="v"/>.</summary>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="v"/> is not a vertex handle.</exception>
   public Vector3 GetVertex(int v) => geometry[CheckVertex(v)];
 
+  /// <summary>Moves vertex <paramref name="v"/> to <paramref name="pos"/>.</summary>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="v"/> is not a vertex handle.</exception>
   public void SetVertex(int v, Vector3 pos) => geometry[CheckVertex(v)] = pos;
 
+  /// <summary>Sets the normal of vertex <paramref name="v"/>; the first call gives every other vertex the normal +y.</summary>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="v"/> is not a vertex handle.</exception>
   public void SetNormal(int v, Vector3 normal)
   {
     CheckVertex(v);
@@ -119,8 +140,13 @@ public partial class SceneBrep : ICloneable
     normals[v] = normal;
   }
 
+  /// <summary>Normal of vertex <paramref name="v"/>.</summary>
+  /// <exception cref="InvalidOperationException">The mesh has no normals.</exception>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="v"/> is not a vertex handle.</exception>
   public Vector3 GetNormal(int v) => (normals ?? throw NoAttribute("normals"))[CheckVertex(v)];
 
+  /// <summary>Sets the colour (RGB) of vertex <paramref name="v"/>; the first call gives every other vertex white.</summary>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="v"/> is not a vertex handle.</exception>
   public void SetColor(int v, Vector3 color)
   {
     CheckVertex(v);
@@ -128,8 +154,13 @@ public partial class SceneBrep : ICloneable
     colors[v] = color;
   }
 
+  /// <summary>Colour of vertex <paramref name="v"/>.</summary>
+  /// <exception cref="InvalidOperationException">The mesh has no colours.</exception>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="v"/> is not a vertex handle.</exception>
   public Vector3 GetColor(int v) => (colors ?? throw NoAttribute("colors"))[CheckVertex(v)];
 
+  /// <summary>Sets the texture coordinates of vertex <paramref name="v"/>; the first call gives every other vertex (0, 0).</summary>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="v"/> is not a vertex handle.</exception>
   public void SetTxtCoord(int v, Vector2 txt)
   {
     CheckVertex(v);
@@ -142,6 +173,9 @@ public partial class SceneBrep : ICloneable
     txtCoords[v] = txt;
   }
 
+  /// <summary>Texture coordinates of vertex <paramref name="v"/>.</summary>
+  /// <exception cref="InvalidOperationException">The mesh has no texture coordinates.</exception>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="v"/> is not a vertex handle.</exception>
   public Vector2 GetTxtCoord(int v) => (txtCoords ?? throw NoAttribute("texture coordinates"))[CheckVertex(v)];
 
   /// <summary>Adds a triangle (counter-clockwise seen from its front) and returns its handle; <see cref="NULL"/> when the mesh holds lines.</summary>
@@ -165,6 +199,8 @@ public partial class SceneBrep : ICloneable
     return corner / 3;
   }
 
+  /// <summary>The three vertex handles of triangle <paramref name="tr"/>, in order.</summary>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="tr"/> is not a triangle handle.</exception>
   public void GetTriangleVertices(int tr, out int v1, out int v2, out int v3)
   {
     int c = CheckTriangle(tr) * 3;
@@ -173,6 +209,8 @@ public partial class SceneBrep : ICloneable
     v3 = vertexPtr[c + 2];
   }
 
+  /// <summary>The three vertex positions of triangle <paramref name="tr"/>, in order.</summary>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="tr"/> is not a triangle handle.</exception>
   public void GetTriangleVertices(int tr, out Vector3 v1, out Vector3 v2, out Vector3 v3)
   {
     GetTriangleVertices(tr, out int a, out int b, out int c);
@@ -181,6 +219,8 @@ public partial class SceneBrep : ICloneable
     v3 = geometry[c];
   }
 
+  /// <summary>Gives triangle <paramref name="tr"/> three other vertices (the corner table is not updated: build it again).</summary>
+  /// <exception cref="ArgumentOutOfRangeException">A handle is out of range.</exception>
   public void SetTriangleVertices(int tr, int v1, int v2, int v3)
   {
     int c = CheckTriangle(tr) * 3;
@@ -282,20 +322,31 @@ public partial class SceneBrep : ICloneable
     }
   }
 
+  /// <summary>The triangle corner <paramref name="c"/> belongs to.</summary>
   public static int cTriangle(int c) => c / 3;
 
+  /// <summary>The first corner of triangle <paramref name="tr"/> (the others follow it).</summary>
   public static int tCorner(int tr) => tr * 3;
 
+  /// <summary>The next corner of the same triangle (in the order of its vertices, cyclically).</summary>
   public static int cNext(int c) => c % 3 == 2 ? c - 2 : c + 1;
 
+  /// <summary>The previous corner of the same triangle (cyclically).</summary>
   public static int cPrev(int c) => c % 3 == 0 ? c + 2 : c - 1;
 
+  /// <summary>The vertex of corner <paramref name="c"/>; <see cref="NULL"/> for a negative corner.</summary>
   public int cVertex(int c) => c < 0 ? NULL : vertexPtr[c];
 
+  /// <summary>
+  /// The corner of the neighbouring triangle across the edge opposite <paramref name="c"/>; <see cref="NULL"/> on a border,
+  /// for a negative corner, or before <see cref="BuildCornerTable"/>.
+  /// </summary>
   public int cOpposite(int c) => c < 0 || oppositePtr == null ? NULL : oppositePtr[c];
 
+  /// <summary>The opposite of the next corner, <c>cOpposite(cNext(c))</c>: the corner across the edge from <paramref name="c"/> to its previous corner.</summary>
   public int cRight(int c) => cOpposite(cNext(c));
 
+  /// <summary>The opposite of the previous corner, <c>cOpposite(cPrev(c))</c>: the corner across the edge from <paramref name="c"/> to its next corner.</summary>
   public int cLeft(int c) => cOpposite(cPrev(c));
 
   List<Vector3> Filled(Vector3 value)

@@ -27,10 +27,13 @@ public class StanfordPly
   /// <summary>ASCII output ends lines with the platform's newline (true) or CR only.</summary>
   public bool NativeNewLine { get; set; } = true;
 
+  /// <summary><see cref="WriteBrep"/> writes vertex normals when the mesh has them (default true); reading always takes them.</summary>
   public bool DoNormals { get; set; } = true;
 
+  /// <summary><see cref="WriteBrep"/> writes texture coordinates when the mesh has them (default true); reading always takes them.</summary>
   public bool DoTxtCoords { get; set; } = true;
 
+  /// <summary><see cref="WriteBrep"/> writes vertex colours when the mesh has them (default true); reading always takes them.</summary>
   public bool DoColors { get; set; } = true;
 
   /// <summary>Reads a file (gzip when it ends with <c>.gz</c>) into a reset scene; returns the number of triangles.</summary>

@@ -29,6 +29,9 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
   /// <summary>Interpolate vertex normals (when the mesh has them).</summary>
   public bool Smooth { get; set; }
 
+  /// <summary>A solid of the triangles of <paramref name="m"/>, smooth-shaded (<see cref="Smooth"/>), not in shell mode. The mesh is kept, not copied.</summary>
+  /// <param name="m">The mesh, in the node's local coordinates.</param>
+  /// <exception cref="ArgumentNullException"><paramref name="m"/> is null.</exception>
   public TriangleMesh(SceneBrep m)
   {
     ArgumentNullException.ThrowIfNull(m);
@@ -68,6 +71,11 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
   /// <summary>Whether the BVH has been built (the faithful path never builds it).</summary>
   internal bool HasBvh => Volatile.Read(ref bvh) != null;
 
+  /// <summary>
+  /// Every crossing of the line <c>p0 + t * p1</c> (local coordinates) with a triangle, sorted by <see cref="Intersection.T"/>
+  /// (one record for a crossing through a shared edge or vertex); in <see cref="ShellMode"/> each crossing is followed by
+  /// an exit <see cref="SHELL_OFFSET"/> behind it. Null when there is none.
+  /// </summary>
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     Execution.WorkerContext context = Execution.WorkerContext.Current;
@@ -169,12 +177,17 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
     return false;
   }
 
+  /// <inheritdoc/>
   public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.SolidData = new HitData(hit.Data, hit.Aux.X, hit.Aux.Y);
   }
 
+  /// <summary>
+  /// Sets the normal (the face's, or with <see cref="Smooth"/> the interpolated vertex normal), the texture coordinates
+  /// (interpolated when the mesh has them, else zero) and the tangents (from the texture parametrisation when possible).
+  /// </summary>
   public override void CompleteIntersection(Intersection inter)
   {
     if (inter.SolidData is not HitData d)
@@ -215,6 +228,9 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
     SolidSupport.SetWorldFrame(inter, normal);
   }
 
+  /// <summary>The box of all the mesh's vertices (a point at the origin for an empty mesh).</summary>
+  /// <param name="corner1">The minimal corner.</param>
+  /// <param name="corner2">The maximal corner.</param>
   public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
   {
     if (mesh.Vertices == 0)

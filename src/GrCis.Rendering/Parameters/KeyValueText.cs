@@ -51,15 +51,26 @@ public static class KeyValueText
   // Each overload returns false and leaves 'val' unchanged when the map is null, the key is
   // missing or the text does not parse.
 
+  /// <summary>
+  /// Reads the text of <paramref name="key"/> in a parsed <c>param</c> map into <paramref name="val"/> as a number of
+  /// <paramref name="val"/>'s type (invariant culture, e.g. <c>1.5</c>). False, with <paramref name="val"/> unchanged, when the map
+  /// is null, the key is missing or the text does not parse; so <paramref name="val"/> may hold the default beforehand.
+  /// </summary>
+  /// <param name="rec">The map from <see cref="Parse"/>, or null.</param>
+  /// <param name="key">The parameter's name.</param>
+  /// <param name="val">Receives the value.</param>
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref int val) =>
     TryGet(rec, key, out string? s) && TryParseValue(s, ref val);
 
+  /// <inheritdoc cref="TryParse(Dictionary{string, string}, string, ref int)"/>
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref long val) =>
     TryGet(rec, key, out string? s) && TryParseValue(s, ref val);
 
+  /// <inheritdoc cref="TryParse(Dictionary{string, string}, string, ref int)"/>
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref float val) =>
     TryGet(rec, key, out string? s) && TryParseValue(s, ref val);
 
+  /// <inheritdoc cref="TryParse(Dictionary{string, string}, string, ref int)"/>
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref double val) =>
     TryGet(rec, key, out string? s) && TryParseValue(s, ref val);
 
@@ -67,6 +78,10 @@ public static class KeyValueText
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref bool val) =>
     TryGet(rec, key, out string? s) && TryParseValue(s, ref val);
 
+  /// <summary>The text of <paramref name="key"/> (trimmed; "" for a bare key); false, with <paramref name="val"/> unchanged, when the map is null or the key is missing.</summary>
+  /// <param name="rec">The map from <see cref="Parse"/>, or null.</param>
+  /// <param name="key">The parameter's name.</param>
+  /// <param name="val">Receives the value.</param>
   public static bool TryParse(Dictionary<string, string>? rec, string key, ref string val)
   {
     if (!TryGet(rec, key, out string? s))
@@ -85,6 +100,14 @@ public static class KeyValueText
   // ---- Dictionary<string, object> (script context) ----------------------------------------
   // Values may be stored as any numeric type or as text; conversions are invariant-culture.
 
+  /// <summary>
+  /// Reads the value of <paramref name="key"/> in a script context into <paramref name="val"/>: an int, text
+  /// (invariant culture), a whole double or float in range, or another primitive number that converts without overflow.
+  /// False, with <paramref name="val"/> unchanged, when the map is null, the key is missing or null, or the value does not fit.
+  /// </summary>
+  /// <param name="rec">The context dictionary, or null.</param>
+  /// <param name="key">The key (e.g. <see cref="PropertyName.CTX_WIDTH"/>).</param>
+  /// <param name="val">Receives the value.</param>
   public static bool TryParse(Dictionary<string, object>? rec, string key, ref int val)
   {
     if (!TryGet(rec, key, out object? o))
@@ -107,6 +130,14 @@ public static class KeyValueText
     }
   }
 
+  /// <summary>
+  /// Reads the value of <paramref name="key"/> in a script context into <paramref name="val"/>: a long, text
+  /// (invariant culture), a whole double or float in range, or another primitive number that converts without overflow.
+  /// False, with <paramref name="val"/> unchanged, when the map is null, the key is missing or null, or the value does not fit.
+  /// </summary>
+  /// <param name="rec">The context dictionary, or null.</param>
+  /// <param name="key">The key.</param>
+  /// <param name="val">Receives the value.</param>
   public static bool TryParse(Dictionary<string, object>? rec, string key, ref long val)
   {
     if (!TryGet(rec, key, out object? o))
@@ -129,6 +160,14 @@ public static class KeyValueText
     }
   }
 
+  /// <summary>
+  /// Reads the value of <paramref name="key"/> in a script context into <paramref name="val"/>: text (invariant culture)
+  /// or any primitive number but bool and char. False, with <paramref name="val"/> unchanged, when the map is null, the
+  /// key is missing or null, or the value does not convert.
+  /// </summary>
+  /// <param name="rec">The context dictionary, or null.</param>
+  /// <param name="key">The key.</param>
+  /// <param name="val">Receives the value.</param>
   public static bool TryParse(Dictionary<string, object>? rec, string key, ref float val)
   {
     if (!TryGet(rec, key, out object? o))
@@ -138,6 +177,7 @@ public static class KeyValueText
       : TryConvert(o, ref val, static c => Convert.ToSingle(c, CultureInfo.InvariantCulture));
   }
 
+  /// <inheritdoc cref="TryParse(Dictionary{string, object}, string, ref float)"/>
   public static bool TryParse(Dictionary<string, object>? rec, string key, ref double val)
   {
     if (!TryGet(rec, key, out object? o))
@@ -147,6 +187,14 @@ public static class KeyValueText
       : TryConvert(o, ref val, static c => Convert.ToDouble(c, CultureInfo.InvariantCulture));
   }
 
+  /// <summary>
+  /// Reads the value of <paramref name="key"/> in a script context into <paramref name="val"/>: a bool, text
+  /// (<see cref="TryParseValue(string, ref bool)"/>), or a primitive number (true when non-zero). False, with
+  /// <paramref name="val"/> unchanged, when the map is null, the key is missing or null, or the value is none of these.
+  /// </summary>
+  /// <param name="rec">The context dictionary, or null.</param>
+  /// <param name="key">The key.</param>
+  /// <param name="val">Receives the value.</param>
   public static bool TryParse(Dictionary<string, object>? rec, string key, ref bool val)
   {
     if (!TryGet(rec, key, out object? o))
@@ -166,6 +214,13 @@ public static class KeyValueText
     }
   }
 
+  /// <summary>
+  /// The value of <paramref name="key"/> in a script context as text (a number written in invariant culture); false,
+  /// with <paramref name="val"/> unchanged, when the map is null or the key is missing or null.
+  /// </summary>
+  /// <param name="rec">The context dictionary, or null.</param>
+  /// <param name="key">The key.</param>
+  /// <param name="val">Receives the value.</param>
   public static bool TryParse(Dictionary<string, object>? rec, string key, ref string val)
   {
     if (!TryGet(rec, key, out object? o))
@@ -184,6 +239,9 @@ public static class KeyValueText
   // ---- One value ---------------------------------------------------------------------------
   // Invariant culture; false and 'val' unchanged when the text does not parse.
 
+  /// <summary>Parses <paramref name="s"/> as a number of <paramref name="val"/>'s type (invariant culture); false, with <paramref name="val"/> unchanged, when it does not parse.</summary>
+  /// <param name="s">The text.</param>
+  /// <param name="val">Receives the value.</param>
   public static bool TryParseValue(string s, ref int val)
   {
     if (!int.TryParse(s, NumberStyles.Integer, CultureInfo.InvariantCulture, out int v))
@@ -192,6 +250,7 @@ public static class KeyValueText
     return true;
   }
 
+  /// <inheritdoc cref="TryParseValue(string, ref int)"/>
   public static bool TryParseValue(string s, ref long val)
   {
     if (!long.TryParse(s, NumberStyles.Integer, CultureInfo.InvariantCulture, out long v))
@@ -200,6 +259,7 @@ public static class KeyValueText
     return true;
   }
 
+  /// <inheritdoc cref="TryParseValue(string, ref int)"/>
   public static bool TryParseValue(string s, ref float val)
   {
     if (!float.TryParse(s, NumberStyles.Float, CultureInfo.InvariantCulture, out float v))
@@ -208,6 +268,7 @@ public static class KeyValueText
     return true;
   }
 
+  /// <inheritdoc cref="TryParseValue(string, ref int)"/>
   public static bool TryParseValue(string s, ref double val)
   {
     if (!double.TryParse(s, NumberStyles.Float, CultureInfo.InvariantCulture, out double v))
@@ -216,6 +277,13 @@ public static class KeyValueText
     return true;
   }
 
+  /// <summary>
+  /// Parses <paramref name="s"/> (trimmed) as a switch: empty text, a "yes" value (<see cref="IsYes"/>) or "on" is true;
+  /// any other integer, "no", "n", "false", "f", "off" or "ne" (any case) is false. Anything else does not parse: false,
+  /// with <paramref name="val"/> unchanged.
+  /// </summary>
+  /// <param name="s">The text.</param>
+  /// <param name="val">Receives the value.</param>
   public static bool TryParseValue(string s, ref bool val)
   {
     s = s.Trim();

@@ -14,6 +14,8 @@ namespace GrCis.Scripting;
 /// </summary>
 public sealed class ScriptParameters
 {
+  /// <summary>Parses a script's <c>param</c> string (<see cref="KeyValueText.Parse"/>), e.g. <c>new ScriptParameters(param)</c>.</summary>
+  /// <param name="param">The text, e.g. <c>"n=5, shadows, speed=1.5"</c>; null means empty.</param>
   public ScriptParameters(string? param)
   {
     Text = param ?? "";
@@ -26,20 +28,27 @@ public sealed class ScriptParameters
   /// <summary>The parsed key → value map (bare keys map to "").</summary>
   public Dictionary<string, string> Values { get; }
 
+  /// <summary>True when <paramref name="key"/> is present (with or without a value).</summary>
   public bool Contains(string key) => Values.ContainsKey(key);
 
+  /// <summary>The value of <paramref name="key"/> as a number (invariant culture, e.g. <c>1.5</c>), or <paramref name="defaultValue"/> when the key is missing.</summary>
+  /// <exception cref="ScriptParameterException">The key is present but its value is not a number.</exception>
   public double GetDouble(string key, double defaultValue)
   {
     double v = defaultValue;
     return !Values.ContainsKey(key) || KeyValueText.TryParse(Values, key, ref v) ? v : throw Bad(key, "a number (e.g. 1.5)");
   }
 
+  /// <summary>The value of <paramref name="key"/> as a whole number, or <paramref name="defaultValue"/> when the key is missing.</summary>
+  /// <exception cref="ScriptParameterException">The key is present but its value is not a whole number in range.</exception>
   public int GetInt(string key, int defaultValue)
   {
     int v = defaultValue;
     return !Values.ContainsKey(key) || KeyValueText.TryParse(Values, key, ref v) ? v : throw Bad(key, "a whole number (e.g. 4)");
   }
 
+  /// <summary>The value of <paramref name="key"/> as a whole number, or <paramref name="defaultValue"/> when the key is missing.</summary>
+  /// <exception cref="ScriptParameterException">The key is present but its value is not a whole number in range.</exception>
   public long GetLong(string key, long defaultValue)
   {
     long v = defaultValue;
@@ -53,6 +62,7 @@ public sealed class ScriptParameters
     return !Values.ContainsKey(key) || KeyValueText.TryParse(Values, key, ref v) ? v : throw Bad(key, "yes/no, true/false, 1/0 or the bare key");
   }
 
+  /// <summary>The text of <paramref name="key"/> ("" for a bare key), or <paramref name="defaultValue"/> when the key is missing.</summary>
   public string GetString(string key, string defaultValue) =>
     Values.TryGetValue(key, out string? v) ? v : defaultValue;
 

@@ -16,7 +16,9 @@ namespace Rendering.Parts;
 /// </summary>
 public static class PartFile
 {
+  /// <summary>The first header line of every part file (format name and version).</summary>
   public const string Magic = "grcis-part 1";
+  /// <summary>File name extension of part files.</summary>
   public const string Extension = ".grcis-part";
   const int MaxHeaderBytes = 4096;
 

@@ -18,6 +18,12 @@ public static class PartLayout
   /// <summary>Name written in part files, so a future layout is never merged by this rule.</summary>
   public const string Name = "diagonal-tiles-32";
 
+  /// <summary>The tiles of part <paramref name="index"/> of <paramref name="count"/>, in row-major order (rows of tiles top to bottom, each left to right).</summary>
+  /// <param name="width">Image width in pixels.</param>
+  /// <param name="height">Image height in pixels.</param>
+  /// <param name="index">The part, 0 to <paramref name="count"/> − 1.</param>
+  /// <param name="count">Number of parts, at least 1.</param>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="count"/> is below 1 or <paramref name="index"/> out of range.</exception>
   public static List<Tile> Tiles(int width, int height, int index, int count)
   {
     if (count < 1)

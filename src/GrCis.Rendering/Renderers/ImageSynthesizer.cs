@@ -10,7 +10,7 @@ namespace Rendering;
 /// </summary>
 public abstract class ImageSynthesizer : IRenderer
 {
-  /// <summary>The image function whose samples this renderer takes (null: <see cref="MT.imageFunction"/>).</summary>
+  /// <summary>The image function sampled for each pixel; when null, <see cref="MT.imageFunction"/> is used.</summary>
   public IImageFunction? ImageFunction
   {
     get => imageFunction;
@@ -30,15 +30,21 @@ public abstract class ImageSynthesizer : IRenderer
   /// </summary>
   internal Accel.WhittedKernel? Kernel;
 
+  /// <inheritdoc/>
+  /// <remarks>Default 640 (<see cref="Execution.RenderDefaults.Width"/>).</remarks>
   public int Width { get; set; } = Execution.RenderDefaults.Width;
 
+  /// <inheritdoc/>
+  /// <remarks>Default 480 (<see cref="Execution.RenderDefaults.Height"/>).</remarks>
   public int Height { get; set; } = Execution.RenderDefaults.Height;
 
   /// <summary>Display gamma; values ≤ 0.001 mean linear output.</summary>
   public double Gamma { get; set; } = Execution.RenderDefaults.Gamma;
 
+  /// <summary>Adaptive-refinement level as GrCis's scripts set it (default 1); the library's synthesizers keep it but sample every pixel alike.</summary>
   public int Adaptive { get; set; } = 1;
 
+  /// <summary>Shared progress record, or null; <see cref="RenderRectangle"/> stops before the next row once its <see cref="Progress.Continue"/> is false.</summary>
   public Progress? ProgressData { get; set; }
 
   /// <summary>Samples one pixel's linear colour; sets <see cref="MT"/>'s pixel and sample rank.</summary>
@@ -61,6 +67,7 @@ public abstract class ImageSynthesizer : IRenderer
   /// <summary>Whether this class overrides <see cref="RenderPixel"/> (a renderer written against GrCis).</summary>
   readonly bool displayPixels;
 
+  /// <summary>Sets up a synthesizer of the default size (640 × 480, gamma 2.2) and notes whether the class overrides <see cref="RenderPixel"/>.</summary>
   protected ImageSynthesizer() => displayPixels = Accel.LibraryTypes.ReturnsDisplayPixels(GetType());
 
   /// <summary>Whether <paramref name="type"/> overrides this class's virtual method <paramref name="name"/> (not merely hides it).</summary>

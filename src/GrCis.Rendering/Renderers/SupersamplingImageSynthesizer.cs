@@ -38,10 +38,17 @@ public class SupersamplingImageSynthesizer : SimpleImageSynthesizer
   /// <summary>Fraction of a grid cell the sample may move, 0 to 1.</summary>
   public double Jittering { get; set; } = 1.0;
 
+  /// <summary>A supersampling synthesizer, one sample per pixel until <see cref="Supersampling"/> is set; full jitter (<see cref="Jittering"/> 1).</summary>
+  /// <param name="adaptive">Kept in <see cref="ImageSynthesizer.Adaptive"/> (default 1).</param>
   public SupersamplingImageSynthesizer(int adaptive = 1) : base(adaptive) { }
 
+  /// <summary>The n × n samples of the grid (<see cref="Supersampling"/>).</summary>
   public override int SamplesPerPixel => Supersampling;
 
+  /// <summary>The mean of the pixel's n × n jittered samples (see <see cref="SupersamplingImageSynthesizer"/>).</summary>
+  /// <param name="x">Pixel column, 0 at the left.</param>
+  /// <param name="y">Pixel row, 0 at the top.</param>
+  /// <param name="color">Receives the linear colour, one value per band.</param>
   public override void RenderPixelLinear(int x, int y, double[] color)
   {
     int bands = color.Length;

@@ -7,11 +7,14 @@ namespace Rendering;
 /// </summary>
 public sealed class CorrelatedMultiJitterSampler : Sampler
 {
+  /// <inheritdoc/>
   public override SamplerKind Kind => SamplerKind.CorrelatedMultiJitter;
 
+  /// <inheritdoc/>
   public override double Get1D(SampleDimension dimension, int instance = 0) =>
     Grid().Sample1D(Index, Pattern(dimension, instance));
 
+  /// <inheritdoc/>
   public override void Get2D(SampleDimension dimension, int instance, out double u, out double v) =>
     Grid().Sample2D(Index, Pattern(dimension, instance), out u, out v);
 

@@ -8,11 +8,14 @@ namespace Rendering;
 /// </summary>
 public sealed class IndependentSampler : Sampler
 {
+  /// <inheritdoc/>
   public override SamplerKind Kind => SamplerKind.Independent;
 
+  /// <inheritdoc/>
   public override double Get1D(SampleDimension dimension, int instance = 0) =>
     Unit(RandomStatic.Mix64(PixelKey(dimension, instance, 0x243F6A8885A308D3UL) ^ (uint)Index));
 
+  /// <inheritdoc/>
   public override void Get2D(SampleDimension dimension, int instance, out double u, out double v)
   {
     ulong h = RandomStatic.Mix64(PixelKey(dimension, instance, 0x243F6A8885A308D3UL) ^ (uint)Index);

@@ -46,6 +46,7 @@ public static class MT
     set => WorkerContext.Current.Sampler.X = value;
   }
 
+  /// <summary>Row of the current pixel (0 at the top); see <see cref="x"/>.</summary>
   public static int y
   {
     get => WorkerContext.Current.Sampler.Y;
@@ -59,6 +60,7 @@ public static class MT
     set => WorkerContext.Current.DoubleX = value;
   }
 
+  /// <summary>Vertical image position of the current sample, in pixels; see <see cref="doubleX"/>.</summary>
   public static double doubleY
   {
     get => WorkerContext.Current.DoubleY;
@@ -78,17 +80,22 @@ public static class MT
   /// <summary>GrCis's demo globals, kept so scripts and modules that read or set them still compile.</summary>
   public static int imageWidth;
 
+  /// <summary>GrCis's demo global for the image height; the library neither sets nor reads it.</summary>
   public static int imageHeight;
 
   /// <summary>True while one ray is traced for the demo's ray visualiser (GrCis's pixel probe).</summary>
   public static bool singleRayTracing;
 
+  /// <summary>GrCis's demo flag; the library neither sets nor reads it.</summary>
   public static bool sceneRendered;
 
+  /// <summary>GrCis's demo flag; the library neither sets nor reads it.</summary>
   public static bool renderingInProgress;
 
+  /// <summary>GrCis's demo flag of its point-cloud export; the library neither sets nor reads it.</summary>
   public static bool pointCloudSavingInProgress;
 
+  /// <summary>GrCis's demo flag of its point-cloud export; the library neither sets nor reads it.</summary>
   public static bool pointCloudCheckBox;
 
   /// <summary>Current frame number (animation) and the time of the current sample.</summary>
@@ -98,6 +105,7 @@ public static class MT
     set => WorkerContext.Current.Sampler.Frame = value;
   }
 
+  /// <summary>Time of the current sample in seconds: the frame's time, or within the shutter interval with motion blur (<see cref="MotionBlurImageFunction"/>).</summary>
   public static double time
   {
     get => WorkerContext.Current.Time;
@@ -111,12 +119,14 @@ public static class MT
     set => WorkerContext.Current.Scene = value;
   }
 
+  /// <summary>The image function this thread is rendering with; <see cref="ImageSynthesizer"/> uses it when its own <see cref="ImageSynthesizer.ImageFunction"/> is null.</summary>
   public static IImageFunction? imageFunction
   {
     get => WorkerContext.Current.ImageFunction;
     set => WorkerContext.Current.ImageFunction = value;
   }
 
+  /// <summary>The renderer this thread works for, or null.</summary>
   public static IRenderer? renderer
   {
     get => WorkerContext.Current.Renderer;

@@ -24,8 +24,13 @@ public class RandomJames
   /// <summary>Seeded with Marsaglia's default pair (1802, 9373).</summary>
   public RandomJames() => Reset(1802, 9373);
 
+  /// <summary>A generator seeded from one number (<see cref="Reset(long)"/>): the same seed gives the same sequence.</summary>
+  /// <param name="seed">Any number; it is split into Marsaglia's two seeds.</param>
   public RandomJames(long seed) => Reset(seed);
 
+  /// <summary>A generator seeded with Marsaglia's two seeds (<see cref="Reset(int, int)"/>).</summary>
+  /// <param name="ij">First seed, clamped to 0 … 31328.</param>
+  /// <param name="kl">Second seed, clamped to 0 … 30081.</param>
   public RandomJames(int ij, int kl) => Reset(ij, kl);
 
   /// <summary>True once the generator has been seeded.</summary>
@@ -202,12 +207,17 @@ public class RandomJames
   /// <summary>Uniform number in [min, max); min when the range is empty.</summary>
   public double UniformNumber(double min, double max) => RandomDouble(min, max);
 
+  /// <summary>Uniform number in [min, max); min when the range is empty.</summary>
   public double RandomDouble(double min, double max) => min >= max ? min : min + (max - min) * UniformNumber();
 
+  /// <summary>Uniform number in [min, max) in single precision (rounding may give max itself); min when the range is empty.</summary>
   public float RandomFloat(float min, float max) => min >= max ? min : min + (max - min) * (float)UniformNumber();
 
+  /// <summary>Fills the whole of <paramref name="vec"/> with uniform numbers in [0, 1).</summary>
   public void UniformNumbers(double[] vec) => UniformNumbers(vec, 0, vec.Length);
 
+  /// <summary>Fills <paramref name="number"/> elements of <paramref name="vec"/> from index <paramref name="from"/> on (stopping at its end) with uniform numbers in [0, 1).</summary>
+  /// <exception cref="ArgumentNullException"><paramref name="vec"/> is null.</exception>
   public void UniformNumbers(double[] vec, int from, int number)
   {
     ArgumentNullException.ThrowIfNull(vec);
@@ -272,8 +282,11 @@ public class RandomJames
   /// <summary>State of a random permutation drawn element by element (a cyclic list of what is left).</summary>
   public class Permutation
   {
+    /// <summary>The cyclic list of the elements left: <c>perm[i]</c> is the element after i.</summary>
     public int[] perm = Array.Empty<int>();
+    /// <summary>Where the walk through the cyclic list stands.</summary>
     public int permPtr;
+    /// <summary>Number of elements not drawn yet.</summary>
     public int permSize;
   }
 

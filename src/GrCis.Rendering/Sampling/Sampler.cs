@@ -22,6 +22,7 @@ public abstract class Sampler
   /// <summary>The current pixel (<c>MT.x</c>, <c>MT.y</c>).</summary>
   public int X { get; set; }
 
+  /// <summary>Row of the current pixel (<c>MT.y</c>).</summary>
   public int Y { get; set; }
 
   /// <summary>Index of the current sample within its pixel (<c>MT.rank</c>).</summary>

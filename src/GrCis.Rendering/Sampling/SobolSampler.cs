@@ -21,8 +21,10 @@ public sealed class SobolSampler : Sampler
   /// <summary>Direction numbers of Sobol dimension 1 as 32-bit fractions (bit 31 = 1/2).</summary>
   static readonly uint[] Directions1 = MakeDirections1();
 
+  /// <inheritdoc/>
   public override SamplerKind Kind => SamplerKind.Sobol;
 
+  /// <inheritdoc/>
   public override double Get1D(SampleDimension dimension, int instance = 0)
   {
     ulong key = PixelKey(dimension, instance, 0x452821E638D01377UL);
@@ -30,6 +32,7 @@ public sealed class SobolSampler : Sampler
     return ToUnit(Scramble(Sobol(0, i), (uint)(key >> 32)), key);
   }
 
+  /// <inheritdoc/>
   public override void Get2D(SampleDimension dimension, int instance, out double u, out double v)
   {
     ulong key = PixelKey(dimension, instance, 0x452821E638D01377UL);

@@ -14,8 +14,10 @@ public class CSGInnerNode : DefaultSceneNode
   /// <summary>GrCis's counters of bounding-box and triangle tests; code that tests triangles itself may add to them.</summary>
   public static long countBoundingBoxes;
 
+  /// <summary>GrCis's counter of triangle tests (statistics); the library itself does not add to it.</summary>
   public static long countTriangles;
 
+  /// <summary>GrCis's counter of faces (statistics); the library itself does not add to it, and <see cref="ResetStatistics"/> leaves it as it is.</summary>
   public static long countFaces;
 
   /// <summary>Zeroes GrCis's statistics counters (rays, intersections, bounding boxes, triangles).</summary>
@@ -27,6 +29,7 @@ public class CSGInnerNode : DefaultSceneNode
     countTriangles = 0L;
   }
 
+  /// <summary>The set operation that combines the children, fixed by the constructor.</summary>
   public SetOperation Operation { get; }
 
   /// <summary>Optional bounding volume tested before the children.</summary>
@@ -38,6 +41,8 @@ public class CSGInnerNode : DefaultSceneNode
   /// <summary>An empty right operand changes nothing (union, xor, difference): skip it.</summary>
   internal readonly bool trivial;
 
+  /// <summary>An empty inner node; add the operands with <see cref="DefaultSceneNode.InsertChild"/> in order (left to right).</summary>
+  /// <param name="op">How the children combine: <see cref="SetOperation.Union"/> for a plain group of objects.</param>
   public CSGInnerNode(SetOperation op)
   {
     Operation = op;
@@ -54,6 +59,11 @@ public class CSGInnerNode : DefaultSceneNode
     _ => left ^ right,
   };
 
+  /// <summary>
+  /// All boundaries of the combined solid along the ray <c>p0 + t * p1</c> (in this node's space), sorted by
+  /// <see cref="Intersection.T"/>; null when there are no children or the <see cref="BoundingVolume"/> is missed.
+  /// Each kept hit's <see cref="Intersection.Enter"/> is set to the inside state of the result after it.
+  /// </summary>
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     if (Children.Count == 0)

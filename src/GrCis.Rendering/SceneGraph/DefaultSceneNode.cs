@@ -13,6 +13,7 @@ public class DefaultSceneNode : ISceneNode
   /// <summary>GrCis's stand-in for an infinite coordinate (e.g. the far end of a plane's texture range).</summary>
   public static readonly double INFINITY_PLACEHOLDER = 1.0e6;
 
+  /// <summary>This node's own attributes by name (null until the first <see cref="SetAttribute"/>).</summary>
   protected Dictionary<string, object?>? attributes;
 
   /// <summary>GrCis's field name of <see cref="Children"/>, for subclasses.</summary>
@@ -24,8 +25,10 @@ public class DefaultSceneNode : ISceneNode
   Matrix4d toParent = Matrix4d.Identity;
   Matrix4d fromParent = Matrix4d.Identity;
 
+  /// <inheritdoc/>
   public ISceneNode? Parent { get; set; }
 
+  /// <summary>Local → parent transform (row vectors: <c>v * ToParent</c>; identity by default). Setting it also sets <see cref="FromParent"/> to its inverse.</summary>
   public virtual Matrix4d ToParent
   {
     get => toParent;
@@ -36,6 +39,7 @@ public class DefaultSceneNode : ISceneNode
     }
   }
 
+  /// <summary>Parent → local transform (identity by default). Setting it also sets <see cref="ToParent"/> to its inverse.</summary>
   public virtual Matrix4d FromParent
   {
     get => fromParent;
@@ -46,10 +50,14 @@ public class DefaultSceneNode : ISceneNode
     }
   }
 
+  /// <inheritdoc/>
   public ICollection<ISceneNode> Children { get; protected set; } = new LinkedList<ISceneNode>();
 
+  /// <inheritdoc/>
   public bool ObjectRoot { get; set; }
 
+  /// <summary>Attribute value of this node; when it has none (or null), its parent's, and so on up to the root. Null when no node has it.</summary>
+  /// <param name="name">Attribute name, usually a <see cref="PropertyName"/> constant.</param>
   public virtual object? GetAttribute(string name)
   {
     if (attributes != null && attributes.TryGetValue(name, out object? value) && value != null)
@@ -57,9 +65,12 @@ public class DefaultSceneNode : ISceneNode
     return Parent?.GetAttribute(name);
   }
 
+  /// <inheritdoc/>
   public virtual object? GetLocalAttribute(string name) =>
     attributes != null && attributes.TryGetValue(name, out object? value) ? value : null;
 
+  /// <inheritdoc/>
+  /// <exception cref="ArgumentNullException"><paramref name="name"/> is null.</exception>
   public virtual void SetAttribute(string name, object? value)
   {
     ArgumentNullException.ThrowIfNull(name);
@@ -113,8 +124,10 @@ public class DefaultSceneNode : ISceneNode
     child.ToParent = toParent;
   }
 
+  /// <summary>A plain node has no surface of its own: null. Solids and <see cref="CSGInnerNode"/> override it.</summary>
   public virtual LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1) => null;
 
+  /// <summary>Nothing to complete for a plain node; solids override it.</summary>
   public virtual void CompleteIntersection(Intersection inter) { }
 
   /// <summary>

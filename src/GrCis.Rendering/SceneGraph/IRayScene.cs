@@ -5,6 +5,7 @@ namespace Rendering;
 /// <summary>Everything a ray-based image function needs: geometry, camera, lights, background.</summary>
 public interface IRayScene
 {
+  /// <summary>The geometry: the root of the scene graph (usually a <see cref="CSGInnerNode"/>), or null for an empty scene.</summary>
   IIntersectable? Intersectable { get; set; }
 
   /// <summary>
@@ -30,7 +31,9 @@ public interface IRayScene
   /// <summary>Plain background colour used when <see cref="Background"/> is null.</summary>
   double[]? BackgroundColor { get; set; }
 
+  /// <summary>The camera that generates the primary rays.</summary>
   ICamera? Camera { get; set; }
 
+  /// <summary>The light sources (null or empty: no lights).</summary>
   ICollection<ILightSource>? Sources { get; set; }
 }

@@ -16,6 +16,7 @@ public class Intersection : IComparable<Intersection>
   /// <summary>Minimal distance of a secondary hit from the ray origin.</summary>
   public const double RAY_EPSILON = 1.0e-4;
 
+  /// <summary>Square of <see cref="RAY_EPSILON"/>: hits are accepted when <c>T² · |p1|² &gt; RAY_EPSILON2</c>.</summary>
   public const double RAY_EPSILON2 = RAY_EPSILON * RAY_EPSILON;
 
   /// <summary>The ray enters the solid's interior here.</summary>
@@ -27,34 +28,64 @@ public class Intersection : IComparable<Intersection>
   /// <summary>Ray parameter of the hit.</summary>
   public double T;
 
+  /// <summary>The solid that was hit; its attributes give the material, colour and textures at completion.</summary>
   public ISolid? Solid;
 
   /// <summary>Anything the solid wants to remember until completion.</summary>
   public object? SolidData;
 
+  /// <summary>The hit point in the solid's local coordinates (set by the solid when it lists the hit).</summary>
   public Vector3d CoordLocal;
+  /// <summary>Surface normal in local coordinates, not necessarily of unit length (the solid sets it, at listing or at completion).</summary>
   public Vector3d NormalLocal;
 
   // Filled by Complete().
+  /// <summary>The hit point in world coordinates (set by completion).</summary>
   public Vector3d CoordWorld;
+  /// <summary>The hit point in object coordinates (<see cref="ISceneNode.ToObject"/>; set by completion), for solid textures.</summary>
   public Vector3d CoordObject;
+  /// <summary>Surface texture coordinates (u, v), set by the solid's <see cref="IIntersectable.CompleteIntersection"/>; the range depends on the solid (see its class).</summary>
   public Vector2d TextureCoord;
+  /// <summary>
+  /// Unit surface normal in world space (set by completion): the solid's normal, turned round where
+  /// <see cref="Enter"/> and <see cref="Front"/> differ (a CSG operation changed Enter), so that it points out of the resulting solid.
+  /// </summary>
   public Vector3d Normal;
+  /// <summary>
+  /// Surface tangent along growing u. The library's solids set it in world space, of unit length; when a solid
+  /// leaves it zero, completion puts in a local-space tangent of <see cref="NormalLocal"/>.
+  /// </summary>
   public Vector3d TangentU;
+  /// <summary>Surface tangent along growing v; set like <see cref="TangentU"/>.</summary>
   public Vector3d TangentV;
+  /// <summary>The solid's local → world transform (set by completion).</summary>
   public Matrix4d LocalToWorld;
+  /// <summary>The world → local transform, the inverse of <see cref="LocalToWorld"/> (set by completion).</summary>
   public Matrix4d WorldToLocal;
+  /// <summary>The solid's local → object transform (<see cref="ISceneNode.ToObject"/>; set by completion).</summary>
   public Matrix4d LocalToObject;
+  /// <summary>
+  /// Colour of the surface at the hit, one value per band: after completion a copy of the solid's <see cref="PropertyName.COLOR"/>
+  /// attribute, else of its material's colour, else black. Textures change it.
+  /// </summary>
   public double[]? SurfaceColor;
+  /// <summary>The solid's <see cref="PropertyName.REFLECTANCE_MODEL"/> attribute, or a new <see cref="PhongModel"/> when it has none (set by completion).</summary>
   public IReflectanceModel? ReflectanceModel;
+  /// <summary>The solid's <see cref="PropertyName.MATERIAL"/> attribute, or the reflectance model's default material (set by completion).</summary>
   public IMaterial? Material;
+  /// <summary>Textures that apply to the hit, the outermost node's first (<see cref="ISceneNode.GetTextures"/>; set by completion), or null.</summary>
   public LinkedList<ITexture>? Textures;
 
+  /// <summary>True once <see cref="Complete"/> (or another completion) has filled the fields; a second completion does nothing.</summary>
   public bool completed;
+  /// <summary>Set true by the library's textures (<see cref="CheckerTexture"/>, <see cref="ImageTexture"/>) when they are applied to the hit.</summary>
   public bool textureApplied;
 
+  /// <summary>An empty hit with no solid.</summary>
   public Intersection() { }
 
+  /// <summary>A hit on solid <paramref name="s"/>; the solid then sets <see cref="T"/>, <see cref="Enter"/>, <see cref="Front"/> and the local coordinates.</summary>
+  /// <param name="s">The solid that was hit.</param>
   public Intersection(ISolid? s) => Solid = s;
 
   /// <summary>Copy of the cheap (pre-completion) part; used when CSG changes Enter.</summary>
@@ -69,10 +100,11 @@ public class Intersection : IComparable<Intersection>
     NormalLocal = i.NormalLocal;
   }
 
+  /// <summary>Orders hits by the ray parameter <see cref="T"/>; any hit comes after null.</summary>
   public int CompareTo(Intersection? other) => other == null ? 1 : T.CompareTo(other.T);
 
   /// <summary>
-  /// Computes world coordinates, normal (facing the side the ray came from), material,
+  /// Computes world coordinates, normal (see <see cref="Normal"/>), material,
   /// surface colour and textures, resolving attributes up the scene hierarchy.
   /// </summary>
   public void Complete()

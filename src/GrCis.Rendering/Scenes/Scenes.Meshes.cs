@@ -38,15 +38,31 @@ public partial class Scenes
     set => staticRepository = value;
   }
 
+  /// <summary>The teapot scene: <c>teapot.obj</c> (or the first of <paramref name="names"/>) in orange, framed automatically.</summary>
+  /// <param name="sc">The scene to fill.</param>
+  /// <param name="names">OBJ file names; empty (or an empty first name) for the default file.</param>
+  /// <returns>The number of triangles read (0 when no file was found and a sphere stands in).</returns>
   public static long TeapotObj(IRayScene sc, string[] names) =>
     SceneObj(sc, new Vector3d(0.1, -0.3, 0.9), 50.0, 0.9, "teapot.obj", names, new[] { 1.0, 0.6, 0.0 });
 
+  /// <summary>The pitcher scene: <c>pitcher.obj</c> (or the first of <paramref name="names"/>) in green, framed automatically.</summary>
+  /// <param name="sc">The scene to fill.</param>
+  /// <param name="names">OBJ file names; empty (or an empty first name) for the default file.</param>
+  /// <returns>The number of triangles read (0 when no file was found and a sphere stands in).</returns>
   public static long PitcherObj(IRayScene sc, string[] names) =>
     SceneObj(sc, new Vector3d(0.6, -0.3, 0.5), 60.0, 1.1, "pitcher.obj", names, new[] { 0.3, 0.6, 0.0 });
 
+  /// <summary>The Buddha scene: <c>buddha.obj</c> (or the first of <paramref name="names"/>) in orange, framed automatically.</summary>
+  /// <param name="sc">The scene to fill.</param>
+  /// <param name="names">OBJ file names; empty (or an empty first name) for the default file.</param>
+  /// <returns>The number of triangles read (0 when no file was found and a sphere stands in).</returns>
   public static long BuddhaObj(IRayScene sc, string[] names) =>
     SceneObj(sc, new Vector3d(0.4, -0.3, -0.9), 70.0, 1.1, "buddha.obj", names, new[] { 1.0, 0.4, 0.0 });
 
+  /// <summary>The toy-plane scene: <c>toyplane.obj</c> (or the first of <paramref name="names"/>) in green, framed automatically.</summary>
+  /// <param name="sc">The scene to fill.</param>
+  /// <param name="names">OBJ file names; empty (or an empty first name) for the default file.</param>
+  /// <returns>The number of triangles read (0 when no file was found and a sphere stands in).</returns>
   public static long PlaneObj(IRayScene sc, string[] names) =>
     SceneObj(sc, new Vector3d(-0.7, -0.25, 0.7), 70.0, 0.9, "toyplane.obj", names, new[] { 0.2, 0.8, 0.0 });
 

@@ -7,11 +7,13 @@ namespace Rendering;
 /// <summary>The fast path's side of a <see cref="BezierSurface"/> (<see cref="IRecordSolid"/>): the first record from the same search as the list.</summary>
 public partial class BezierSurface
 {
+  /// <inheritdoc/>
   public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(BezierSurface));
 
   /// <summary>An open surface: a list may start "inside" (a back face first), so it is tested for every ray.</summary>
   public virtual bool IsClosed => false;
 
+  /// <inheritdoc/>
   public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
@@ -37,6 +39,7 @@ public partial class BezierSurface
     return false;
   }
 
+  /// <inheritdoc/>
   public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);

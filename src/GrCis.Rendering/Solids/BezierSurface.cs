@@ -59,6 +59,12 @@ public partial class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
     public Vector3d FlatNormal;
   }
 
+  /// <summary>A surface of K × L bicubic Bézier patches (see <see cref="BezierSurface"/>); subdivides them into pieces at once.</summary>
+  /// <param name="K">Patches along v: the net has 3K + 1 rows.</param>
+  /// <param name="L">Patches along u: the net has 3L + 1 columns.</param>
+  /// <param name="controlPoints">The control net, row by row, three numbers (x, y, z) per point: at least 3 (3K + 1)(3L + 1) numbers.</param>
+  /// <exception cref="ArgumentOutOfRangeException"><paramref name="K"/> or <paramref name="L"/> is not positive.</exception>
+  /// <exception cref="ArgumentException"><paramref name="controlPoints"/> is too short.</exception>
   public BezierSurface(int K, int L, double[] controlPoints)
   {
     if (K <= 0 || L <= 0)
@@ -194,6 +200,10 @@ public partial class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
     d[3] = 3.0 * t * t;
   }
 
+  /// <summary>
+  /// All points where the line <c>p0 + t * p1</c> (local coordinates) crosses the surface, sorted by
+  /// <see cref="Intersection.T"/>; null on a miss. Enter = Front = the ray runs against the normal ∂S/∂u × ∂S/∂v.
+  /// </summary>
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     Span<Found> found = CollectAll(p0, p1, stackalloc Found[StackHits]);
@@ -367,6 +377,10 @@ public partial class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
     return true;
   }
 
+  /// <summary>
+  /// Sets the texture coordinates (l + u, k + v), the normal (exact with <see cref="PreciseNormals"/>, else
+  /// the flat normal of the piece that was hit) and the tangents ∂S/∂u, ∂S/∂v.
+  /// </summary>
   public override void CompleteIntersection(Intersection inter)
   {
     if (inter.SolidData is not Hit hit)
@@ -383,6 +397,9 @@ public partial class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
     SolidSupport.SetWorldFrame(inter, normal, su, sv);
   }
 
+  /// <summary>The box of all control points (the surface lies inside it).</summary>
+  /// <param name="corner1">The minimal corner.</param>
+  /// <param name="corner2">The maximal corner.</param>
   public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
   {
     corner1 = minV;

@@ -8,8 +8,11 @@ public class BoundingSphere : IBoundingVolume
 {
   readonly double rr;
 
+  /// <summary>A bounding sphere about the local origin.</summary>
+  /// <param name="r">Radius in local units (default 1).</param>
   public BoundingSphere(double r = 1.0) => rr = r * r;
 
+  /// <inheritdoc/>
   public double Intersect(Vector3d p0, Vector3d p1)
   {
     double od = Vector3d.Dot(p0, p1);

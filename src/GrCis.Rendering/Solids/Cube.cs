@@ -17,6 +17,10 @@ public class Cube : DefaultSceneNode, ISolid, IRecordSolid
     Vector3d.UnitX, -Vector3d.UnitX, Vector3d.UnitY, -Vector3d.UnitY, Vector3d.UnitZ, -Vector3d.UnitZ,
   };
 
+  /// <summary>
+  /// The entry and the exit of the line <c>p0 + t * p1</c> (local coordinates) through the cube [0, 1]³, each
+  /// with the outward normal of its face, sorted by <see cref="Intersection.T"/>; null on a miss.
+  /// </summary>
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     if (!Slabs(p0, p1, out double tMin, out int faceMin, out double tMax, out int faceMax))
@@ -72,10 +76,13 @@ public class Cube : DefaultSceneNode, ISolid, IRecordSolid
 
   // ---------------------------------------------------------------- fast path (same slabs, same records)
 
+  /// <inheritdoc/>
   public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(Cube));
 
+  /// <inheritdoc/>
   public virtual bool IsClosed => true;
 
+  /// <inheritdoc/>
   public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
@@ -91,8 +98,10 @@ public class Cube : DefaultSceneNode, ISolid, IRecordSolid
     return true;
   }
 
+  /// <inheritdoc/>
   public virtual int MaxRecords => 2;
 
+  /// <inheritdoc/>
   public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Slabs(p0, p1, out double tMin, out int faceMin, out double tMax, out int faceMax))
@@ -102,6 +111,7 @@ public class Cube : DefaultSceneNode, ISolid, IRecordSolid
     return 2;
   }
 
+  /// <inheritdoc/>
   public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
@@ -116,6 +126,7 @@ public class Cube : DefaultSceneNode, ISolid, IRecordSolid
     return n;
   }
 
+  /// <summary>Sets the texture coordinates (the two local coordinates of the face, see <see cref="Cube"/>), the face normal and the face's two axes as tangents.</summary>
   public override void CompleteIntersection(Intersection inter)
   {
     Vector3d n = inter.NormalLocal;
@@ -140,6 +151,9 @@ public class Cube : DefaultSceneNode, ISolid, IRecordSolid
     inter.Normal = Vector3d.TransformNormalInverse(n, worldToLocal);
   }
 
+  /// <summary>The cube itself: [0, 1]³.</summary>
+  /// <param name="corner1">The minimal corner (0, 0, 0).</param>
+  /// <param name="corner2">The maximal corner (1, 1, 1).</param>
   public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
   {
     corner1 = Vector3d.Zero;

@@ -96,6 +96,10 @@ public class Cylinder : DefaultSceneNode, ISolid, IRecordSolid
     return true;
   }
 
+  /// <summary>
+  /// The entry and the exit of the line <c>p0 + t * p1</c> (local coordinates), each on the side or on a cap,
+  /// sorted by <see cref="Intersection.T"/>; null on a miss.
+  /// </summary>
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     if (!Span(p0, p1, out double tIn, out int capIn, out double tOut, out int capOut))
@@ -133,11 +137,13 @@ public class Cylinder : DefaultSceneNode, ISolid, IRecordSolid
 
   // ---------------------------------------------------------------- fast path (same Span, same records)
 
+  /// <inheritdoc/>
   public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(Cylinder));
 
   /// <summary>Capped cylinders are closed; an open-ended tube's records may lie beyond any box.</summary>
   public virtual bool IsClosed => double.IsFinite(ZMin) && double.IsFinite(ZMax);
 
+  /// <inheritdoc/>
   public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
@@ -152,8 +158,10 @@ public class Cylinder : DefaultSceneNode, ISolid, IRecordSolid
     return true;
   }
 
+  /// <inheritdoc/>
   public virtual int MaxRecords => 2;
 
+  /// <inheritdoc/>
   public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Span(p0, p1, out double tIn, out int capIn, out double tOut, out int capOut))
@@ -163,12 +171,17 @@ public class Cylinder : DefaultSceneNode, ISolid, IRecordSolid
     return 2;
   }
 
+  /// <inheritdoc/>
   public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
     target.NormalLocal = RecordNormal(hit.CoordLocal, hit.Data);
   }
 
+  /// <summary>
+  /// Sets the texture coordinates (see <see cref="Cylinder"/>), the normal (radial on the side, ±z on a cap) and
+  /// the tangents (around the axis and along z on the side, x and y on a cap).
+  /// </summary>
   public override void CompleteIntersection(Intersection inter)
   {
     Vector3d p = inter.CoordLocal;
@@ -184,6 +197,9 @@ public class Cylinder : DefaultSceneNode, ISolid, IRecordSolid
     }
   }
 
+  /// <summary>The box [−1, 1] × [−1, 1] × [<see cref="ZMin"/>, <see cref="ZMax"/>]; a missing cap gives ±<see cref="DefaultSceneNode.INFINITY_PLACEHOLDER"/>.</summary>
+  /// <param name="corner1">The minimal corner.</param>
+  /// <param name="corner2">The maximal corner.</param>
   public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
   {
     corner1 = new Vector3d(-1.0, -1.0, SolidSupport.Finite(ZMin));

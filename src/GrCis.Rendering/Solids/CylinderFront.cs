@@ -24,6 +24,10 @@ public class CylinderFront : Cylinder
   public CylinderFront(double zMin, double zMax, bool shell = true)
     : base(zMin, zMax) => this.shell = shell;
 
+  /// <summary>
+  /// The front (entering) hit of the line on the cylinder's side, and with <see cref="shell"/> the exit
+  /// <see cref="Intersection.SHELL_THICKNESS"/> behind it; null on a miss or when the ray would enter through a cap.
+  /// </summary>
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     if (!Span(p0, p1, out double t, out int capIn, out _, out _) || capIn != 0)
@@ -43,11 +47,13 @@ public class CylinderFront : Cylinder
 
   // ---------------------------------------------------------------- fast path (same Span, same records)
 
+  /// <inheritdoc/>
   public override bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(CylinderFront));
 
   /// <summary>Without the shell the list ends inside; the shell's exit may lie just outside the box: open.</summary>
   public override bool IsClosed => false;
 
+  /// <inheritdoc/>
   public override bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
@@ -57,8 +63,10 @@ public class CylinderFront : Cylinder
     return SolidSupport.FrontOrShell(t, p0, p1, len2, shell, out hit, out insideBefore);
   }
 
+  /// <inheritdoc/>
   public override int MaxRecords => 2;
 
+  /// <inheritdoc/>
   public override int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Span(p0, p1, out double t, out int capIn, out _, out _) || capIn != 0)
@@ -66,6 +74,7 @@ public class CylinderFront : Cylinder
     return SolidSupport.FrontAndShell(t, p0, p1, shell, dst);
   }
 
+  /// <inheritdoc/>
   public override void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
@@ -73,6 +82,10 @@ public class CylinderFront : Cylinder
     target.SolidData = hit.Aux;
   }
 
+  /// <summary>
+  /// Sets the radial normal and the tangents, and texture coordinates u = v = the sine of the angle between the
+  /// ray and the radial direction, both seen along the axis (0 where the ray meets the side head-on, 1 at the silhouette).
+  /// </summary>
   public override void CompleteIntersection(Intersection inter)
   {
     Vector3d p = inter.CoordLocal;

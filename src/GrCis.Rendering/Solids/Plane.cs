@@ -34,8 +34,10 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
   /// <summary>v = y (otherwise v = (y − YMin)·ScaleV).</summary>
   public bool CanonicV { get; set; }
 
+  /// <summary>Scale of u when <see cref="CanonicU"/> is false: u = (x − XMin)·ScaleU; 1/(xMax − xMin) for a rectangle bounded in x, else 1.</summary>
   public double ScaleU { get; set; }
 
+  /// <summary>Scale of v when <see cref="CanonicV"/> is false: v = (y − YMin)·ScaleV; 1/(yMax − yMin) for a rectangle bounded in y, else 1.</summary>
   public double ScaleV { get; set; }
 
   /// <summary>The infinite plane.</summary>
@@ -76,6 +78,11 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
     ScaleU = ScaleV = 1.0;
   }
 
+  /// <summary>
+  /// The one point where the line <c>p0 + t * p1</c> (local coordinates) crosses the plane z = 0 inside the
+  /// bounds; null when it misses or runs parallel. <see cref="Intersection.Enter"/> and <see cref="Intersection.Front"/>
+  /// are true for a ray coming from +z.
+  /// </summary>
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     if (!Hit(p0, p1, out double t, out double x, out double y))
@@ -109,11 +116,13 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
 
   // ---------------------------------------------------------------- fast path (same Hit, same record)
 
+  /// <inheritdoc/>
   public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(Plane));
 
   /// <summary>One record (an exit from below): the list may start inside, so the plane is tested for every ray.</summary>
   public virtual bool IsClosed => false;
 
+  /// <inheritdoc/>
   public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore) =>
     First(p0, p1, len2, out hit, out insideBefore);
 
@@ -137,8 +146,10 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
     return false;
   }
 
+  /// <inheritdoc/>
   public virtual int MaxRecords => 1;
 
+  /// <inheritdoc/>
   public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Hit(p0, p1, out double t, out double x, out double y))
@@ -148,6 +159,7 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
     return 1;
   }
 
+  /// <inheritdoc/>
   public virtual void InitIntersection(in SolidRecord hit, Intersection target) => Init(hit, target);
 
   /// <summary><see cref="InitIntersection"/> of this class itself (called directly, inlined, for exactly this type).</summary>
@@ -167,6 +179,7 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
     return x <= XMax && y <= YMax;
   }
 
+  /// <summary>Sets the texture coordinates (see <see cref="Plane"/>), the normal +z and the tangents x and y.</summary>
   public override void CompleteIntersection(Intersection inter)
   {
     inter.TextureCoord = TextureCoordAt(inter.CoordLocal);
@@ -187,6 +200,12 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
     inter.Normal = Vector3d.TransformNormalInverse(Vector3d.UnitZ, worldToLocal);
   }
 
+  /// <summary>
+  /// The flat box of the rectangle, [XMin, XMax] × [YMin, YMax] × [0, 0] (infinite bounds as
+  /// ±<see cref="DefaultSceneNode.INFINITY_PLACEHOLDER"/>), or of the triangle.
+  /// </summary>
+  /// <param name="corner1">The minimal corner.</param>
+  /// <param name="corner2">The maximal corner.</param>
   public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
   {
     if (Triangle)

@@ -11,6 +11,10 @@ namespace Rendering;
 /// </summary>
 public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
 {
+  /// <summary>
+  /// Both points where the line <c>p0 + t * p1</c> (local coordinates) crosses the unit sphere: the entry and
+  /// the exit, sorted by <see cref="Intersection.T"/> (negative T included); null on a miss or a mere touch.
+  /// </summary>
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     if (!Roots(p0, p1, out double t0, out double t1))
@@ -41,10 +45,13 @@ public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
 
   // ---------------------------------------------------------------- fast path (same Roots, same records)
 
+  /// <inheritdoc/>
   public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(Sphere));
 
+  /// <inheritdoc/>
   public virtual bool IsClosed => true;
 
+  /// <inheritdoc/>
   public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore) =>
     First(p0, p1, len2, out hit, out insideBefore);
 
@@ -63,8 +70,10 @@ public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
     return true;
   }
 
+  /// <inheritdoc/>
   public virtual int MaxRecords => 2;
 
+  /// <inheritdoc/>
   public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Roots(p0, p1, out double t0, out double t1))
@@ -74,6 +83,7 @@ public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
     return 2;
   }
 
+  /// <inheritdoc/>
   public virtual void InitIntersection(in SolidRecord hit, Intersection target) => Init(hit, target);
 
   /// <summary><see cref="InitIntersection"/> of this class itself (called directly, inlined, for exactly this type).</summary>
@@ -84,6 +94,10 @@ public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
     target.NormalLocal = hit.CoordLocal;
   }
 
+  /// <summary>
+  /// Sets the texture coordinates (see <see cref="Sphere"/>), the normal (the hit point itself, pointing out)
+  /// and the tangents along growing u and v; at a pole any pair of tangents.
+  /// </summary>
   public override void CompleteIntersection(Intersection inter)
   {
     Vector3d p = inter.CoordLocal;
@@ -114,6 +128,9 @@ public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
     inter.Normal = Vector3d.TransformNormalInverse(p, worldToLocal);
   }
 
+  /// <summary>The box [−1, 1]³ around the unit sphere.</summary>
+  /// <param name="corner1">The minimal corner (−1, −1, −1).</param>
+  /// <param name="corner2">The maximal corner (1, 1, 1).</param>
   public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
   {
     corner1 = new Vector3d(-1.0, -1.0, -1.0);

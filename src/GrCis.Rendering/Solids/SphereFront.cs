@@ -16,8 +16,14 @@ public class SphereFront : Sphere
   /// <summary>Report the thin shell's exit too.</summary>
   public bool shell;
 
+  /// <summary>The unit sphere seen from the front.</summary>
+  /// <param name="shell">True (default): a second, exiting hit follows the front one, so the sphere acts as a thin closed shell in CSG.</param>
   public SphereFront(bool shell = true) => this.shell = shell;
 
+  /// <summary>
+  /// The front (entering) hit of the line with the unit sphere, and with <see cref="shell"/> the exit
+  /// <see cref="Intersection.SHELL_THICKNESS"/> behind it; null on a miss. The far side of the sphere is never reported.
+  /// </summary>
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     if (!Roots(p0, p1, out double t0, out _))
@@ -37,11 +43,13 @@ public class SphereFront : Sphere
 
   // ---------------------------------------------------------------- fast path (same Roots, same records)
 
+  /// <inheritdoc/>
   public override bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(SphereFront));
 
   /// <summary>Without the shell the list ends inside; the shell's exit may lie just outside the box: open.</summary>
   public override bool IsClosed => false;
 
+  /// <inheritdoc/>
   public override bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
@@ -51,8 +59,10 @@ public class SphereFront : Sphere
     return SolidSupport.FrontOrShell(t0, p0, p1, len2, shell, out hit, out insideBefore);
   }
 
+  /// <inheritdoc/>
   public override int MaxRecords => 2;
 
+  /// <inheritdoc/>
   public override int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!Roots(p0, p1, out double t0, out _))
@@ -60,6 +70,7 @@ public class SphereFront : Sphere
     return SolidSupport.FrontAndShell(t0, p0, p1, shell, dst);
   }
 
+  /// <inheritdoc/>
   public override void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
@@ -67,6 +78,10 @@ public class SphereFront : Sphere
     target.SolidData = hit.Aux;
   }
 
+  /// <summary>
+  /// Completes as <see cref="Sphere"/> does, then replaces the texture coordinates by u = v = the sine of the
+  /// angle between the ray and the hit point's direction from the centre (0 in the middle, 1 at the rim).
+  /// </summary>
   public override void CompleteIntersection(Intersection inter)
   {
     base.CompleteIntersection(inter);

@@ -34,6 +34,9 @@ public class Torus : DefaultSceneNode, ISolid, IRecordSolid
   /// <summary>A sphere around the torus (R + r), for subclasses that test it first as GrCis's torus did.</summary>
   protected BoundingSphere boundingSphere;
 
+  /// <summary>A torus about the local z axis, e.g. <c>new Torus(1.0, 0.5)</c>; local units.</summary>
+  /// <param name="bigRadius">Distance of the tube's centre line from the axis (R).</param>
+  /// <param name="smallRadius">Radius of the tube (r).</param>
   public Torus(double bigRadius, double smallRadius)
   {
     this.bigRadius = bigRadius;
@@ -41,6 +44,11 @@ public class Torus : DefaultSceneNode, ISolid, IRecordSolid
     boundingSphere = new BoundingSphere(bigRadius + smallRadius);
   }
 
+  /// <summary>
+  /// All points (up to four) where the line <c>p0 + t * p1</c> (local coordinates) crosses the torus, sorted by
+  /// <see cref="Intersection.T"/>, negative T included; null on a miss, and (unless <see cref="SelfHits"/>)
+  /// when the ray starts on the torus's surface.
+  /// </summary>
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     if (!SelfHits && StartsOnSurface(p0))
@@ -67,11 +75,13 @@ public class Torus : DefaultSceneNode, ISolid, IRecordSolid
 
   // ---------------------------------------------------------------- fast path (same Solve, same records)
 
+  /// <inheritdoc/>
   public virtual bool RecordsMatchIntersect => Accel.SubclassCheck.KeepsGeometry(this, typeof(Torus));
 
   /// <summary>Roots lie inside the (enlarged) bounding sphere and alternate from an entry: closed.</summary>
   public virtual bool IsClosed => true;
 
+  /// <inheritdoc/>
   public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
@@ -99,8 +109,10 @@ public class Torus : DefaultSceneNode, ISolid, IRecordSolid
     return false;
   }
 
+  /// <inheritdoc/>
   public virtual int MaxRecords => 4;
 
+  /// <inheritdoc/>
   public virtual int IntersectAll(in Vector3d p0, in Vector3d p1, Span<SolidRecord> dst)
   {
     if (!SelfHits && StartsOnSurface(p0))
@@ -113,6 +125,7 @@ public class Torus : DefaultSceneNode, ISolid, IRecordSolid
     return n;
   }
 
+  /// <inheritdoc/>
   public virtual void InitIntersection(in SolidRecord hit, Intersection target)
   {
     target.SetRecord(hit);
@@ -168,6 +181,7 @@ public class Torus : DefaultSceneNode, ISolid, IRecordSolid
     return QuarticRoots.Solve(c3, c2, c1, c0, -h, h, u, enter);
   }
 
+  /// <summary>Sets the texture coordinates (see <see cref="Torus"/>), the normal (the gradient of the torus equation) and the tangents (around the axis, around the tube).</summary>
   public override void CompleteIntersection(Intersection inter)
   {
     Vector3d p = inter.CoordLocal;
@@ -202,6 +216,9 @@ public class Torus : DefaultSceneNode, ISolid, IRecordSolid
     SolidSupport.SetWorldFrame(inter, normal, tu, Vector3d.Cross(tu, normal));
   }
 
+  /// <summary>The box [−(R + r), R + r]² × [−r, r] (absolute values of the radii).</summary>
+  /// <param name="corner1">The minimal corner.</param>
+  /// <param name="corner2">The maximal corner.</param>
   public virtual void GetBoundingBox(out Vector3d corner1, out Vector3d corner2)
   {
     double R = Math.Abs(bigRadius), r = Math.Abs(smallRadius);

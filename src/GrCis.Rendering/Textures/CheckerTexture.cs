@@ -10,8 +10,14 @@ public class CheckerTexture : ITexture
   /// <summary>Cells per texture-coordinate unit in u and v.</summary>
   public double Fu, Fv;
 
+  /// <summary>Colour of the odd cells, one value per band; it replaces the surface colour there.</summary>
   public double[] Color2;
 
+  /// <summary>A checkerboard, e.g. <c>new CheckerTexture(10.0, 10.0, new double[] { 1.0, 1.0, 1.0 })</c>.</summary>
+  /// <param name="fu">Cells per texture-coordinate unit along u (<see cref="Fu"/>).</param>
+  /// <param name="fv">Cells per texture-coordinate unit along v (<see cref="Fv"/>).</param>
+  /// <param name="color2">Colour of the odd cells (<see cref="Color2"/>; copied).</param>
+  /// <exception cref="ArgumentNullException"><paramref name="color2"/> is null.</exception>
   public CheckerTexture(double fu, double fv, double[] color2)
   {
     ArgumentNullException.ThrowIfNull(color2);
@@ -20,6 +26,11 @@ public class CheckerTexture : ITexture
     Color2 = (double[])color2.Clone();
   }
 
+  /// <summary>
+  /// Cell (⌊u·Fu⌋, ⌊v·Fv⌋) of the hit's <see cref="Intersection.TextureCoord"/>: when the sum of the two indices is odd,
+  /// the surface colour becomes a copy of <see cref="Color2"/>. Returns a hash of the cell.
+  /// </summary>
+  /// <param name="inter">A completed hit.</param>
   public virtual long Apply(Intersection inter)
   {
     long ui = (long)Math.Floor(inter.TextureCoord.X * Fu);

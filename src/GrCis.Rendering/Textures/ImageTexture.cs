@@ -106,6 +106,12 @@ public class ImageTexture : ITexture
     return new FileNotFoundException($"Image file not found: '{fileName}'{where}", fileName);
   }
 
+  /// <summary>
+  /// Samples the image at the hit's <see cref="Intersection.TextureCoord"/> (<see cref="Sample"/>) and puts the result in
+  /// the surface colour (multiplied by the old one with <see cref="Multiply"/>), keeping its number of bands. Returns
+  /// a hash of the nearest texel.
+  /// </summary>
+  /// <param name="inter">A completed hit.</param>
   public virtual long Apply(Intersection inter)
   {
     double[]? surface = inter.SurfaceColor;

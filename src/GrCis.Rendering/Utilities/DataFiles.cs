@@ -33,6 +33,13 @@ public static class DataFiles
   }
 
   /// <summary>
+  /// <see cref="Resolve"/> for a path that may be null or empty (returned as it is, so the caller's own error
+  /// stays). The script host routes the paths scripts and modules pass to <c>File.ReadAllText</c>,
+  /// <c>new StreamReader(path)</c> and the like through it.
+  /// </summary>
+  public static string? ResolveOrKeep(string? path) => string.IsNullOrEmpty(path) ? path : Resolve(path);
+
+  /// <summary>
   /// The existing file <paramref name="path"/> names, tried in this order: as written; with <c>\</c> read as a
   /// separator; when relative, beside the running script. Then, where this file system tells letter case
   /// apart, the same with each folder and file name matched in any case (when exactly one entry matches).
@@ -44,13 +51,6 @@ public static class DataFiles
   /// nearest first, used only when exactly one of them has the file). When nothing exists, <paramref name="path"/> itself, so the caller's "not found" names
   /// what the script wrote.
   /// </summary>
-  /// <summary>
-  /// <see cref="Resolve"/> for a path that may be null or empty (returned as it is, so the caller's own error
-  /// stays). The script host routes the paths scripts and modules pass to <c>File.ReadAllText</c>,
-  /// <c>new StreamReader(path)</c> and the like through it.
-  /// </summary>
-  public static string? ResolveOrKeep(string? path) => string.IsNullOrEmpty(path) ? path : Resolve(path);
-
   public static string Resolve(string path)
   {
     ArgumentException.ThrowIfNullOrEmpty(path);
@@ -219,6 +219,7 @@ public static class DataFiles
       this.previous = previous;
     }
 
+    /// <summary>Gives the thread its previous script folder back.</summary>
     public void Dispose()
     {
       if (context != null)
