@@ -14,10 +14,15 @@ export async function loadScenes() {
   state.scenes = list.scenes;
   const select = $("scene");
   select.innerHTML = "";
+  // Scripts and built-in scenes in groups of their own (a script shows its file name: "FiveBalls.cs", not "Five balls").
+  const groups = {};
   for (const s of state.scenes) {
+    const group = groups[s.kind] ??= select.appendChild(Object.assign(document.createElement("optgroup"),
+      { label: s.kind === "Script" ? "Scripts" : "Built-in scenes" }));
     const o = document.createElement("option");
-    o.value = o.textContent = s.name;
-    select.appendChild(o);
+    o.value = s.name;
+    o.textContent = s.label ?? s.name;
+    group.appendChild(o);
   }
   if (list.selected) select.value = list.selected;
   sceneChanged();
