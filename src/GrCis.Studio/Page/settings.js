@@ -131,6 +131,12 @@ async function render() {
 export function initSettings() {
   $("scene").addEventListener("change", sceneChanged);
   $("param").addEventListener("change", loadScriptValues);
+  // Enter in Parameters renders, as the Render button does (the new text reaches the script's values too, through "change").
+  $("param").addEventListener("keydown", e => {
+    if (e.key !== "Enter" || e.isComposing) return;
+    e.preventDefault();
+    render();
+  });
   for (const id of [...Object.keys(givenFlag), ...rangeFields]) {
     $(id).addEventListener("input", fieldChanged);
     $(id).addEventListener("change", fieldChanged);
