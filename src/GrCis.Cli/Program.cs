@@ -38,6 +38,8 @@ public static class Program
     {
       RootCommand root = BuildRoot(env);
       ParseResult parse = root.Parse(args);
+      if (TypoSuggestions.Find(parse) is { } typo)
+        return Fail(env, ExitCodes.Usage, typo);
       if (parse.Errors.Count > 0)
         return Fail(env, ExitCodes.Usage, parse.Errors[0].Message + " (see 'grcis --help')");
 

@@ -36,7 +36,7 @@ public sealed partial class DemoController : IDisposable
   /// <summary>
   /// The demo as GrCis starts it from its command line (<c>-dir</c>, <c>-scene</c>, <c>-nodefault</c>):
   /// the built-in scenes unless <c>-nodefault</c>, then the scripts; the first <c>-scene</c> file (else
-  /// GrCis's default scene) selected. Unknown options and missing files or folders go to
+  /// the first script of the <c>-dir</c> folders, else GrCis's default scene) selected. Unknown options and missing files or folders go to
   /// <paramref name="problems"/> as messages for the user; everything else is still loaded.
   /// </summary>
   /// <param name="scripts">Compiles and runs the scene scripts (<see cref="SceneCatalog.Scripts"/>); null = built-in scenes only.</param>

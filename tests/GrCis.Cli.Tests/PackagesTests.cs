@@ -13,7 +13,8 @@ namespace GrCis.Cli.Tests;
 /// <summary>
 /// The packages as a user meets them (README, "Install as a .NET tool"): packed into a folder feed, the grcis
 /// tool and the scene template installed into a fresh home, <c>dotnet new grcis-scene</c>, <c>dotnet build</c>
-/// (which also catches an error in the script) and the installed <c>grcis render Scene.cs</c>.
+/// (which also catches an error in the script), <c>dotnet run</c> (a quick render of the scene) and the installed
+/// <c>grcis render Scene.cs</c>.
 /// </summary>
 public class PackagesTests
 {
@@ -23,7 +24,7 @@ public class PackagesTests
   const string Configuration = "Release";
 #endif
 
-  static string Dotnet => Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") is { Length: > 0 } host ? host : "dotnet";
+  internal static string Dotnet => Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") is { Length: > 0 } host ? host : "dotnet";
 
   [Fact]
   public void Packed_tool_and_template_make_a_scene_folder_that_builds_and_renders()
@@ -68,6 +69,19 @@ public class PackagesTests
     Assert.True(expected.ExitCode == 0, expected.Error);
     Assert.Equal(File.ReadAllBytes(tmp.File("expected.png")), File.ReadAllBytes(Path.Combine(folder, "scene.png")));
 
+    // dotnet run (students try it) runs the script as a program and renders its scene: the PNG grcis render writes
+    // of the template's script at grcis's default size, exit 0.
+    (int runCode, string runOutput) = Exec(folder, env, Dotnet, "run", "--no-build");
+    Assert.True(runCode == 0, "dotnet run: " + runOutput);
+    Assert.Contains("grcis render Scene.cs", runOutput, StringComparison.Ordinal);
+    CliRun expected640 = CliRun.Of(tmp.Path, "render", Path.Combine(RepoPaths.Root, "templates", "grcis-scene", "Scene.cs"), "-o", "expected640.png", "-q");
+    Assert.True(expected640.ExitCode == 0, expected640.Error);
+    Assert.Equal(File.ReadAllBytes(tmp.File("expected640.png")), File.ReadAllBytes(Path.Combine(folder, "scene.png")));
+    // With a parameter from its command line, as grcis render --param gives it.
+    (runCode, runOutput) = Exec(folder, env, Dotnet, "run", "--no-build", "--", "radius=0.5");
+    Assert.True(runCode == 0, "dotnet run -- radius=0.5: " + runOutput);
+    Assert.NotEqual(File.ReadAllBytes(tmp.File("expected640.png")), File.ReadAllBytes(Path.Combine(folder, "scene.png")));
+
     // dotnet build reports a type error in the script at its line.
     int lines = File.ReadAllLines(Path.Combine(folder, "Scene.cs")).Length;
     File.AppendAllText(Path.Combine(folder, "Scene.cs"), "scene.BackgroundColor = \"dark\";\n");
@@ -77,22 +91,27 @@ public class PackagesTests
     Assert.Contains("CS0029", buildOutput, StringComparison.Ordinal);
   }
 
-  static void WriteNuGetConfig(string folder, string feed)
+  internal static void WriteNuGetConfig(string folder, string feed) =>
+    File.WriteAllText(Path.Combine(folder, "nuget.config"), NuGetConfig(feed));
+
+  /// <summary>A NuGet.Config with <paramref name="feed"/> (if any) first, then the enabled sources this machine restores from.</summary>
+  internal static string NuGetConfig(string? feed)
   {
-    (int code, string sources) = Exec(folder, null, Dotnet, "nuget", "list", "source", "--format", "short");
+    (int code, string sources) = Exec(Path.GetTempPath(), null, Dotnet, "nuget", "list", "source", "--format", "short");
     Assert.True(code == 0, sources);
     var config = new StringBuilder("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<configuration>\n  <packageSources>\n");
-    config.Append($"    <add key=\"grcis-local\" value=\"{feed}\" />\n");
+    if (feed != null)
+      config.Append($"    <add key=\"grcis-local\" value=\"{feed}\" />\n");
     int n = 0;
     foreach (string line in sources.Split('\n', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
       if (line.StartsWith("E ", StringComparison.Ordinal))
         config.Append($"    <add key=\"machine-{n++}\" value=\"{System.Security.SecurityElement.Escape(line[2..].Trim())}\" />\n");
     config.Append("  </packageSources>\n</configuration>\n");
-    File.WriteAllText(Path.Combine(folder, "nuget.config"), config.ToString());
+    return config.ToString();
   }
 
   /// <summary>The environment with home, .NET's and NuGet's folders in <paramref name="home"/>: nothing is installed for the user.</summary>
-  static Dictionary<string, string?> FreshHome(string home)
+  internal static Dictionary<string, string?> FreshHome(string home)
   {
     var env = new Dictionary<string, string?>
     {
@@ -129,7 +148,7 @@ public class PackagesTests
   }
 
   /// <summary>Runs a program to its end (at most 3 minutes); exit code and stdout + stderr.</summary>
-  static (int Code, string Output) Exec(string folder, Dictionary<string, string?>? env, string program, params string[] args)
+  internal static (int Code, string Output) Exec(string folder, Dictionary<string, string?>? env, string program, params string[] args)
   {
     var psi = new ProcessStartInfo(program)
     {

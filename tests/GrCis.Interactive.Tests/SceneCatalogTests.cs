@@ -69,6 +69,43 @@ public class SceneCatalogTests
   }
 
   [Fact]
+  public void From_command_line_selects_the_first_script_of_the_folders_over_the_default_scene()
+  {
+    using var tmp = new TempDir();
+    System.IO.Directory.CreateDirectory(tmp.File("b"));
+    System.IO.File.WriteAllText(tmp.File("b/Zeta.cs"), TestScripts.Background(0.1));
+    System.IO.File.WriteAllText(tmp.File("b/alpha.cs"), TestScripts.Background(0.2));
+    System.IO.File.WriteAllText(tmp.File("Single.cs"), TestScripts.Background(0.3));
+    void BuiltIns(SceneCatalog c) => c.AddBuiltIn(BuiltInScenes.DefaultName, _ => TestScenes.PlaneAt(5));
+
+    // As `grcis studio scripts/` starts: the built-in scenes, then the folder; its first script (by name) is selected.
+    Assert.Equal("alpha", new SceneCatalog().AddFromCommandLine(DemoCommandLine.Parse(new[] { "-dir", tmp.File("b") }), BuiltIns)!.Name);
+    // A script file named on its own comes first; without scripts, GrCis's default scene.
+    Assert.Equal("Single", new SceneCatalog().AddFromCommandLine(DemoCommandLine.Parse(new[] { "-dir", tmp.File("b"), "-scene", tmp.File("Single.cs") }), BuiltIns)!.Name);
+    Assert.Equal(BuiltInScenes.DefaultName, new SceneCatalog().AddFromCommandLine(DemoCommandLine.Parse(Array.Empty<string>()), BuiltIns)!.Name);
+  }
+
+  [Fact]
+  public void Scripts_are_labelled_by_file_name_apart_from_built_in_scenes()
+  {
+    using var tmp = new TempDir();
+    System.IO.Directory.CreateDirectory(tmp.File("other"));
+    System.IO.File.WriteAllText(tmp.File("Bezier.cs"), TestScripts.Background(0.1));
+    System.IO.File.WriteAllText(tmp.File("FiveBalls.cs"), TestScripts.Background(0.1));
+    System.IO.File.WriteAllText(tmp.File("other/Bezier.cs"), TestScripts.Background(0.2));
+    var catalog = new SceneCatalog();
+    catalog.AddBuiltIn("Bezier", _ => TestScenes.PlaneAt(5));
+    catalog.AddBuiltIn("Five balls", _ => TestScenes.PlaneAt(5));
+    catalog.AddScriptsFolder(tmp.Path);
+    catalog.AddScriptFile(tmp.File("other/Bezier.cs"));
+
+    Assert.Equal(new[] { "Bezier", "Five balls", "Bezier (2)", "FiveBalls", "Bezier (3)" }, catalog.Entries.Select(e => e.Name));
+    Assert.Equal(new[] { "Bezier", "Five balls", "Bezier.cs", "FiveBalls.cs", "Bezier.cs (2)" }, catalog.Entries.Select(e => e.Label));
+    // The WinForms list shows ToString().
+    Assert.Equal(catalog.Entries.Select(e => e.Label), catalog.Entries.Select(e => e.ToString()));
+  }
+
+  [Fact]
   public void Built_in_scene_gets_the_parameter_text()
   {
     string? seen = null;

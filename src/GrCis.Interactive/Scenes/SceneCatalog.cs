@@ -39,6 +39,7 @@ public sealed class SceneCatalog
     ArgumentException.ThrowIfNullOrEmpty(name);
     ArgumentNullException.ThrowIfNull(create);
     var entry = new SceneEntry(UniqueName(name), create, tooltip, defaultParam);
+    entry.Label = UniqueLabel(entry.Name);
     entries.Add(entry);
     Changed?.Invoke(this, EventArgs.Empty);
     return entry;
@@ -84,6 +85,7 @@ public sealed class SceneCatalog
         return false;
       }
     entry = new SceneEntry(UniqueName(System.IO.Path.GetFileNameWithoutExtension(full)), full);
+    entry.Label = UniqueLabel(System.IO.Path.GetFileName(full));
     entries.Add(entry);
     return true;
   }
@@ -109,7 +111,8 @@ public sealed class SceneCatalog
   /// Adds what a GrCis demo command line names: the built-in scenes unless <c>-nodefault</c>, then
   /// folders, then files. A folder or file that cannot be added is reported in
   /// <paramref name="problems"/> (when given, else thrown) and the rest is still added.
-  /// Returns the entry to select first: the first <c>-scene</c> file, else GrCis's default scene, else the first entry.
+  /// Returns the entry to select first: the first <c>-scene</c> file, else the first script of the folders, else GrCis's
+  /// default scene, else the first entry.
   /// </summary>
   public SceneEntry? AddFromCommandLine(DemoCommandLine commandLine, ICollection<string>? problems = null) =>
     AddFromCommandLine(commandLine, c => BuiltInScenes.AddTo(c), problems);
@@ -125,7 +128,7 @@ public sealed class SceneCatalog
     SceneEntry? first = null;
     foreach (string file in commandLine.SceneFiles)
       Try(() => first ??= AddScriptFile(file), problems);
-    return first ?? Find(BuiltInScenes.DefaultName) ?? (entries.Count > 0 ? entries[0] : null);
+    return first ?? entries.Find(e => e.Kind == SceneEntryKind.Script) ?? Find(BuiltInScenes.DefaultName) ?? (entries.Count > 0 ? entries[0] : null);
   }
 
   static void Try(Action add, ICollection<string>? problems)
@@ -201,6 +204,14 @@ public sealed class SceneCatalog
     if (run?.ToolTip != null)
       entry.Tooltip = run.ToolTip;
     return new BuiltScene(entry, param, prepared) { Overrides = overrides, Tooltip = entry.Tooltip };
+  }
+
+  string UniqueLabel(string label)
+  {
+    string candidate = label;
+    for (int k = 2; entries.Exists(e => string.Equals(e.Label, candidate, StringComparison.OrdinalIgnoreCase)); k++)
+      candidate = $"{label} ({k})";
+    return candidate;
   }
 
   string UniqueName(string name)

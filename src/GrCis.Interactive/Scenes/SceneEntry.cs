@@ -31,6 +31,12 @@ public sealed class SceneEntry
 
   public SceneEntryKind Kind { get; }
 
+  /// <summary>
+  /// What a scene list shows: a built-in scene's name, a script's file name ("FiveBalls.cs", "Bezier.cs" beside the
+  /// built-in "Bezier"), so scripts stand apart from built-in scenes; unique in its catalog.
+  /// </summary>
+  public string Label { get; internal set; } = "";
+
   /// <summary>Full path of the script; null for built-in scenes.</summary>
   public string? Path { get; }
 
@@ -45,5 +51,5 @@ public sealed class SceneEntry
 
   internal Func<string, IRayScene>? Factory { get; }
 
-  public override string ToString() => Name;
+  public override string ToString() => Label.Length > 0 ? Label : Name;
 }

@@ -70,13 +70,16 @@ internal static class StudioApi
     lock (s.Controller.Catalog)
       entries = s.Controller.Catalog.Entries.ToArray();
     return TypedResults.Ok(new SceneList(s.Controller.Selected?.Name,
-      entries.Select(e => new SceneItem(e.Name, e.Kind.ToString(), e.Tooltip, e.ParameterText, e.Path == null ? null : Path.GetFileName(e.Path))).ToArray()));
+      entries.Select(e => new SceneItem(e.Name, e.Label, e.Kind.ToString(), e.Tooltip, e.ParameterText, e.Path == null ? null : Path.GetFileName(e.Path))).ToArray()));
   }
 
   internal sealed record SceneList(string? Selected, IReadOnlyList<SceneItem> Scenes);
 
-  /// <summary>A scene of the list: its kind (built-in, script), its parameter text and tooltip, its script file's name (null for a built-in).</summary>
-  internal sealed record SceneItem(string Name, string Kind, string? Tooltip, string? Param, string? File);
+  /// <summary>
+  /// A scene of the list: its name (the key of every request), the label the list shows (a script's file name), its kind
+  /// (built-in, script), its parameter text and tooltip, its script file's name (null for a built-in).
+  /// </summary>
+  internal sealed record SceneItem(string Name, string Label, string Kind, string? Tooltip, string? Param, string? File);
 
   internal sealed record BoxJson(double[] Min, double[] Max);
 

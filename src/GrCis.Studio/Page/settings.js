@@ -14,10 +14,15 @@ export async function loadScenes() {
   state.scenes = list.scenes;
   const select = $("scene");
   select.innerHTML = "";
+  // Scripts and built-in scenes in groups of their own (a script shows its file name: "FiveBalls.cs", not "Five balls").
+  const groups = {};
   for (const s of state.scenes) {
+    const group = groups[s.kind] ??= select.appendChild(Object.assign(document.createElement("optgroup"),
+      { label: s.kind === "Script" ? "Scripts" : "Built-in scenes" }));
     const o = document.createElement("option");
-    o.value = o.textContent = s.name;
-    select.appendChild(o);
+    o.value = s.name;
+    o.textContent = s.label ?? s.name;
+    group.appendChild(o);
   }
   if (list.selected) select.value = list.selected;
   sceneChanged();
@@ -126,6 +131,12 @@ async function render() {
 export function initSettings() {
   $("scene").addEventListener("change", sceneChanged);
   $("param").addEventListener("change", loadScriptValues);
+  // Enter in Parameters renders, as the Render button does (the new text reaches the script's values too, through "change").
+  $("param").addEventListener("keydown", e => {
+    if (e.key !== "Enter" || e.isComposing) return;
+    e.preventDefault();
+    render();
+  });
   for (const id of [...Object.keys(givenFlag), ...rangeFields]) {
     $(id).addEventListener("input", fieldChanged);
     $(id).addEventListener("change", fieldChanged);

@@ -22,6 +22,13 @@ export function showStatus() {
   showMessages();
   showDiagnostics(s.diagnostics);
   $("stop").disabled = s.phase === "idle";
+  // The downloads are links: without an image (version 0, before the first preview) they lead nowhere, so they have no href.
+  for (const id of ["png", "pfm"]) {
+    const link = $(id);
+    if (s.version > 0) link.setAttribute("href", link.dataset.href);
+    else link.removeAttribute("href");
+    link.setAttribute("aria-disabled", String(!(s.version > 0)));
+  }
 }
 
 // A saved script that is not the one rendered: once its check has ended without errors, the page says it compiles.
