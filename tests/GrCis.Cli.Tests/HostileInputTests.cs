@@ -216,4 +216,17 @@ public class HostileInputTests
     Assert.Equal(ExitCodes.Usage, run.ExitCode);
     Assert.Equal("grcis: error: scene script 'scenes.cs' is a directory; give a .cs file (a folder of classes is a --module)", Assert.Single(run.ErrorLines));
   }
+
+  [Theory]
+  [InlineData("FFD8FFE00010")]
+  [InlineData("FFD8FFE000104A46494600")]
+  public void Cut_JPEG_texture_is_one_error_naming_the_image_not_a_hang(string hex)
+  {
+    using var dir = new TempDirectory();
+    File.WriteAllBytes(dir.File("t.jpg"), Convert.FromHexString(hex));
+    File.WriteAllText(dir.File("textured.cs"), ScriptCommandTests.SceneBody + "\nroot.SetAttribute(PropertyName.TEXTURE, new ImageTexture(\"t.jpg\"));\n");
+    var render = System.Threading.Tasks.Task.Run(() => CliRun.Of(dir.Path, "render", "textured.cs", "--size", "8x8", "-o", "x.png", "-q"));
+    Assert.True(render.Wait(TimeSpan.FromSeconds(60)), "grcis render is still running after 60 s");
+    AssertRejected(render.Result, dir, ExitCodes.Failure, "t.jpg: corrupt or unsupported image (");
+  }
 }

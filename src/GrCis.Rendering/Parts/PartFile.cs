@@ -78,7 +78,7 @@ public static class PartFile
 
     """);
 
-  static (PartHeader, float[]) Decode(byte[] bytes)
+  internal static (PartHeader Header, float[] Samples) Decode(byte[] bytes)
   {
     int end = IndexOfEnd(bytes);
     var fields = new Dictionary<string, string>(StringComparer.Ordinal);
