@@ -116,4 +116,19 @@ public sealed class RenderTests(StudioFixture studio) : IClassFixture<StudioFixt
       s => !s.GetProperty("rendering").GetBoolean() && s.GetProperty("statistics").GetString() is { Length: > 0 }, "the end of the renders");
     Assert.Equal(ids.Max(), status.GetProperty("renderId").GetInt64());
   }
+
+  [Theory]
+  [InlineData("{ \"scene\": ")]
+  [InlineData("not json")]
+  [InlineData("{ \"scene\": 42 }")]
+  public async Task Malformed_json_is_a_400_whose_problem_details_say_why(string body)
+  {
+    using var content = new StringContent(body, System.Text.Encoding.UTF8, "application/json");
+    using HttpResponseMessage r = await studio.Client.PostAsync("/api/render", content);
+    Assert.Equal(HttpStatusCode.BadRequest, r.StatusCode);
+    Assert.Equal("application/problem+json", r.Content.Headers.ContentType?.MediaType);
+    JsonElement problem = await r.Content.ReadFromJsonAsync<JsonElement>();
+    Assert.Equal(400, problem.GetProperty("status").GetInt32());
+    Assert.StartsWith("The request body is not valid JSON for this request: ", problem.GetProperty("detail").GetString());
+  }
 }
