@@ -206,8 +206,19 @@ public sealed partial class DemoController : IDisposable
   /// </summary>
   public (long Id, Task<RenderResult?> Rendering) StartRender()
   {
-    SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
-    (RenderSettings settings, GivenSettings given) = Requested(Settings);
+    SceneEntry entry;
+    RenderSettings settings;
+    GivenSettings given;
+    try
+    {
+      entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
+      (settings, given) = Requested(Settings);
+    }
+    catch (Exception e)
+    {
+      // As from an async method: the refusal is the task's, and no new number was given.
+      return (RenderId, Task.FromException<RenderResult?>(e));
+    }
     CancellationTokenSource building;
     Task? previous;
     long id;
