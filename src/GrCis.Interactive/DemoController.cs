@@ -197,10 +197,28 @@ public sealed partial class DemoController : IDisposable
   /// (UI) thread, and <see cref="Stop"/> ends it (see <see cref="Interruption"/>). Returns the result, or
   /// null when the scene could not be built (see <see cref="Error"/>) or the build was stopped.
   /// </summary>
-  public async Task<RenderResult?> RenderAsync()
+  public Task<RenderResult?> RenderAsync() => StartRender().Rendering;
+
+  /// <summary>
+  /// As <see cref="RenderAsync"/>, returning with the task the number this render was given. Read
+  /// <see cref="RenderId"/> after the call instead and a render asked for at the same time may already have
+  /// replaced it.
+  /// </summary>
+  public (long Id, Task<RenderResult?> Rendering) StartRender()
   {
-    SceneEntry entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
-    (RenderSettings settings, GivenSettings given) = Requested(Settings);
+    SceneEntry entry;
+    RenderSettings settings;
+    GivenSettings given;
+    try
+    {
+      entry = Selected ?? throw new InvalidOperationException("Choose a scene first.");
+      (settings, given) = Requested(Settings);
+    }
+    catch (Exception e)
+    {
+      // As from an async method: the refusal is the task's, and no new number was given.
+      return (RenderId, Task.FromException<RenderResult?>(e));
+    }
     CancellationTokenSource building;
     Task? previous;
     long id;
@@ -214,13 +232,18 @@ public sealed partial class DemoController : IDisposable
       previous = buildTask;
     }
     Raise(RenderStarted, id);
-    try
+    return (id, Run());
+
+    async Task<RenderResult?> Run()
     {
-      return await RenderAsync(id, entry, settings, given, building, previous).ConfigureAwait(false);
-    }
-    finally
-    {
-      BuildEnded(id);
+      try
+      {
+        return await RenderAsync(id, entry, settings, given, building, previous).ConfigureAwait(false);
+      }
+      finally
+      {
+        BuildEnded(id);
+      }
     }
   }
 

@@ -10,7 +10,9 @@ using Microsoft.AspNetCore.Builder;
 using Microsoft.AspNetCore.Hosting;
 using Microsoft.AspNetCore.Hosting.Server;
 using Microsoft.AspNetCore.Hosting.Server.Features;
+using Microsoft.AspNetCore.Http;
 using Microsoft.AspNetCore.Http.Json;
+using Microsoft.AspNetCore.Routing;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.FileProviders;
 using Microsoft.Extensions.Logging;
@@ -74,7 +76,19 @@ public sealed class StudioServer : IAsyncDisposable
         k.Listen(IPAddress.Parse(options.Host.Trim('[', ']')), options.Port);
     });
     builder.Services.Configure<JsonOptions>(o => o.SerializerOptions.Converters.Add(new JsonStringEnumConverter()));
-    builder.Services.AddProblemDetails();
+    // A body that is not JSON, or not the endpoint's shape, is a 400 whose problem details say what was wrong
+    // (without this, minimal APIs answer such a request with a bare 400).
+    builder.Services.Configure<RouteHandlerOptions>(o => o.ThrowOnBadRequest = true);
+    builder.Services.AddProblemDetails(o => o.CustomizeProblemDetails = c =>
+    {
+      if (c.Exception is BadHttpRequestException bad)
+      {
+        c.ProblemDetails.Status = bad.StatusCode;
+        c.ProblemDetails.Detail = bad.InnerException is System.Text.Json.JsonException json
+          ? $"The request body is not valid JSON for this request: {json.Message}"
+          : $"The request is malformed: {bad.Message}";
+      }
+    });
     builder.Services.AddSingleton(session);
     builder.Services.AddSingleton(files);
     builder.Services.AddSingleton<EditorAssistance>();
@@ -82,7 +96,7 @@ public sealed class StudioServer : IAsyncDisposable
 
     // A failure inside an endpoint, and an answer with a status and no body (a 404 of an image not rendered yet), are
     // problem details too.
-    app.UseExceptionHandler();
+    app.UseExceptionHandler(new ExceptionHandlerOptions { StatusCodeSelector = e => e is BadHttpRequestException bad ? bad.StatusCode : 500 });
     app.UseStatusCodePages();
 
     // The port is known only once Kestrel listens (--port 0): the guard reads the hosts it allows then.

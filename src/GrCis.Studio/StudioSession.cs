@@ -17,6 +17,9 @@ namespace GrCis.Studio;
 public sealed class StudioSession : IDisposable
 {
   readonly object sync = new();
+
+  /// <summary>Held while one render request sets the controller up and starts it.</summary>
+  readonly object starting = new();
   FloatImage? image;
   double gamma = 1.0;
   int version;
@@ -109,15 +112,19 @@ public sealed class StudioSession : IDisposable
                      GivenSettings given = GivenSettings.None)
   {
     Started();
-    entry.ParameterText = param;
-    Controller.Selected = entry;
-    Controller.Settings = settings;
-    Controller.Given = given;
-    Controller.Algorithm = algorithm;
-    Controller.Progressive = progressive;
-    // RenderAsync numbers the render before it returns: the continuation knows which one it belongs to.
-    Task<RenderResult?> rendering = Controller.RenderAsync();
-    long id = Controller.RenderId;
+    long id;
+    Task<RenderResult?> rendering;
+    // Requests arrive at once (two tabs, a script): each one's choices and number must stay its own.
+    lock (starting)
+    {
+      entry.ParameterText = param;
+      Controller.Selected = entry;
+      Controller.Settings = settings;
+      Controller.Given = given;
+      Controller.Algorithm = algorithm;
+      Controller.Progressive = progressive;
+      (id, rendering) = Controller.StartRender();
+    }
     _ = rendering.ContinueWith(t =>
     {
       lock (sync)

@@ -216,4 +216,71 @@ public class HostileInputTests
     Assert.Equal(ExitCodes.Usage, run.ExitCode);
     Assert.Equal("grcis: error: scene script 'scenes.cs' is a directory; give a .cs file (a folder of classes is a --module)", Assert.Single(run.ErrorLines));
   }
+
+  [Theory]
+  [InlineData("FFD8FFE00010")]
+  [InlineData("FFD8FFE000104A46494600")]
+  public void Cut_JPEG_texture_is_one_error_naming_the_image_not_a_hang(string hex)
+  {
+    using var dir = new TempDirectory();
+    File.WriteAllBytes(dir.File("t.jpg"), Convert.FromHexString(hex));
+    File.WriteAllText(dir.File("textured.cs"), ScriptCommandTests.SceneBody + "\nroot.SetAttribute(PropertyName.TEXTURE, new ImageTexture(\"t.jpg\"));\n");
+    var render = System.Threading.Tasks.Task.Run(() => CliRun.Of(dir.Path, "render", "textured.cs", "--size", "8x8", "-o", "x.png", "-q"));
+    Assert.True(render.Wait(TimeSpan.FromSeconds(60)), "grcis render is still running after 60 s");
+    AssertRejected(render.Result, dir, ExitCodes.Failure, "t.jpg: corrupt or unsupported image (");
+  }
+
+  [Theory]
+  [InlineData("-o", "-o needs a file name (got an empty one)")]
+  [InlineData("--noise", "--noise needs a file name (got an empty one)")]
+  public void Empty_output_name_is_a_usage_error_not_the_default_name(string option, string expected)
+  {
+    using var dir = new TempDirectory();
+    AssertRejected(CliRun.Of(dir.Path, "render", "Five balls", "--size", "8x8", option, "", "-q"), dir, ExitCodes.Usage, expected);
+    Assert.Empty(dir.AllFiles());
+  }
+
+  [UnixFact]
+  public void Dangling_link_as_script_is_a_usage_error_naming_its_target()
+  {
+    using var dir = new TempDirectory();
+    File.CreateSymbolicLink(dir.File("scene.cs"), dir.File("moved-away.cs"));
+    AssertRejected(CliRun.Of(dir.Path, "render", "scene.cs", "-o", "x.png", "-q"), dir, ExitCodes.Usage,
+      "scene script 'scene.cs' not found: it is a link to '" + dir.File("moved-away.cs") + "', which does not exist");
+  }
+
+  [Fact]
+  public void Directory_given_to_merge_is_a_usage_error_that_says_so()
+  {
+    using var dir = new TempDirectory();
+    Directory.CreateDirectory(dir.File("parts"));
+    CliRun run = CliRun.Of(dir.Path, "merge", "parts", "-o", "out.png");
+    Assert.Equal(ExitCodes.Usage, run.ExitCode);
+    Assert.Equal($"grcis: error: 'parts' is a directory; give the part files (e.g. '{Path.Combine("parts", "*.grcis-part")}')", Assert.Single(run.ErrorLines));
+  }
+
+  [Fact]
+  public void Bench_mesh_that_is_not_obj_fails_naming_its_line_before_benchmarking()
+  {
+    using var dir = new TempDirectory();
+    File.WriteAllText(dir.File("garbage.obj"), "v 0 0 0\nv 1 oops 0\n");
+    CliRun run = CliRun.Of(dir.Path, "bench", "--quick", "--mesh", "garbage.obj");
+    Assert.Equal(ExitCodes.Failure, run.ExitCode);
+    Assert.Equal($"grcis: error: {dir.File("garbage.obj")}(2): 'oops' is not a number (in 'v')", Assert.Single(run.ErrorLines));
+    Assert.Equal("", run.Out);
+  }
+
+  [Fact]
+  public void Failed_image_write_leaves_no_noise_file_either()
+  {
+    using var dir = new TempDirectory();
+    Directory.CreateDirectory(dir.File("out"));
+    // The script (run twice: preprocessing and the regular call) removes the image's folder after the up-front checks, so the image's save fails.
+    File.WriteAllText(dir.File("vanish.cs"), ScriptCommandTests.SceneBody + $"\nif (System.IO.Directory.Exists(@\"{dir.File("out")}\")) System.IO.Directory.Delete(@\"{dir.File("out")}\", true);\n");
+    CliRun run = CliRun.Of(dir.Path, "render", "vanish.cs", "--size", "8x8", "--spp", "4", "-o", "out/x.png", "--noise", "n.pfm", "-q");
+    Assert.Equal(ExitCodes.Failure, run.ExitCode);
+    string line = Assert.Single(run.ErrorLines);
+    Assert.True(line.Contains("cannot write '" + dir.File("out/x.png") + "'", StringComparison.Ordinal), line);
+    Assert.False(File.Exists(dir.File("n.pfm")));
+  }
 }

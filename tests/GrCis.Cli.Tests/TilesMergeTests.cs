@@ -116,6 +116,25 @@ public class TilesMergeTests
       "p0.grcis-part", "p1.grcis-part", "copy.grcis-part", "p2.grcis-part");
   }
 
+  [Fact]
+  public void Merge_of_a_part_with_damaged_or_absurd_pixels_is_refused_naming_it()
+  {
+    using var dir = new TempDirectory();
+    ThreeParts(dir);
+    byte[] p2 = File.ReadAllBytes(dir.File("p2.grcis-part"));
+    p2[^100] ^= 0x08;
+    File.WriteAllBytes(dir.File("flipped.grcis-part"), p2);
+    AssertRefused(dir, dir.File("flipped.grcis-part") + ": pixel data damaged (CRC-32", "p0.grcis-part", "p1.grcis-part", "flipped.grcis-part");
+
+    // Re-saved with a valid checksum around a value no render gives.
+    (Rendering.Parts.PartHeader h, float[] samples) = Rendering.Parts.PartFile.Load(dir.File("p2.grcis-part"));
+    var image = new Rendering.Imaging.FloatImage(h.Width, h.Height);
+    Rendering.Parts.PartFile.Place(h, samples, image);
+    Array.Fill(image.Data, -1e30f);
+    Rendering.Parts.PartFile.Save(dir.File("forged.grcis-part"), h, image);
+    AssertRefused(dir, dir.File("forged.grcis-part") + ": pixel (", "p0.grcis-part", "p1.grcis-part", "forged.grcis-part");
+  }
+
   [Theory]
   [InlineData("--seed 2", "seed (1 vs 2)")]
   [InlineData("--size 64x40", "size (64x48 vs 64x40)")]

@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 using System.Net;
 using System.Net.Http;
 using System.Net.Http.Json;
@@ -92,5 +93,42 @@ public sealed class RenderTests(StudioFixture studio) : IClassFixture<StudioFixt
     Assert.True(status.GetProperty("error").ValueKind == JsonValueKind.Null, status.ToString());
     string source = await studio.Client.GetStringAsync("/api/source?scene=Balls");
     Assert.Contains("FiveBalls", source);
+  }
+
+  [Fact]
+  public async Task Concurrent_render_requests_each_get_their_own_render_id()
+  {
+    // Released together, so the requests overlap inside the studio rather than queue in the client.
+    var go = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+    Task<long>[] posts = [.. Enumerable.Range(0, 50).Select(i => Task.Run(async () =>
+    {
+      await go.Task;
+      using HttpResponseMessage r = await studio.Client.PostAsJsonAsync("/api/render",
+        new { scene = "Five balls", settings = new { width = 8 + i % 3, height = 6 } });
+      Assert.Equal(HttpStatusCode.Accepted, r.StatusCode);
+      return (await r.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("renderId").GetInt64();
+    }))];
+    go.SetResult();
+    long[] ids = await Task.WhenAll(posts);
+    Assert.Equal(ids.Length, ids.Distinct().Count());
+    // The last one asked for is the one on show, and it finishes.
+    JsonElement status = await studio.PollUntil("/api/status",
+      s => !s.GetProperty("rendering").GetBoolean() && s.GetProperty("statistics").GetString() is { Length: > 0 }, "the end of the renders");
+    Assert.Equal(ids.Max(), status.GetProperty("renderId").GetInt64());
+  }
+
+  [Theory]
+  [InlineData("{ \"scene\": ")]
+  [InlineData("not json")]
+  [InlineData("{ \"scene\": 42 }")]
+  public async Task Malformed_json_is_a_400_whose_problem_details_say_why(string body)
+  {
+    using var content = new StringContent(body, System.Text.Encoding.UTF8, "application/json");
+    using HttpResponseMessage r = await studio.Client.PostAsync("/api/render", content);
+    Assert.Equal(HttpStatusCode.BadRequest, r.StatusCode);
+    Assert.Equal("application/problem+json", r.Content.Headers.ContentType?.MediaType);
+    JsonElement problem = await r.Content.ReadFromJsonAsync<JsonElement>();
+    Assert.Equal(400, problem.GetProperty("status").GetInt32());
+    Assert.StartsWith("The request body is not valid JSON for this request: ", problem.GetProperty("detail").GetString());
   }
 }

@@ -30,6 +30,8 @@ public static class BenchSuite
       cases.Add(new BenchCase("five-balls", "Five balls", () => Scenes.Create("Five balls"), new(48, 36), 1, new(24, 18), 1));
       cases.Add(new BenchCase("flake9", "Sphere flake 9×4 (POV-Ray peer)", () => Flake9(1), new(48, 36), 1, new(24, 18), 1) { Description = "depth 1: 10 spheres" });
       cases.Add(MeshCase("mesh-2k", "Torus mesh 2k", () => ProceduralMesh.TorusWithTriangles(2_000), true, new(48, 36), 1, new(24, 18)));
+      if (meshFile != null)
+        cases.Add(MeshCase("mesh-file", "Mesh " + System.IO.Path.GetFileName(meshFile), () => ReadObj(meshFile), false, new(48, 36), 1, new(24, 18)));
       return cases;
     }
 
@@ -77,7 +79,8 @@ public static class BenchSuite
     };
   }
 
-  static SceneBrep ReadObj(string path)
+  /// <summary>Reads the <c>--mesh</c> file; <see cref="Rendering.MeshFormatException"/> names its file and line.</summary>
+  public static SceneBrep ReadObj(string path)
   {
     var mesh = new SceneBrep();
     new WavefrontObj().ReadBrep(path, mesh);

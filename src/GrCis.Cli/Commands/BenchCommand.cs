@@ -45,8 +45,12 @@ public static class BenchCommand
         throw new UsageException($"invalid --threads {t}: must be 0 (one per processor) or more");
       int effective = Rendering.Execution.RenderDefaults.Threads(t);
       string? meshFile = parse.GetValue(mesh);
+      if (meshFile != null)
+        meshFile = System.IO.Path.GetFullPath(meshFile, env.WorkingDirectory);
       if (meshFile != null && !System.IO.File.Exists(meshFile))
         throw new UsageException($"--mesh '{meshFile}': no such file");
+      if (meshFile != null)
+        BenchSuite.ReadObj(meshFile);   // a bad file fails now, naming its line, not after minutes of other cases
       string[] filters = parse.GetValue(scene) ?? Array.Empty<string>();
 
       string? sizeText = parse.GetValue(size);

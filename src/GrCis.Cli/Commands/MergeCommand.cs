@@ -53,6 +53,8 @@ public sealed class MergeCommand
     foreach (string file in parse.GetValue(parts) ?? [])
     {
       string path = Path.GetFullPath(file, env.WorkingDirectory);
+      if (Directory.Exists(path))
+        throw new UsageException($"'{file}' is a directory; give the part files (e.g. '{Path.Combine(file, "*" + PartFile.Extension)}')");
       try
       {
         (PartHeader h, float[] samples) = PartFile.Load(path);

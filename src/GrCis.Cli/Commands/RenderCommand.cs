@@ -4,6 +4,7 @@ using System.Linq;
 using GrCis.Cli.Animation;
 using System.CommandLine;
 using System.Globalization;
+using System.IO;
 using GrCis.Cli.Jobs;
 using GrCis.Cli.Output;
 using GrCis.Cli.ProgressViews;
@@ -110,15 +111,24 @@ public sealed class RenderCommand
       return ExitCodes.Cancelled;
     }
 
-    if (part is ShardSpec shard)
-      target.SavePart(StillPart.Header(source, setup, shard, Modules(parse, env), result.Statistics.SamplesPerPixel), result.Image);
-    else
-      target.Save(result.Image, settings.Gamma);
+    // Both files or neither: the noise map first, removed again when the image cannot be written.
     if (noiseTarget != null)
     {
       if (result.Statistics.Noise == null)
         env.Error.WriteLine($"grcis: warning: no noise estimate at {result.Statistics.SamplesPerPixel} spp (it needs 2x2 supersampling or more); '{noiseTarget.FullPath}' holds NaN");
       noiseTarget.Save((result.Noise ?? new NoiseImage(result.Image.Width, result.Image.Height)).StandardError(), 1.0);
+    }
+    try
+    {
+      if (part is ShardSpec shard)
+        target.SavePart(StillPart.Header(source, setup, shard, Modules(parse, env), result.Statistics.SamplesPerPixel), result.Image);
+      else
+        target.Save(result.Image, settings.Gamma);
+    }
+    catch (CliFailure) when (noiseTarget != null)
+    {
+      File.Delete(noiseTarget.FullPath);
+      throw;
     }
     env.Out.WriteLine(Summary(target, settings, result) + (part is ShardSpec sp ? $", part {sp} (merge with 'grcis merge')" : ""));
     return ExitCodes.Success;
@@ -149,7 +159,7 @@ public sealed class RenderCommand
       return null;
     if (part != null)
       throw new UsageException("--noise is not written with --tiles (a part has no whole image to estimate)");
-    OutputTarget target = OutputTarget.Resolve(n, null, "noise", env.WorkingDirectory);
+    OutputTarget target = OutputTarget.Resolve(n, null, "noise", env.WorkingDirectory, "--noise");
     if (target.Format != OutputFormat.Pfm)
       throw new UsageException($"--noise writes linear floats: name it *.pfm (got '{n}')");
     if (string.Equals(target.FullPath, image.FullPath, StringComparison.Ordinal))

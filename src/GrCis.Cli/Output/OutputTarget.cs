@@ -26,11 +26,15 @@ public sealed class OutputTarget
   /// Resolves <c>-o</c> and <c>--format</c>: without <c>-o</c> the file is <c>{stem}.png</c> (or .pfm)
   /// in <paramref name="workingDirectory"/>; without <c>--format</c> the extension decides.
   /// </summary>
-  /// <exception cref="UsageException">Unknown format or extension.</exception>
-  public static OutputTarget Resolve(string? output, string? format, string defaultStem, string workingDirectory)
+  /// <param name="option">The option that gave <paramref name="output"/>, for messages.</param>
+  /// <exception cref="UsageException">Unknown format or extension, or an empty file name.</exception>
+  public static OutputTarget Resolve(string? output, string? format, string defaultStem, string workingDirectory, string option = "-o")
   {
     OutputFormat? explicitFormat = format == null ? null : ParseFormat(format);
-    if (string.IsNullOrWhiteSpace(output))
+    // An empty name is a mistake (an unset shell variable), not a request for the default name.
+    if (output != null && string.IsNullOrWhiteSpace(output))
+      throw new UsageException($"{option} needs a file name (got an empty one); leave {option} out for the default name");
+    if (output == null)
     {
       OutputFormat f = explicitFormat ?? OutputFormat.Png;
       return new OutputTarget(Path.Combine(workingDirectory, defaultStem + Extension(f)), f);

@@ -84,6 +84,22 @@ public sealed class SceneResolver
       throw new UsageException($"'{spec}' is a file but not a scene script; {expected}");
   }
 
+  /// <summary>The target of a link that leads nowhere (.NET's File.Exists is true for the link itself), else null.</summary>
+  static string? BrokenLink(string path)
+  {
+    var file = new FileInfo(path);
+    if (file.LinkTarget is not string target)
+      return null;
+    try
+    {
+      return file.ResolveLinkTarget(returnFinalTarget: true) is { Exists: true } ? null : target;
+    }
+    catch (IOException)
+    {
+      return target;   // a loop of links
+    }
+  }
+
   static bool IsScriptPath(string spec) => spec.EndsWith(".cs", StringComparison.OrdinalIgnoreCase);
 
   ISceneSource ResolveScript(string spec, string? param, IReadOnlyList<string> modules, ScriptCache? diskCache)
@@ -93,6 +109,8 @@ public sealed class SceneResolver
       throw new UsageException($"scene script '{spec}' is a directory; give a .cs file (a folder of classes is a --module)");
     if (!File.Exists(path))
       throw new UsageException($"scene script '{spec}' not found (looked for '{path}')");
+    if (BrokenLink(path) is string target)
+      throw new UsageException($"scene script '{spec}' not found: it is a link to '{target}', which does not exist");
     var dirs = new List<string>(modules.Count);
     foreach (string m in modules)
     {

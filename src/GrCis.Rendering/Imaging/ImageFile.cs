@@ -23,17 +23,24 @@ public static class ImageFile
   {
     if (!(gamma > 0.0) || double.IsInfinity(gamma))
       throw new ArgumentOutOfRangeException(nameof(gamma), gamma, "Gamma must be a positive finite number.");
-    return FileDecoding.Load(path, bytes =>
+    return FileDecoding.Load(path, bytes => Decode(bytes, gamma));
+  }
+
+  /// <summary>Decodes a file held in memory, as <see cref="Load"/> does; bad data is an <see cref="InvalidDataException"/> without the path.</summary>
+  internal static FloatImage Decode(byte[] bytes, double gamma = 1.0)
+  {
+    if (IsPfm(bytes))
+      return ToRgb(PfmReader.Decode(bytes));
+    if (IsHdr(bytes))
     {
-      if (IsPfm(bytes))
-        return ToRgb(PfmReader.Decode(bytes));
-      if (IsHdr(bytes))
+      ImageResultFloat hdr = Stb(() =>
       {
-        ImageResultFloat hdr = Stb(() => ImageResultFloat.FromMemory(bytes, ColorComponents.RedGreenBlue));
-        return new FloatImage(hdr.Width, hdr.Height, 3, hdr.Data);
-      }
-      return ToLinear(Stb(() => DecodeRgb8(bytes)), gamma);
-    });
+        CheckSize(bytes);
+        return ImageResultFloat.FromStream(new BoundedDecodeStream(bytes), ColorComponents.RedGreenBlue);
+      });
+      return new FloatImage(hdr.Width, hdr.Height, 3, hdr.Data);
+    }
+    return ToLinear(Stb(() => DecodeRgb8(bytes)), gamma);
   }
 
   /// <summary>Loads an 8-bit file (PNG, JPEG, BMP, TGA, …) as RGB bytes, unchanged.</summary>
@@ -45,8 +52,20 @@ public static class ImageFile
   /// <summary>Decodes an 8-bit file held in memory; StbImageSharp's own exception on bad data.</summary>
   internal static Rgb8Image DecodeRgb8(byte[] bytes)
   {
-    ImageResult r = ImageResult.FromMemory(bytes, ColorComponents.RedGreenBlue);
+    CheckSize(bytes);
+    ImageResult r = ImageResult.FromStream(new BoundedDecodeStream(bytes), ColorComponents.RedGreenBlue);
     return new Rgb8Image(r.Width, r.Height, r.Data);
+  }
+
+  /// <summary>
+  /// Refuses a header that declares more pixels than an image may hold, before the decoder allocates and
+  /// decodes them: a damaged size field would otherwise cost gigabytes and minutes for a few bytes of data.
+  /// </summary>
+  static void CheckSize(byte[] bytes)
+  {
+    ImageInfo? info = ImageInfo.FromStream(new BoundedDecodeStream(bytes));
+    if (info is { } i && (i.Width <= 0 || i.Height <= 0 || (long)i.Width * i.Height > Rgb8Image.MaxPixels))
+      throw new InvalidDataException($"declared size {i.Width}x{i.Height} is out of range");
   }
 
   static T Stb<T>(Func<T> decode)
@@ -55,12 +74,26 @@ public static class ImageFile
     {
       return decode();
     }
-    catch (Exception ex) when (ex is not (InvalidDataException or OutOfMemoryException))
+    catch (InvalidDataException ex)
     {
-      // StbImageSharp reports bad data with plain Exception (its failure reason) or an index error.
-      throw new InvalidDataException(
-        ex.GetType() == typeof(Exception) ? $"corrupt or unsupported image ({ex.Message})" : "corrupt or unsupported image", ex);
+      // The size check and the bounded stream name the problem; say what kind of file it was.
+      throw new InvalidDataException($"corrupt or unsupported image ({ex.Message})", ex);
     }
+    catch (Exception ex) when (ex is not OutOfMemoryException)
+    {
+      // StbImageSharp reports bad data with a plain exception carrying its failure reason, or an index error.
+      throw new InvalidDataException(
+        ex.GetType() == typeof(Exception) || ex is InvalidOperationException ? $"corrupt or unsupported image ({Printable(ex.Message)})" : "corrupt or unsupported image", ex);
+    }
+  }
+
+  /// <summary>The decoder's reason as one short printable line: for an unknown PNG chunk it is the chunk's raw type bytes.</summary>
+  static string Printable(string reason)
+  {
+    var text = new System.Text.StringBuilder(reason.Length);
+    foreach (char c in reason.Length > 60 ? reason[..60] : reason)
+      text.Append(c is >= ' ' and <= '~' ? c : '?');
+    return text.ToString();
   }
 
   static bool IsPfm(ReadOnlySpan<byte> b) => b.Length >= 3 && b[0] == 'P' && (b[1] == 'F' || b[1] == 'f') && b[2] is (byte)'\n' or (byte)'\r' or (byte)' ' or (byte)'\t';

@@ -32,11 +32,12 @@ public static class PfmReader
     if ((long)width * height * bands > FloatImage.MaxSamples)
       throw new InvalidDataException($"PFM image {width}x{height} is too large");
 
-    var image = new FloatImage(width, height, bands);
     int rowSamples = width * bands;
     long needed = (long)rowSamples * height * 4;
+    // Checked before allocating: a damaged size must not cost gigabytes.
     if (file.Length - pos < needed)
       throw new InvalidDataException($"PFM data truncated: {width}x{height}x{bands} needs {needed} bytes, {Math.Max(0, file.Length - pos)} present");
+    var image = new FloatImage(width, height, bands);
     bool little = scale < 0.0;
     for (int row = 0; row < height; row++)
     {

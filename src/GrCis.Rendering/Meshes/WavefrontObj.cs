@@ -248,7 +248,7 @@ public class WavefrontObj
     {
       ReadOnlySpan<char> nPart = rest[(s2 + 1)..];
       if (nPart.IsEmpty || nPart.IndexOf('/') >= 0)
-        throw new MeshFormatException(name, lineNo, $"malformed face corner '{corner.ToString()}'");
+        throw new MeshFormatException(name, lineNo, $"malformed face corner '{Echo(corner)}'");
       ni = Index(nPart, nn, "normal", corner, name, lineNo);
     }
   }
@@ -257,7 +257,7 @@ public class WavefrontObj
   static int Index(ReadOnlySpan<char> text, int count, string what, ReadOnlySpan<char> corner, string name, int lineNo)
   {
     if (!int.TryParse(text, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out int index))
-      throw new MeshFormatException(name, lineNo, $"malformed {what} index '{text.ToString()}' in face corner '{corner.ToString()}'");
+      throw new MeshFormatException(name, lineNo, $"malformed {what} index '{Echo(text)}' in face corner '{Echo(corner)}'");
     int i = index > 0 ? index - 1 : count + index;
     if (index == 0 || i < 0 || i >= count)
       throw new MeshFormatException(name, lineNo, $"{what} index {index} out of range (1..{count} or -1..-{count} so far)");
@@ -270,9 +270,15 @@ public class WavefrontObj
       throw new MeshFormatException(name, lineNo, $"'{keyword}' needs more numbers");
     ReadOnlySpan<char> t = tokens.Next();
     if (!double.TryParse(t, NumberStyles.Float, CultureInfo.InvariantCulture, out double value) || !double.IsFinite(value))
-      throw new MeshFormatException(name, lineNo, $"'{t.ToString()}' is not a number (in '{keyword}')");
+      throw new MeshFormatException(name, lineNo, $"'{Echo(t)}' is not a number (in '{keyword}')");
     return value;
   }
+
+  /// <summary>Longest piece of the file a message quotes whole.</summary>
+  internal const int MaxEcho = 40;
+
+  /// <summary>A token as a message quotes it: a 50 MB "number" must not become a 50 MB error line.</summary>
+  static string Echo(ReadOnlySpan<char> token) => token.Length <= MaxEcho ? token.ToString() : string.Concat(token[..MaxEcho], "…");
 
   /// <summary>Whitespace-separated tokens of a line, without allocation.</summary>
   ref struct Tokens

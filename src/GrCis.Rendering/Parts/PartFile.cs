@@ -12,12 +12,23 @@ namespace Rendering.Parts;
 /// <summary>
 /// A <c>.grcis-part</c> file: an ASCII header of <c>key value</c> lines ending with <c>end</c>, then the
 /// part's tiles (in <see cref="PartLayout.Tiles"/> order, rows top to bottom inside a tile) as
-/// little-endian float32 linear RGB. docs/scale-out.md describes every key.
+/// little-endian float32 linear RGB. The header carries the CRC-32 of those bytes, so a part damaged on
+/// the way (a flipped bit, a copy cut and padded) is refused instead of merged. docs/scale-out.md
+/// describes every key.
 /// </summary>
 public static class PartFile
 {
+  /// <summary>Format 2 added the <c>crc32</c> line; format 1 files are refused with a message saying so.</summary>
+  public const int Version = 2;
   /// <summary>The first header line of every part file (format name and version).</summary>
-  public const string Magic = "grcis-part 1";
+  public const string Magic = "grcis-part 2";
+  const string MagicPrefix = "grcis-part ";
+
+  /// <summary>
+  /// Largest magnitude a stored sample may have: far above any radiance a render gives, far below float's
+  /// range, so a value that is nonsense (a damaged or forged file) is refused rather than merged.
+  /// </summary>
+  public const float MaxMagnitude = 1e15f;
   /// <summary>File name extension of part files.</summary>
   public const string Extension = ".grcis-part";
   const int MaxHeaderBytes = 4096;
@@ -31,18 +42,20 @@ public static class PartFile
     if (image.Width != header.Width || image.Height != header.Height || image.Bands != header.Bands)
       throw new ArgumentException($"Image {image.Width}x{image.Height}x{image.Bands} does not match the part header.", nameof(image));
     List<Tile> tiles = PartLayout.Tiles(header.Width, header.Height, header.Index, header.Count);
+    // The data is laid out first: its checksum goes in the header that precedes it.
+    byte[] data = new byte[PartLayout.SampleCount(tiles, header.Bands) * 4];
+    int k = 0;
+    foreach (Tile t in tiles)
+      for (int y = t.Y1; y < t.Y2; y++)
+        foreach (float v in image.Data.AsSpan(image.PixelIndex(t.X1, y), (t.X2 - t.X1) * header.Bands))
+        {
+          BinaryPrimitives.WriteSingleLittleEndian(data.AsSpan(k), v);
+          k += 4;
+        }
     AtomicFile.Write(path, s =>
     {
-      s.Write(Encoding.UTF8.GetBytes(HeaderText(header, PartLayout.SampleCount(tiles, header.Bands))));
-      byte[] row = new byte[PartLayout.TileSize * header.Bands * 4];
-      foreach (Tile t in tiles)
-        for (int y = t.Y1; y < t.Y2; y++)
-        {
-          ReadOnlySpan<float> src = image.Data.AsSpan(image.PixelIndex(t.X1, y), (t.X2 - t.X1) * header.Bands);
-          for (int i = 0; i < src.Length; i++)
-            BinaryPrimitives.WriteSingleLittleEndian(row.AsSpan(4 * i), src[i]);
-          s.Write(row, 0, src.Length * 4);
-        }
+      s.Write(Encoding.UTF8.GetBytes(HeaderText(header, data.Length / 4, Crc32.Compute(data))));
+      s.Write(data);
     });
   }
 
@@ -64,7 +77,7 @@ public static class PartFile
       }
   }
 
-  static string HeaderText(PartHeader h, long samples) => string.Create(CultureInfo.InvariantCulture, $"""
+  static string HeaderText(PartHeader h, long samples, uint crc) => string.Create(CultureInfo.InvariantCulture, $"""
     {Magic}
     layout {h.Layout}
     size {h.Width}x{h.Height}
@@ -76,17 +89,16 @@ public static class PartFile
     scene {h.Scene}
     settings {h.SettingsHash}
     samples {samples}
+    crc32 {crc:x8}
     end
 
     """);
 
-  static (PartHeader, float[]) Decode(byte[] bytes)
+  internal static (PartHeader Header, float[] Samples) Decode(byte[] bytes)
   {
     int end = IndexOfEnd(bytes);
     var fields = new Dictionary<string, string>(StringComparer.Ordinal);
     string[] lines = Encoding.UTF8.GetString(bytes, 0, end).TrimEnd('\n').Split('\n');
-    if (lines[0] != Magic)
-      throw new InvalidDataException($"not a grcis part file (expected '{Magic}')");
     foreach (string line in lines[1..])
     {
       int sp = line.IndexOf(' ');
@@ -126,10 +138,32 @@ public static class PartFile
     int dataStart = end + "end\n".Length;
     if (bytes.Length - dataStart != expected * 4)
       throw new InvalidDataException($"pixel data truncated or padded: {bytes.Length - dataStart} bytes, expected {expected * 4}");
+    ReadOnlySpan<byte> data = bytes.AsSpan(dataStart);
+    if (!uint.TryParse(Field(fields, "crc32"), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out uint crc))
+      throw Bad("crc32");
+    if (Crc32.Compute(data) != crc)
+      throw new InvalidDataException($"pixel data damaged (CRC-32 {Crc32.Compute(data):x8}, header says {crc:x8})");
     float[] samples = new float[expected];
     for (int i = 0; i < samples.Length; i++)
-      samples[i] = BinaryPrimitives.ReadSingleLittleEndian(bytes.AsSpan(dataStart + 4 * i));
+      samples[i] = BinaryPrimitives.ReadSingleLittleEndian(data[(4 * i)..]);
+    CheckValues(header, samples);
     return (header, samples);
+  }
+
+  /// <summary>Refuses NaN, infinities and magnitudes above <see cref="MaxMagnitude"/>, naming the first such pixel.</summary>
+  static void CheckValues(PartHeader header, float[] samples)
+  {
+    int k = 0;
+    foreach (Tile t in PartLayout.Tiles(header.Width, header.Height, header.Index, header.Count))
+      for (int y = t.Y1; y < t.Y2; y++)
+        for (int x = t.X1; x < t.X2; x++)
+          for (int b = 0; b < header.Bands; b++, k++)
+          {
+            float v = samples[k];
+            if (!float.IsFinite(v) || Math.Abs(v) > MaxMagnitude)
+              throw new InvalidDataException(string.Create(CultureInfo.InvariantCulture,
+                $"pixel ({x}, {y}) holds {v:R}, not a colour value (NaN, infinite or beyond ±{MaxMagnitude:0e0})"));
+          }
   }
 
   /// <summary>Offset of the "end\n" line that closes the header.</summary>
@@ -137,7 +171,15 @@ public static class PartFile
   {
     ReadOnlySpan<byte> head = bytes.AsSpan(0, Math.Min(bytes.Length, MaxHeaderBytes));
     if (!head.StartsWith(Encoding.ASCII.GetBytes(Magic + "\n")))
+    {
+      int eol = head.IndexOf((byte)'\n');
+      if (head.StartsWith(Encoding.ASCII.GetBytes(MagicPrefix)) && eol > 0 &&
+          int.TryParse(head[MagicPrefix.Length..eol], NumberStyles.None, CultureInfo.InvariantCulture, out int version))
+        throw new InvalidDataException(version < Version
+          ? $"part file format {version} (an older grcis); this grcis reads format {Version}: render the part again"
+          : $"part file format {version} (a newer grcis); this grcis reads format {Version}");
       throw new InvalidDataException($"not a grcis part file (expected '{Magic}')");
+    }
     int i = head.IndexOf("\nend\n"u8);
     if (i < 0)
       throw new InvalidDataException("header truncated (no 'end' line)");

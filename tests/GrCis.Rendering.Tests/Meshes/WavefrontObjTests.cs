@@ -181,4 +181,14 @@ f -4 -1 -2
     Assert.Equal(s.Vertices, back.Vertices);
     Assert.Equal(s.GetNormal(6), back.GetNormal(6));
   }
+
+  [Fact]
+  public void Obj_error_quotes_a_huge_token_cut_to_forty_characters()
+  {
+    string number = new('7', 5_000_000);
+    var e = Assert.Throws<MeshFormatException>(() => Read($"v 0 0 0\nv 1 x{number} 0\n"));
+    Assert.Equal($"(stream)(2): 'x{new string('7', 39)}…' is not a number (in 'v')", e.Message);
+    e = Assert.Throws<MeshFormatException>(() => Read($"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3/{number}\n"));
+    Assert.True(e.Message.Length < 200, e.Message.Length.ToString());
+  }
 }
