@@ -12,7 +12,7 @@ internal static class ScriptObjects
   /// <summary>Binds a student's <see cref="RayCasting"/> subclass that has no scene to <paramref name="scene"/>.</summary>
   public static void Wire(IImageFunction? function, IRayScene scene)
   {
-    if (function is RayCasting rc && rc.BoundScene == null && !Rendering.Accel.LibraryTypes.IsLibraryClass(rc))
+    if (function is RayCasting rc && rc.BoundScene == null && !Rendering.Accel.FrontEndRules.IsLibraryClass(rc))
       rc.Scene = scene;
   }
 }

@@ -25,8 +25,8 @@ public sealed class FrameParts
     Plan = plan;
     scriptFunction = plan.ImageFunction;
     scriptSynthesizer = plan.Synthesizer;
-    Sequential = (scriptFunction != null && !LibraryTypes.IsCopyableRayCaster(scriptFunction)) ||
-                 (scriptSynthesizer != null && !LibraryTypes.IsLibraryClass(scriptSynthesizer));
+    Sequential = (scriptFunction != null && !FrontEndRules.IsCopyableRayCaster(scriptFunction)) ||
+                 (scriptSynthesizer != null && !FrontEndRules.IsLibraryClass(scriptSynthesizer));
   }
 
   /// <summary>What precedence decided: the builder of every frame's function, renderer and options.</summary>

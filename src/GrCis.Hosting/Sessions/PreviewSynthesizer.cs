@@ -28,7 +28,7 @@ internal sealed class PreviewSynthesizer : ImageSynthesizer
     Height = inner.Height;
     Gamma = inner.Gamma;
     Adaptive = inner.Adaptive;
-    innerRectangles = Rendering.Accel.LibraryTypes.RendersOwnRectangles(inner.GetType());
+    innerRectangles = Rendering.Accel.FrontEndRules.RendersOwnRectangles(inner.GetType());
   }
 
   /// <summary>The inner renderer renders its rectangles its own way (a subclass overrides RenderRectangle).</summary>

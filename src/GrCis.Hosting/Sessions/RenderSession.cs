@@ -125,7 +125,7 @@ public sealed class RenderSession : IDisposable
     try
     {
       // Only the library's own n×n grid takes its samples in passes; a subclass (adaptive, a student's) renders its own way.
-      if (Progressive && LibraryTypes.TakesSamplesInPasses(inner))
+      if (Progressive && FrontEndRules.TakesSamplesInPasses(inner))
         image = RenderPasses(job, (SupersamplingImageSynthesizer)inner, options, context, clock, token);
       else
         image = RenderTiles(job, options, context, clock, token, out ticker);
