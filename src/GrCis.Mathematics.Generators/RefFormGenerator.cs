@@ -110,7 +110,7 @@ public sealed class RefFormGenerator : IIncrementalGenerator
       return " = default";
     string literal = SymbolDisplay.FormatPrimitive(value, quoteStrings: true, useHexadecimalNumbers: false);
     if (p.Type.TypeKind == TypeKind.Enum)
-      return $" = ({TypeName(p.Type)}){literal}";
+      return $" = ({TypeName(p.Type)})({literal})";
     return p.Type.SpecialType switch
     {
       SpecialType.System_Single => $" = {literal}F",
