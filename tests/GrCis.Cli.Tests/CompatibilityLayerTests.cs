@@ -20,9 +20,10 @@ public class CompatibilityLayerTests
 
   static readonly Assembly scripting = typeof(GrCis.Scripting.ScriptHost).Assembly;
 
-  /// <summary>The core: the renderer and every host except the script host (checked on its own below).</summary>
+  /// <summary>The core: the math, the renderer and every host except the script host (checked on its own below).</summary>
   static readonly Assembly[] core =
   {
+    typeof(OpenTK.Mathematics.Vector3d).Assembly,
     typeof(Rendering.RayTracing).Assembly,
     typeof(GrCis.Hosting.RenderPlan).Assembly,
     typeof(GrCis.Interactive.DemoController).Assembly,
@@ -35,6 +36,18 @@ public class CompatibilityLayerTests
   {
     Assert.Equal(CompatibilityName, compatibility.GetName().Name);
     Assert.Contains(compatibility.GetReferencedAssemblies(), a => a.Name == "GrCis.Rendering");
+  }
+
+  [Fact]
+  public void The_math_assembly_stands_on_the_framework_alone_and_the_renderer_on_it()
+  {
+    Assembly math = typeof(OpenTK.Mathematics.Vector3d).Assembly;
+    Assert.Equal("GrCis.Mathematics", math.GetName().Name);
+    Assert.DoesNotContain(math.GetReferencedAssemblies(), r => r.Name!.StartsWith("GrCis", StringComparison.Ordinal));
+    Assert.Contains(typeof(Rendering.RayTracing).Assembly.GetReferencedAssemblies(), r => r.Name == "GrCis.Mathematics");
+    // Every type of OpenTK.Mathematics lives in GrCis.Mathematics; the renderer keeps GrCis's own math (MathSupport).
+    Assert.DoesNotContain(typeof(Rendering.RayTracing).Assembly.GetExportedTypes(), t => t.Namespace == "OpenTK.Mathematics");
+    Assert.Same(typeof(Rendering.RayTracing).Assembly, typeof(MathSupport.Geometry).Assembly);
   }
 
   [Fact]

@@ -22,9 +22,11 @@ public class IdeShimTests
 
   static readonly Lazy<IReadOnlyList<MetadataReference>> references = new(() =>
   {
-    // What the template's project compiles against: the shared framework and the two library packages.
+    // What the template's project compiles against: the shared framework and the library packages (GrCis.Rendering
+    // brings GrCis.Mathematics).
     string framework = Path.GetDirectoryName(typeof(object).Assembly.Location)!;
     var list = Directory.GetFiles(framework, "*.dll").Where(IsManaged).Select(f => (MetadataReference)MetadataReference.CreateFromFile(f)).ToList();
+    list.Add(MetadataReference.CreateFromFile(typeof(OpenTK.Mathematics.Vector3d).Assembly.Location));
     list.Add(MetadataReference.CreateFromFile(typeof(Rendering.IRayScene).Assembly.Location));
     list.Add(MetadataReference.CreateFromFile(typeof(Utilities.Util).Assembly.Location));
     return list;

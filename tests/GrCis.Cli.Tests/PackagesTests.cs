@@ -36,15 +36,26 @@ public class PackagesTests
     string version = SceneFolderTemplate.PackageVersion;
 
     // Pack what the test run has just built (the library, the tool), and the template (nothing to compile).
-    foreach (string project in new[] { "src/GrCis.Rendering", "src/GrCis.Compatibility", "src/GrCis.Cli" })
+    foreach (string project in new[] { "src/GrCis.Mathematics", "src/GrCis.Rendering", "src/GrCis.Compatibility", "src/GrCis.Cli" })
       Run(RepoPaths.Root, null, "pack", project, "-c", Configuration, "--no-build", "-o", feed, "--disable-build-servers");
     Run(RepoPaths.Root, null, "pack", "templates/GrCis.Templates.csproj", "-c", Configuration, "-o", feed, "--disable-build-servers");
-    foreach (string id in new[] { "GrCis.Rendering", "GrCis.Compatibility", "GrCis.Cli", "GrCis.Templates" })
+    foreach (string id in new[] { "GrCis.Mathematics", "GrCis.Rendering", "GrCis.Compatibility", "GrCis.Cli", "GrCis.Templates" })
       Assert.True(File.Exists(Path.Combine(feed, $"{id}.{version}.nupkg")), $"{id}.{version}.nupkg not packed");
     // The library brings its doc comments (IDE hover) and its PDB (stepping in, source link).
+    foreach (string id in new[] { "GrCis.Mathematics", "GrCis.Rendering" })
+      using (ZipArchive library = ZipFile.OpenRead(Path.Combine(feed, $"{id}.{version}.nupkg")))
+        foreach (string part in new[] { ".dll", ".xml", ".pdb" })
+          Assert.Contains(library.Entries, e => e.FullName == $"lib/net10.0/{id}{part}");
+    // The library's package brings the math's (OpenTK.Mathematics), of the same version; the math's brings no generator.
     using (ZipArchive library = ZipFile.OpenRead(Path.Combine(feed, $"GrCis.Rendering.{version}.nupkg")))
-      foreach (string part in new[] { ".dll", ".xml", ".pdb" })
-        Assert.Contains(library.Entries, e => e.FullName == "lib/net10.0/GrCis.Rendering" + part);
+    using (var nuspec = new StreamReader(library.GetEntry("GrCis.Rendering.nuspec")!.Open()))
+      Assert.Contains($"<dependency id=\"GrCis.Mathematics\" version=\"{version}\"", nuspec.ReadToEnd(), StringComparison.Ordinal);
+    using (ZipArchive math = ZipFile.OpenRead(Path.Combine(feed, $"GrCis.Mathematics.{version}.nupkg")))
+    {
+      Assert.DoesNotContain(math.Entries, e => e.FullName.Contains("Generators", StringComparison.Ordinal));
+      using var nuspec = new StreamReader(math.GetEntry("GrCis.Mathematics.nuspec")!.Open());
+      Assert.DoesNotContain("<dependency ", nuspec.ReadToEnd(), StringComparison.Ordinal);
+    }
 
     // The local feed first, then the sources this machine restores from (for StbImageSharp): the fresh home has none.
     WriteNuGetConfig(work, feed);

@@ -60,6 +60,17 @@ public sealed class SignatureAndHoverTests(AssistantFixture fixture) : IClassFix
   }
 
   [Fact]
+  public async Task Hovering_a_math_type_shows_its_doc_comment_from_the_math_assembly()
+  {
+    const string source = "Vector3d v = Vector3d.UnitX;";
+    HoverInfo? hover = await assistant.HoverAsync(source, 3);
+    Assert.NotNull(hover);
+    Assert.Contains("Vector3d", hover.Text);
+    Assert.NotNull(hover.Documentation);
+    Assert.Contains("3D vector of doubles", hover.Documentation);
+  }
+
+  [Fact]
   public async Task Hovering_a_constructor_call_shows_the_constructors_doc_comment()
   {
     const string source = "var m = new PhongMaterial();";

@@ -132,7 +132,7 @@ public sealed class DiskCacheTests : IDisposable
 
     // The library's identity is the MVIDs of the assemblies scripts compile against (deterministic builds:
     // they change exactly when an assembly does); a script key changes with it.
-    foreach (Type t in new[] { typeof(IRayScene), typeof(Utilities.Util), typeof(ScriptHost), typeof(object) })
+    foreach (Type t in new[] { typeof(OpenTK.Mathematics.Vector3d), typeof(IRayScene), typeof(Utilities.Util), typeof(ScriptHost), typeof(object) })
       Assert.Contains(t.Assembly.ManifestModule.ModuleVersionId.ToString(), CacheKeys.Library);
     string source = File.ReadAllText(path);
     Assert.NotEqual(CacheKeys.Script("library A", path, source, [], false), CacheKeys.Script("library B", path, source, [], false));

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Builds OpenTK's own math test suites against GrCis.Rendering's OpenTK.Mathematics types and runs them.
+"""Builds OpenTK's own math test suites against GrCis.Mathematics' OpenTK.Mathematics types and runs them.
 
-usage: opentk-suites.py <OpenTK git dir> <tag or commit> <GrCis.Rendering.dll> <work dir>
+usage: opentk-suites.py <OpenTK git dir> <tag or commit> <GrCis.Mathematics.dll> <work dir>
 
 The suites are read from the git dir at the given revision into <work dir> (never into the repository),
 `open OpenTK` / C# namespace lookups are pointed at OpenTK.Mathematics, and every test (or generator) that
@@ -49,7 +49,7 @@ def project(kind, files, refs):
   <ItemGroup>
 {items}  </ItemGroup>
   <ItemGroup>{PKGS}
-{prefs}    <Reference Include="GrCis.Rendering"><HintPath>{os.path.abspath(dll)}</HintPath></Reference>
+{prefs}    <Reference Include="GrCis.Mathematics"><HintPath>{os.path.abspath(dll)}</HintPath></Reference>
   </ItemGroup>
 </Project>
 '''
