@@ -122,6 +122,7 @@ public static partial class Geometry
     return true;
   }
 
+  /// <summary>A vector from the parsed <c>param</c> text; false (and <paramref name="val"/> kept) when missing or short.</summary>
   public static bool TryParse(Dictionary<string, string> rec, string key, ref Vector2 val)
   {
     if (Read(rec, key, 2) is not double[] v)
@@ -130,6 +131,7 @@ public static partial class Geometry
     return true;
   }
 
+  /// <summary>A vector from the parsed <c>param</c> text; false (and <paramref name="val"/> kept) when missing or short.</summary>
   public static bool TryParse(Dictionary<string, string> rec, string key, ref Vector2d val)
   {
     if (Read(rec, key, 2) is not double[] v)

@@ -14,6 +14,10 @@ public static partial class Geometry
     output = 2.0 * k * normal - input;
   }
 
+  /// <summary>
+  /// The mirror image of <paramref name="input"/> about <paramref name="normal"/> (a unit vector): 2 (n·i) n − i. With
+  /// <paramref name="input"/> pointing from the surface towards the viewer, the result points along the mirrored ray.
+  /// </summary>
   public static Vector3d SpecularReflection(Vector3d normal, Vector3d input)
   {
     SpecularReflection(ref normal, ref input, out Vector3d output);
@@ -74,8 +78,10 @@ public static partial class Geometry
     return result;
   }
 
+  /// <summary>True when <paramref name="a"/> is zero or the smallest subnormal number in magnitude.</summary>
   public static bool IsZero(double a) => Math.Abs(a) <= double.Epsilon;
 
+  /// <summary>True when |<paramref name="a"/>| ≤ 10⁻¹²: zero up to rounding errors of unit-sized values.</summary>
   public static bool IsZeroFast(double a) => Math.Abs(a) <= 1.0e-12;
 
   /// <summary>Two unit vectors perpendicular to <paramref name="n"/> and to each other.</summary>

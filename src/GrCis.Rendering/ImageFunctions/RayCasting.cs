@@ -11,9 +11,13 @@ namespace Rendering;
 [Serializable]
 public class RayCasting : IImageFunction
 {
+  /// <summary>Factor of the path hash for each light that lit the hit.</summary>
   protected const long HASH_LIGHT = 101L;
+
+  /// <summary>Factor of the path hash for each texture applied to the hit (with the texture's own hash).</summary>
   protected const long HASH_TEXTURE = 11L;
 
+  /// <summary>The scene given to the constructor or set through <see cref="Scene"/>; null = the scene being rendered (<see cref="MT.scene"/>).</summary>
   protected IRayScene? scene;
 
   /// <summary>How ray queries are answered: the prepared fast path (default) or the faithful GrCis path.</summary>
@@ -34,6 +38,7 @@ public class RayCasting : IImageFunction
 
   [NonSerialized] readonly bool firstHitOverridden;
 
+  /// <summary>A ray caster of scene <paramref name="sc"/> (null: the scene being rendered, <see cref="MT.scene"/>).</summary>
   public RayCasting(IRayScene? sc = null)
   {
     scene = sc;
@@ -158,12 +163,14 @@ public class RayCasting : IImageFunction
     set => scene = value;
   }
 
+  /// <summary>Width of the image in pixels: the camera's (setting it sets the camera's).</summary>
   public virtual double Width
   {
     get => Scene.Camera?.Width ?? 0.0;
     set { if (Scene.Camera != null) Scene.Camera.Width = value; }
   }
 
+  /// <summary>Height of the image in pixels: the camera's (setting it sets the camera's).</summary>
   public virtual double Height
   {
     get => Scene.Camera?.Height ?? 0.0;
@@ -216,6 +223,11 @@ public class RayCasting : IImageFunction
     return hash;
   }
 
+  /// <summary>
+  /// The colour of image point (<paramref name="x"/>, <paramref name="y"/>) (in pixels, from the top left corner): the
+  /// camera's ray through it, its first hit lit directly by every light (no shadows, no secondary rays), or the
+  /// background colour. Returns the hash of the solid, textures and lights (1 when the camera gives no ray).
+  /// </summary>
   public virtual long GetSample(double x, double y, double[] color)
   {
     MT.doubleX = x;
