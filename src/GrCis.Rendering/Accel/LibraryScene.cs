@@ -1,9 +1,9 @@
 using System.Runtime.CompilerServices;
 
-namespace Rendering;
+namespace Rendering.Accel;
 
 /// <summary>
-/// Whether a scene is one of the library's own classes (<see cref="DefaultRayScene"/>, <see cref="AnimatedRayScene"/>),
+/// The prepared Whitted kernel's question whether a scene is one of the library's own classes (<see cref="DefaultRayScene"/>, <see cref="AnimatedRayScene"/>),
 /// whose <see cref="IRayScene"/> members are plain properties: the hot paths read those directly instead of through
 /// the interface. Code compiled without a profile (ReadyToRun images, a render's first moments before tier 1) then makes
 /// no interface call per sample, and tier-1 code needs no type guard. Any other scene (a script's own class) is read
