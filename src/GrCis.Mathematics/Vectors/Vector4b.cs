@@ -240,6 +240,7 @@ public struct Vector4b : IEquatable<Vector4b>
   public override readonly int GetHashCode() => HashCode.Combine(X, Y, Z, W);
   /// <inheritdoc/>
   public override readonly string ToString() => ToString(CultureInfo.CurrentCulture);
-  /// <summary>The components in parentheses, written as <paramref name="formatProvider"/> writes booleans.</summary>
+  /// <summary>The components in parentheses, formatted with <paramref name="formatProvider"/> (each as True or
+  /// False).</summary>
   public readonly string ToString(IFormatProvider formatProvider) => string.Format(formatProvider, "({0}, {1}, {2}, {3})", X, Y, Z, W);
 }
