@@ -81,7 +81,10 @@ public struct BezierCurve
   /// <see cref="CalculateLength(IList{Vector2}, float, float)"/>.</summary>
   public static float CalculateLength(IList<Vector2> points, float precision) => CalculateLength(points, precision, 0f);
 
-  /// <summary>The length of the polyline through the points at t = 0, precision, 2·precision, … 1.</summary>
+  /// <summary>
+  /// The length of the polyline through the points at t = 0, precision, 2·precision, …, up to the first step at or
+  /// past 1: when <paramref name="precision"/> does not divide 1, the last point lies beyond the curve's end (t &gt; 1).
+  /// </summary>
   public static float CalculateLength(IList<Vector2> points, float precision, float parallel)
   {
     float length = 0f;
