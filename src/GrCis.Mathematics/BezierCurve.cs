@@ -14,20 +14,27 @@ public struct BezierCurve
   /// <summary>The sideways offset of the evaluated points; 0 is the curve itself.</summary>
   public float Parallel;
 
+  /// <summary>The control points, in order (the curve's own list).</summary>
   public readonly IList<Vector2> Points => points;
 
+  /// <summary>The curve through a copy of <paramref name="points"/>, with no parallel offset.</summary>
   public BezierCurve(IEnumerable<Vector2> points) : this(0f, points)
   {
   }
 
+  /// <summary>The curve through a copy of <paramref name="points"/>, with no parallel offset.</summary>
   public BezierCurve(params Vector2[] points) : this(0f, (IEnumerable<Vector2>)points)
   {
   }
 
+  /// <summary>The curve through a copy of <paramref name="points"/>, offset sideways by
+  /// <paramref name="parallel"/>.</summary>
   public BezierCurve(float parallel, params Vector2[] points) : this(parallel, (IEnumerable<Vector2>)points)
   {
   }
 
+  /// <summary>The curve through a copy of <paramref name="points"/>, offset sideways by <paramref name="parallel"/>;
+  /// null points throw <see cref="System.ArgumentNullException"/>.</summary>
   public BezierCurve(float parallel, IEnumerable<Vector2> points)
   {
     ArgumentNullException.ThrowIfNull(points);
@@ -35,9 +42,15 @@ public struct BezierCurve
     this.points = new List<Vector2>(points);
   }
 
+  /// <summary>The point at <paramref name="t"/> (0..1), offset by <see cref="Parallel"/>, as
+  /// <see cref="CalculatePoint(IList{Vector2}, float, float)"/>.</summary>
   public readonly Vector2 CalculatePoint(float t) => CalculatePoint(points, t, Parallel);
+  /// <summary>The approximate length, offset by <see cref="Parallel"/>, as
+  /// <see cref="CalculateLength(IList{Vector2}, float, float)"/>.</summary>
   public readonly float CalculateLength(float precision) => CalculateLength(points, precision, Parallel);
 
+  /// <summary>The point at <paramref name="t"/> (0..1) of the curve with control points <paramref name="points"/>, with
+  /// no offset.</summary>
   public static Vector2 CalculatePoint(IList<Vector2> points, float t) => CalculatePoint(points, t, 0f);
 
   /// <summary>The Bernstein sum at <paramref name="t"/> (0..1), moved <paramref name="parallel"/> to the right of the tangent.</summary>
@@ -64,9 +77,14 @@ public struct BezierCurve
     return r;
   }
 
+  /// <summary>The approximate length of the curve with control points <paramref name="points"/>, with no offset, as
+  /// <see cref="CalculateLength(IList{Vector2}, float, float)"/>.</summary>
   public static float CalculateLength(IList<Vector2> points, float precision) => CalculateLength(points, precision, 0f);
 
-  /// <summary>The length of the polyline through the points at t = 0, precision, 2·precision, … 1.</summary>
+  /// <summary>
+  /// The length of the polyline through the points at t = 0, precision, 2·precision, …, up to the first step at or
+  /// past 1: when <paramref name="precision"/> does not divide 1, the last point lies beyond the curve's end (t &gt; 1).
+  /// </summary>
   public static float CalculateLength(IList<Vector2> points, float precision, float parallel)
   {
     float length = 0f;

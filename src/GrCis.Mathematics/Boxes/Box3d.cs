@@ -12,23 +12,29 @@ public struct Box3d : IEquatable<Box3d>, IFormattable
 {
   Vector3d min, max;
 
+  /// <summary>The box with corners <paramref name="min"/> and <paramref name="max"/>, sorted per axis so that Min ≤
+  /// Max.</summary>
   public Box3d(Vector3d min, Vector3d max)
   {
     this.min = Vector3d.ComponentMin(min, max);
     this.max = Vector3d.ComponentMax(min, max);
   }
 
+  /// <summary>The box with corners (minX, minY, minZ) and (maxX, maxY, maxZ), sorted per axis so that Min ≤
+  /// Max.</summary>
   public Box3d(double minX, double minY, double minZ, double maxX, double maxY, double maxZ)
     : this(new Vector3d(minX, minY, minZ), new Vector3d(maxX, maxY, maxZ))
   {
   }
 
+  /// <summary>The corner with the smallest coordinates; setting it above Max on an axis moves Max there too.</summary>
   public Vector3d Min
   {
     readonly get => min;
     set { if (value.X > max.X) max.X = value.X; if (value.Y > max.Y) max.Y = value.Y; if (value.Z > max.Z) max.Z = value.Z; min = value; }
   }
 
+  /// <summary>The corner with the largest coordinates; setting it below Min on an axis moves Min there too.</summary>
   public Vector3d Max
   {
     readonly get => max;
@@ -42,13 +48,19 @@ public struct Box3d : IEquatable<Box3d>, IFormattable
     set { Vector3d c = Center; min = c - value * 0.5; max = c + value * 0.5; }
   }
 
+  /// <summary>Half of <see cref="Size"/>; setting it keeps the centre.</summary>
   public Vector3d HalfSize { readonly get => Size / 2; set => Size = value * 2; }
+  /// <summary>The centre, Min + HalfSize; setting it moves the box without resizing it.</summary>
   public Vector3d Center { readonly get => HalfSize + min; set => Translate(value - Center); }
 
   /// <summary>Strictly inside (boundary excluded), as OpenTK's obsolete one-argument form.</summary>
   public readonly bool Contains(Vector3d point) => ContainsExclusive(point);
+  /// <summary>Whether <paramref name="point"/> is inside the box or on its boundary.</summary>
   public readonly bool ContainsInclusive(Vector3d point) => min.X <= point.X && point.X <= max.X && min.Y <= point.Y && point.Y <= max.Y && min.Z <= point.Z && point.Z <= max.Z;
+  /// <summary>Whether <paramref name="point"/> is strictly inside the box (the boundary excluded).</summary>
   public readonly bool ContainsExclusive(Vector3d point) => min.X < point.X && point.X < max.X && min.Y < point.Y && point.Y < max.Y && min.Z < point.Z && point.Z < max.Z;
+  /// <summary>Whether <paramref name="point"/> is inside the box, the boundary counting when
+  /// <paramref name="boundaryInclusive"/> is true.</summary>
   public readonly bool Contains(Vector3d point, bool boundaryInclusive) => boundaryInclusive ? ContainsInclusive(point) : ContainsExclusive(point);
   /// <summary>Whether the boxes overlap (touching counts), despite the name.</summary>
   public readonly bool Contains(Box3d other) => max.X >= other.min.X && min.X <= other.max.X && max.Y >= other.min.Y && min.Y <= other.max.Y && max.Z >= other.min.Z && min.Z <= other.max.Z;
@@ -57,10 +69,13 @@ public struct Box3d : IEquatable<Box3d>, IFormattable
   public readonly double DistanceToNearestEdge(Vector3d point) =>
     new Vector3d(Math.Max(0.0, Math.Max(min.X - point.X, point.X - max.X)), Math.Max(0.0, Math.Max(min.Y - point.Y, point.Y - max.Y)), Math.Max(0.0, Math.Max(min.Z - point.Z, point.Z - max.Z))).Length;
 
+  /// <summary>Moves both corners by <paramref name="distance"/>.</summary>
   public void Translate(Vector3d distance) { min += distance; max += distance; }
+  /// <summary>A copy moved by <paramref name="distance"/>.</summary>
   public readonly Box3d Translated(Vector3d distance) { Box3d b = this; b.Translate(distance); return b; }
   /// <summary>Scales the corners' offsets from <paramref name="anchor"/> by <paramref name="scale"/>.</summary>
   public void Scale(Vector3d scale, Vector3d anchor) { min = anchor + (min - anchor) * scale; max = anchor + (max - anchor) * scale; }
+  /// <summary>A copy scaled about <paramref name="anchor"/>, as <see cref="Scale(Vector3d, Vector3d)"/>.</summary>
   public readonly Box3d Scaled(Vector3d scale, Vector3d anchor) { Box3d b = this; b.Scale(scale, anchor); return b; }
 
   /// <summary>Grows each side by <paramref name="size"/>; a negative size shrinks, at most to the centre.</summary>
@@ -72,18 +87,28 @@ public struct Box3d : IEquatable<Box3d>, IFormattable
     max = Vector3d.ComponentMax(lo, hi);
   }
 
+  /// <summary>A copy grown on each side by <paramref name="size"/>, as <see cref="Inflate(Vector3d)"/>.</summary>
   public readonly Box3d Inflated(Vector3d size) { Box3d b = this; b.Inflate(size); return b; }
   /// <summary>Grows the box just enough to hold <paramref name="point"/>.</summary>
   public void Extend(Vector3d point) { min = Vector3d.ComponentMin(min, point); max = Vector3d.ComponentMax(max, point); }
+  /// <summary>A copy grown just enough to hold <paramref name="point"/>.</summary>
   public readonly Box3d Extended(Vector3d point) { Box3d b = this; b.Extend(point); return b; }
 
+  /// <summary>Whether the two are equal, as <see cref="Equals(Box3d)"/> compares them.</summary>
   public static bool operator ==(Box3d left, Box3d right) => left.Equals(right);
+  /// <summary>Whether the two differ, the negation of <see cref="Equals(Box3d)"/>.</summary>
   public static bool operator !=(Box3d left, Box3d right) => !left.Equals(right);
+  /// <summary>Whether both corners equal the other's exactly (no tolerance).</summary>
   public readonly bool Equals(Box3d other) => min.Equals(other.min) && max.Equals(other.max);
+  /// <inheritdoc/>
   public override readonly bool Equals(object? obj) => obj is Box3d b && Equals(b);
+  /// <inheritdoc/>
   public override readonly int GetHashCode() => HashCode.Combine(min, max);
+  /// <inheritdoc/>
   public override readonly string ToString() => ToString(null, null);
+  /// <summary>As <see cref="ToString(string, IFormatProvider)"/> with the current culture.</summary>
   public readonly string ToString(string? format) => ToString(format, null);
+  /// <summary>As <see cref="ToString(string, IFormatProvider)"/> with no format.</summary>
   public readonly string ToString(IFormatProvider? formatProvider) => ToString(null, formatProvider);
   /// <summary>"min - max"; the corners are written as their vectors write themselves.</summary>
   public readonly string ToString(string? format, IFormatProvider? formatProvider) =>

@@ -6,11 +6,18 @@ namespace OpenTK.Mathematics;
 // decomposition helpers (translation in the last row, scale as the lengths of the first three rows).
 public partial struct Matrix4
 {
+  /// <summary>Column 0: the X of every row; setting writes it back into the rows.</summary>
   public Vector4 Column0 { readonly get => new(Row0.X, Row1.X, Row2.X, Row3.X); set { Row0.X = value.X; Row1.X = value.Y; Row2.X = value.Z; Row3.X = value.W; } }
+  /// <summary>Column 1: the Y of every row; setting writes it back into the rows.</summary>
   public Vector4 Column1 { readonly get => new(Row0.Y, Row1.Y, Row2.Y, Row3.Y); set { Row0.Y = value.X; Row1.Y = value.Y; Row2.Y = value.Z; Row3.Y = value.W; } }
+  /// <summary>Column 2: the Z of every row; setting writes it back into the rows.</summary>
   public Vector4 Column2 { readonly get => new(Row0.Z, Row1.Z, Row2.Z, Row3.Z); set { Row0.Z = value.X; Row1.Z = value.Y; Row2.Z = value.Z; Row3.Z = value.W; } }
+  /// <summary>Column 3: the W of every row (the projective part under row vectors); setting writes it back into the
+  /// rows.</summary>
   public Vector4 Column3 { readonly get => new(Row0.W, Row1.W, Row2.W, Row3.W); set { Row0.W = value.X; Row1.W = value.Y; Row2.W = value.Z; Row3.W = value.W; } }
+  /// <summary>The main diagonal (M11, M22, …); setting writes it back, leaving the other elements.</summary>
   public Vector4 Diagonal { readonly get => new(Row0.X, Row1.Y, Row2.Z, Row3.W); set { Row0.X = value.X; Row1.Y = value.Y; Row2.Z = value.Z; Row3.W = value.W; } }
+  /// <summary>The trace: the sum of the diagonal elements.</summary>
   public readonly float Trace => Row0.X + Row1.Y + Row2.Z + Row3.W;
   /// <summary>The determinant as OpenTK 3 sums it: 24 products of four elements, in float, left to right.</summary>
   public readonly float Determinant
@@ -56,14 +63,20 @@ public partial struct Matrix4
     Row0 /= d; Row1 /= d; Row2 /= d; Row3 /= d;
   }
 
+  /// <summary>A copy with every element divided by the determinant (OpenTK's "normalisation", see
+  /// <see cref="Normalize()"/>).</summary>
   public readonly Matrix4 Normalized() { Matrix4 m = this; m.Normalize(); return m; }
 
+  /// <summary>The translation: x, y, z of Row3.</summary>
   public readonly Vector3 ExtractTranslation() => Row3.Xyz;
+  /// <summary>The scale along each axis: the lengths of the x, y, z parts of the first three rows.</summary>
   public readonly Vector3 ExtractScale() => new(Row0.Xyz.Length, Row1.Xyz.Length, Row2.Xyz.Length);
   /// <summary>The last column (the projective part under row vectors).</summary>
   public readonly Vector4 ExtractProjection() => Column3;
 
+  /// <summary>A copy with the translation (x, y, z of Row3) set to zero.</summary>
   public readonly Matrix4 ClearTranslation() { Matrix4 m = this; m.Row3.Xyz = Vector3.Zero; return m; }
+  /// <summary>A copy with the last column (the projective part under row vectors) set to zero.</summary>
   public readonly Matrix4 ClearProjection() { Matrix4 m = this; m.Column3 = Vector4.Zero; return m; }
 
   /// <summary>Each of the first three rows made unit length: the rotation (and translation) without the scale.</summary>

@@ -48,16 +48,22 @@ public partial struct Matrix4
   /// <summary>The matrix that, multiplied from the left, makes row i of the product row <c>rowForRow{i}</c> of the right operand.</summary>
   public static Matrix4 CreateSwizzle(int rowForRow0, int rowForRow1, int rowForRow2, int rowForRow3) =>
     Swizzle(Identity, rowForRow0, rowForRow1, rowForRow2, rowForRow3);
+  /// <summary><see cref="CreateSwizzle(int, int, int, int)"/>, with the result written to
+  /// <paramref name="result"/>.</summary>
   public static void CreateSwizzle(int rowForRow0, int rowForRow1, int rowForRow2, int rowForRow3, out Matrix4 result) =>
     result = CreateSwizzle(rowForRow0, rowForRow1, rowForRow2, rowForRow3);
 
   /// <summary>A matrix whose row i is row <c>rowForRow{i}</c> of <paramref name="mat"/> (each 0..3).</summary>
   public static Matrix4 Swizzle(Matrix4 mat, int rowForRow0, int rowForRow1, int rowForRow2, int rowForRow3) =>
     new(mat.Row(rowForRow0), mat.Row(rowForRow1), mat.Row(rowForRow2), mat.Row(rowForRow3));
+  /// <summary><see cref="Swizzle(Matrix4, int, int, int, int)"/>, with the result written to
+  /// <paramref name="result"/>.</summary>
   public static void Swizzle(in Matrix4 mat, int rowForRow0, int rowForRow1, int rowForRow2, int rowForRow3, out Matrix4 result) =>
     result = Swizzle(mat, rowForRow0, rowForRow1, rowForRow2, rowForRow3);
+  /// <summary>Reorders the rows in place, as <see cref="Swizzle(Matrix4, int, int, int, int)"/>.</summary>
   public void Swizzle(int rowForRow0, int rowForRow1, int rowForRow2, int rowForRow3) =>
     this = Swizzle(this, rowForRow0, rowForRow1, rowForRow2, rowForRow3);
+  /// <summary>A copy with its rows reordered, as <see cref="Swizzle(Matrix4, int, int, int, int)"/>.</summary>
   public readonly Matrix4 Swizzled(int rowForRow0, int rowForRow1, int rowForRow2, int rowForRow3) =>
     Swizzle(this, rowForRow0, rowForRow1, rowForRow2, rowForRow3);
 

@@ -25,6 +25,9 @@ public partial struct Quaternion
       MathF.Atan2(2 * (W * Z - X * Y), ww + xx - yy - zz));
   }
 
+  /// <summary><see cref="ToEulerAngles()"/>, written to <paramref name="angles"/>.</summary>
   public readonly void ToEulerAngles(out Vector3 angles) => angles = ToEulerAngles();
+  /// <summary>The Euler angles of <paramref name="q"/>, as <see cref="ToEulerAngles()"/>, written to
+  /// <paramref name="result"/>.</summary>
   public static void ToEulerAngles(in Quaternion q, out Vector3 result) => result = q.ToEulerAngles();
 }

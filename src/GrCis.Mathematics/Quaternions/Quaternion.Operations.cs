@@ -5,19 +5,38 @@ namespace OpenTK.Mathematics;
 // OpenTK 3's static members of the float Quaternion: construction, interpolation and the ref/out twins.
 public partial struct Quaternion
 {
+  /// <summary>The sum, component by component (not a composition of rotations).</summary>
   public static Quaternion Add(Quaternion left, Quaternion right) => left + right;
+  /// <summary><see cref="Add(Quaternion, Quaternion)"/>, with the result written to
+  /// <paramref name="result"/>.</summary>
   public static void Add(in Quaternion left, in Quaternion right, out Quaternion result) => result = left + right;
+  /// <summary>The difference, component by component.</summary>
   public static Quaternion Sub(Quaternion left, Quaternion right) => left - right;
+  /// <summary><see cref="Sub(Quaternion, Quaternion)"/>, with the result written to
+  /// <paramref name="result"/>.</summary>
   public static void Sub(in Quaternion left, in Quaternion right, out Quaternion result) => result = left - right;
+  /// <summary>The Hamilton product <c>left * right</c>: rotating by it rotates by right first, then left.</summary>
   public static Quaternion Multiply(Quaternion left, Quaternion right) => left * right;
+  /// <summary><see cref="Multiply(Quaternion, Quaternion)"/>, with the result written to
+  /// <paramref name="result"/>.</summary>
   public static void Multiply(in Quaternion left, in Quaternion right, out Quaternion result) => result = left * right;
+  /// <summary>Every component multiplied by the scalar.</summary>
   public static Quaternion Multiply(Quaternion quaternion, float scale) => quaternion * scale;
+  /// <summary><see cref="Multiply(Quaternion, float)"/>, with the result written to
+  /// <paramref name="result"/>.</summary>
   public static void Multiply(in Quaternion quaternion, float scale, out Quaternion result) => result = quaternion * scale;
+  /// <summary>The conjugate (−x, −y, −z, w); for a unit quaternion, the inverse rotation.</summary>
   public static Quaternion Conjugate(Quaternion q) => new(-q.X, -q.Y, -q.Z, q.W);
+  /// <summary><see cref="Conjugate(Quaternion)"/>, with the result written to <paramref name="result"/>.</summary>
   public static void Conjugate(in Quaternion q, out Quaternion result) => result = Conjugate(q);
+  /// <summary>The inverse, as <see cref="Inverted()"/>: the conjugate over the squared length; a zero quaternion gives
+  /// itself.</summary>
   public static Quaternion Invert(Quaternion q) => q.Inverted();
+  /// <summary><see cref="Invert(Quaternion)"/>, with the result written to <paramref name="result"/>.</summary>
   public static void Invert(in Quaternion q, out Quaternion result) => result = q.Inverted();
+  /// <summary>A unit-length copy of the quaternion, as <see cref="Normalized()"/>.</summary>
   public static Quaternion Normalize(Quaternion q) => q.Normalized();
+  /// <summary><see cref="Normalize(Quaternion)"/>, with the result written to <paramref name="result"/>.</summary>
   public static void Normalize(in Quaternion q, out Quaternion result) => result = q.Normalized();
 
   /// <summary>Rotation by <paramref name="angle"/> radians about <paramref name="axis"/> (identity for a zero axis).</summary>
@@ -28,8 +47,13 @@ public partial struct Quaternion
     return new Quaternion(axis.Normalized() * MathF.Sin(0.5f * angle), MathF.Cos(0.5f * angle)).Normalized();
   }
 
+  /// <summary>The same as the constructor <see cref="Quaternion(float, float, float)"/>: the angles in radians are the
+  /// rotations about X, Y and Z, multiplied as qX · qY · qZ.</summary>
   public static Quaternion FromEulerAngles(float pitch, float yaw, float roll) => new(pitch, yaw, roll);
+  /// <summary>The same as <see cref="Quaternion(Vector3)"/>: rotations in radians about X, Y and Z (the vector's x, y,
+  /// z), multiplied as qX · qY · qZ.</summary>
   public static Quaternion FromEulerAngles(Vector3 eulerAngles) => new(eulerAngles);
+  /// <summary><see cref="FromEulerAngles(Vector3)"/>, with the result written to <paramref name="result"/>.</summary>
   public static void FromEulerAngles(in Vector3 eulerAngles, out Quaternion result) => result = new Quaternion(eulerAngles);
 
   /// <summary>
@@ -37,6 +61,7 @@ public partial struct Quaternion
   /// as <see cref="Quaterniond.FromMatrix(Matrix3d)"/> is; computed in double and rounded.
   /// </summary>
   public static Quaternion FromMatrix(Matrix3 matrix) => (Quaternion)Quaterniond.FromMatrix(matrix);
+  /// <summary><see cref="FromMatrix(Matrix3)"/>, with the result written to <paramref name="result"/>.</summary>
   public static void FromMatrix(in Matrix3 matrix, out Quaternion result) => result = FromMatrix(matrix);
 
   /// <summary>

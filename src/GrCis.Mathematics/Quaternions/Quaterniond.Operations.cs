@@ -10,13 +10,25 @@ public partial struct Quaterniond
   {
   }
 
+  /// <summary>Every component multiplied by the scalar.</summary>
   public static Quaterniond Multiply(Quaterniond quaternion, double scale) => quaternion * scale;
+  /// <summary><see cref="Multiply(Quaterniond, double)"/>, with the result written to
+  /// <paramref name="result"/>.</summary>
   public static void Multiply(in Quaterniond quaternion, double scale, out Quaterniond result) => result = quaternion * scale;
+  /// <summary><see cref="Multiply(Quaterniond, Quaterniond)"/>, with the result written to
+  /// <paramref name="result"/>.</summary>
   public static void Multiply(in Quaterniond left, in Quaterniond right, out Quaterniond result) => result = left * right;
+  /// <summary><see cref="Add(Quaterniond, Quaterniond)"/>, with the result written to
+  /// <paramref name="result"/>.</summary>
   public static void Add(in Quaterniond left, in Quaterniond right, out Quaterniond result) => result = left + right;
+  /// <summary><see cref="Sub(Quaterniond, Quaterniond)"/>, with the result written to
+  /// <paramref name="result"/>.</summary>
   public static void Sub(in Quaterniond left, in Quaterniond right, out Quaterniond result) => result = left - right;
+  /// <summary><see cref="Conjugate(Quaterniond)"/>, with the result written to <paramref name="result"/>.</summary>
   public static void Conjugate(in Quaterniond q, out Quaterniond result) => result = Conjugate(q);
+  /// <summary><see cref="Invert(Quaterniond)"/>, with the result written to <paramref name="result"/>.</summary>
   public static void Invert(in Quaterniond q, out Quaterniond result) => result = q.Inverted();
+  /// <summary><see cref="Normalize(Quaterniond)"/>, with the result written to <paramref name="result"/>.</summary>
   public static void Normalize(in Quaterniond q, out Quaterniond result) => result = q.Normalized();
 
   /// <summary>
@@ -58,5 +70,6 @@ public partial struct Quaterniond
     return new Quaterniond((m.M13 + m.M31) / t, (m.M23 + m.M32) / t, 0.25 * t, (m.M12 - m.M21) / t);
   }
 
+  /// <summary><see cref="FromMatrix(Matrix3d)"/>, with the result written to <paramref name="result"/>.</summary>
   public static void FromMatrix(in Matrix3d matrix, out Quaterniond result) => result = FromMatrix(matrix);
 }
