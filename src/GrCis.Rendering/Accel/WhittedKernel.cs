@@ -74,7 +74,7 @@ internal sealed class WhittedKernel
 
     IRayScene sc = f.Scene;
     Vector3d direction = p1;
-    Intersection? i = f.FirstHitAt(scratch, depth, p0, direction);
+    Intersection? i = FirstHit(scratch, depth, p0, direction);
     long hash;
     bool library = LibraryScene.Is(sc);
     if (i == null)
@@ -260,12 +260,36 @@ internal sealed class WhittedKernel
     return hash * HASH_LIGHT + source.GetHashCode();
   }
 
+  /// <summary><see cref="RayCasting.FirstHitAt(int, Vector3d, Vector3d)"/> of the function, the library's scene read directly.</summary>
+  Intersection? FirstHit(ShadingScratch scratch, int depth, Vector3d p0, Vector3d p1)
+  {
+    RayTracing f = function;
+    PreparedScene? ps;
+    if (f.firstHitOverridden || !f.ReuseIntersections || (ps = Prepared(scratch)) == null)
+      return f.FirstHitAt(scratch, depth, p0, p1);
+    scratch.Rays++;
+    return ps.FirstHit(p0, p1, scratch.Intersection(depth), ReferenceEquals(ps, f.surfaceOnly));
+  }
+
   /// <summary><see cref="RayTracing"/>'s shadow query (the kernel serves only functions that keep it), counting the ray.</summary>
   bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
   {
     scratch.Rays++;
-    PreparedScene? ps = function.PreparedFor(scratch);
+    PreparedScene? ps = Prepared(scratch);
     return ps != null ? ps.AnyHit(p0, dir) : function.Lists.AnyHit(p0, dir);
+  }
+
+  /// <summary>
+  /// <see cref="RayCasting.PreparedFor"/> of the function, the library's scene read directly: the snapshot this thread
+  /// used last when it is still the scene's, else the render's.
+  /// </summary>
+  PreparedScene? Prepared(ShadingScratch scratch)
+  {
+    RayTracing f = function;
+    IRayScene sc = f.Scene;
+    IIntersectable? source = LibraryScene.Is(sc) ? Unsafe.As<DefaultRayScene>(sc).Intersectable : sc.Intersectable;
+    PreparedScene? ps = scratch.LastPrepared;
+    return ps != null && ps.Source == source ? ps : f.PreparedFor(scratch);
   }
 
   /// <summary>

@@ -36,7 +36,7 @@ public class RayCasting : IImageFunction
   /// </summary>
   public bool ReuseIntersections = true;
 
-  [NonSerialized] readonly bool firstHitOverridden;
+  [NonSerialized] internal readonly bool firstHitOverridden;
 
   /// <summary>A ray caster of scene <paramref name="sc"/> (null: the scene being rendered, <see cref="MT.scene"/>).</summary>
   public RayCasting(IRayScene? sc = null)
@@ -78,7 +78,7 @@ public class RayCasting : IImageFunction
   // What this function reads from the hits of the snapshot made by Prepare, decided there once: HitData.Surface
   // when only this library's shading reads them (LibraryShadingOnly, for that scene's lights), else everything.
   // A snapshot built on first use, for another scene, gets HitData.All.
-  [NonSerialized] PreparedScene? surfaceOnly;
+  [NonSerialized] internal PreparedScene? surfaceOnly;
 
   /// <summary>
   /// What this image function reads from the hits it shades (<see cref="HitData"/>): <see cref="HitData.Surface"/>
