@@ -45,8 +45,9 @@ public class AnimatedRayScene : DefaultRayScene, ITimeDependent
 
     // Objects that look up their values through MT.scene (as GrCis nodes do) must find this
     // scene even when time is set outside a render worker.
-    IRayScene? previous = MT.scene;
-    MT.scene = this;
+    Execution.WorkerContext worker = Execution.WorkerContext.Current;
+    IRayScene? previous = WorkerScene.Of(worker);
+    WorkerScene.Set(worker, this);
     try
     {
       if (Animator != null)
@@ -64,7 +65,7 @@ public class AnimatedRayScene : DefaultRayScene, ITimeDependent
     }
     finally
     {
-      MT.scene = previous;
+      WorkerScene.Set(worker, previous);
     }
   }
 
