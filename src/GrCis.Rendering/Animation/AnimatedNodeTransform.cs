@@ -60,7 +60,7 @@ public class AnimatedNodeTransform : AnimatedCSGInnerNode
   /// <summary>Reads the offset and rotation from the scene's animator (when there is one), rebuilds <see cref="DefaultSceneNode.ToParent"/>, then passes the time on as the base class does.</summary>
   protected override void setTime(double newTime)
   {
-    if (MT.scene?.Animator is ITimeDependentProperty animator)
+    if (WorkerScene.Of(Execution.WorkerContext.Current)?.Animator is ITimeDependentProperty animator)
     {
       Vector3d v = Vector3d.Zero;
       Quaterniond q = Quaterniond.Identity;

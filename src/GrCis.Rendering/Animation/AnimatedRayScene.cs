@@ -45,8 +45,9 @@ public class AnimatedRayScene : DefaultRayScene, ITimeDependent
 
     // Objects that look up their values through MT.scene (as GrCis nodes do) must find this
     // scene even when time is set outside a render worker.
-    IRayScene? previous = MT.scene;
-    MT.scene = this;
+    Execution.WorkerContext worker = Execution.WorkerContext.Current;
+    IRayScene? previous = WorkerScene.Of(worker);
+    WorkerScene.Set(worker, this);
     try
     {
       if (Animator != null)
@@ -64,12 +65,24 @@ public class AnimatedRayScene : DefaultRayScene, ITimeDependent
     }
     finally
     {
-      MT.scene = previous;
+      WorkerScene.Set(worker, previous);
     }
   }
 
   /// <summary>True when any part would change with time (the animator, geometry, background, camera or a light).</summary>
-  public virtual bool HasTimeDependentParts => SceneCloner.HasTimeDependentParts(this);
+  public virtual bool HasTimeDependentParts => AnyTimeDependentPart(this);
+
+  /// <summary>True when any part of <paramref name="scene"/> would change with time (the animator, geometry, background, camera or a light).</summary>
+  internal static bool AnyTimeDependentPart(IRayScene scene)
+  {
+    if (scene.Animator != null || scene.Intersectable is ITimeDependent || scene.Background is ITimeDependent || scene.Camera is ITimeDependent)
+      return true;
+    if (scene.Sources != null)
+      foreach (ILightSource light in scene.Sources)
+        if (light is ITimeDependent)
+          return true;
+    return false;
+  }
 
   /// <summary>A scene at the same time with its own copies of the time-dependent parts; the rest is shared.</summary>
   public virtual object Clone()

@@ -7,7 +7,7 @@ namespace Rendering.Execution;
 
 /// <summary>
 /// What one render carries besides its options: the observer its rays are reported to, and the rays and
-/// hits its threads counted. A render's workers shade under it (<see cref="WorkerContext.Begin"/>), and any thread
+/// hits its threads counted. A render's workers shade under it (<c>WorkerContext.Begin</c>), and any thread
 /// between <see cref="Enter"/> and the scope's end; GrCis's own API has no context parameter, so the shading code
 /// finds it through the thread's <see cref="WorkerContext"/>.
 /// </summary>
@@ -42,7 +42,15 @@ public sealed class RenderContext
   /// <see cref="WorkerContext"/> takes a shading scratch of this render (its observer, noise and prepared scenes)
   /// and gets its previous one back at the end.
   /// </summary>
-  public Scope Enter() => WorkerContext.Current.EnterRender(this);
+  public Scope Enter()
+  {
+    WorkerContext worker = WorkerContext.Current;
+    ShadingScratch previous = ShadingScratch.Of(worker);
+    var s = new ShadingScratch();
+    s.UseRender(this);
+    ShadingScratch.Set(worker, s);
+    return new Scope(this, worker, previous, s);
+  }
 
   /// <summary>A thread's time under a context: on disposal its counts are added and the previous scratch restored.</summary>
   public readonly struct Scope : IDisposable
@@ -68,7 +76,7 @@ public sealed class RenderContext
       // The enclosing scope's count includes what was traced inside (same thread, nested).
       previous.Rays += scratch.Rays;
       previous.Hits += scratch.Hits;
-      worker.Scratch = previous;
+      ShadingScratch.Set(worker, previous);
     }
   }
 }

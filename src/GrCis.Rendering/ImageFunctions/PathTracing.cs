@@ -65,22 +65,34 @@ public class PathTracing : MonteCarloRayTracing
     MirrorExponent = p.MirrorExponent;
   }
 
+  /// <summary>What a path tracer keeps per worker (<see cref="WorkerContext"/>): the lights of the scene it renders, rebuilt when the scene, its lights, its snapshot or the frame changes, and the rays of the path being observed.</summary>
+  sealed class WorkerState
+  {
+    public SceneLights? Lights;
+    public object? Scene, Sources, Root, Snapshot;
+    public int Frame;
+    public (RayKind Kind, int Depth, Vector3d Origin, Vector3d Direction, Intersection? Hit)[]? ObservedRays;
+  }
+
+  static readonly WorkerSlot<WorkerState> workerState = new(() => new WorkerState());
+
   /// <summary>The lights of the scene the worker renders, kept in its context and rebuilt when the scene, its lights, its snapshot or the frame changes.</summary>
   SceneLights LightsOf(WorkerContext context, IRayScene sc, int bands)
   {
     IIntersectable? root = sc.Intersectable;
-    PreparedScene? snapshot = PreparedFor(context.Scratch);
+    PreparedScene? snapshot = PreparedFor(ShadingScratch.Of(context));
     int frame = context.Sampler.Frame;
     object? sources = sc.Sources;
-    if (context.Lights is not SceneLights lights || lights.SamplesEnvironment != EnvironmentSampling || !ReferenceEquals(context.LightsScene, sc) || !ReferenceEquals(context.LightsSources, sources) ||
-        !ReferenceEquals(context.LightsRoot, root) || !ReferenceEquals(context.LightsSnapshot, snapshot) || context.LightsFrame != frame)
+    WorkerState w = context.Get(workerState);
+    if (w.Lights is not SceneLights lights || lights.SamplesEnvironment != EnvironmentSampling || !ReferenceEquals(w.Scene, sc) || !ReferenceEquals(w.Sources, sources) ||
+        !ReferenceEquals(w.Root, root) || !ReferenceEquals(w.Snapshot, snapshot) || w.Frame != frame)
     {
-      context.Lights = lights = SceneLights.Of(sc, root, bands, EnvironmentSampling);
-      context.LightsScene = sc;
-      context.LightsSources = sources;
-      context.LightsRoot = root;
-      context.LightsSnapshot = snapshot;
-      context.LightsFrame = frame;
+      w.Lights = lights = SceneLights.Of(sc, root, bands, EnvironmentSampling);
+      w.Scene = sc;
+      w.Sources = sources;
+      w.Root = root;
+      w.Snapshot = snapshot;
+      w.Frame = frame;
     }
     return lights;
   }
@@ -89,7 +101,7 @@ public class PathTracing : MonteCarloRayTracing
   public override long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
   {
     WorkerContext context = WorkerContext.Current;
-    ShadingScratch scratch = context.Scratch;
+    ShadingScratch scratch = ShadingScratch.Of(context);
     Sampler sampler = context.Sampler;
     IRayScene sc = Scene;
     SceneLights lights = LightsOf(context, sc, color.Length);
@@ -220,9 +232,10 @@ public class PathTracing : MonteCarloRayTracing
   /// <summary>Ray <paramref name="index"/> of the path being observed (kept in the worker's context, ended in reverse order when the path is done).</summary>
   static ref (RayKind Kind, int Depth, Vector3d Origin, Vector3d Direction, Intersection? Hit) Observed(WorkerContext context, int index)
   {
-    if (context.ObservedRays == null || index >= context.ObservedRays.Length)
-      Array.Resize(ref context.ObservedRays, Math.Max(16, 2 * index));
-    return ref context.ObservedRays![index];
+    WorkerState w = context.Get(workerState);
+    if (w.ObservedRays == null || index >= w.ObservedRays.Length)
+      Array.Resize(ref w.ObservedRays, Math.Max(16, 2 * index));
+    return ref w.ObservedRays![index];
   }
 
   /// <summary>

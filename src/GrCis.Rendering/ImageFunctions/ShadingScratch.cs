@@ -14,8 +14,16 @@ internal sealed class ShadingScratch
   public static ShadingScratch Current
   {
     [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-    get => Execution.WorkerContext.Current.Scratch;
+    get => Execution.WorkerContext.Current.Get(slot);
   }
+
+  static readonly Execution.WorkerSlot<ShadingScratch> slot = new(() => new ShadingScratch());
+
+  /// <summary>The shading scratch of <paramref name="worker"/>.</summary>
+  public static ShadingScratch Of(Execution.WorkerContext worker) => worker.Get(slot);
+
+  /// <summary>Makes <paramref name="scratch"/> the shading scratch of <paramref name="worker"/>.</summary>
+  public static void Set(Execution.WorkerContext worker, ShadingScratch scratch) => worker.Set(slot, scratch);
 
   /// <summary>Shades for <paramref name="render"/>: its observer, noise estimate and prepared scenes.</summary>
   public void UseRender(Execution.RenderContext render)

@@ -43,7 +43,7 @@ public class PointLightSource : ILightSource
     if (dim == null || dim.Length < 3)
       return intensity;
     double factor = 1.0 / (dim[0] + distance * (dim[1] + distance * dim[2]));
-    double[] result = Execution.WorkerContext.Current.LightBuffer(this, intensity.Length);
+    double[] result = Execution.WorkerContext.Current.Get(buffers).For(this, intensity.Length);
     for (int i = 0; i < result.Length; i++)
       result[i] = intensity[i] * factor;
     return result;
@@ -64,5 +64,41 @@ public class PointLightSource : ILightSource
     if (Vector3d.Dot(dir, intersection.Normal) <= 0.0)
       return null;
     return intensity;
+  }
+
+  /// <summary>The worker's result buffers of attenuated lights (<see cref="Attenuated"/>).</summary>
+  static readonly Execution.WorkerSlot<AttenuationBuffers> buffers = new(() => new AttenuationBuffers());
+
+  /// <summary>A worker's result buffers of attenuated lights, one per light: few lights, a linear search.</summary>
+  sealed class AttenuationBuffers
+  {
+    object?[] owners = new object?[4];
+    double[]?[] values = new double[]?[4];
+
+    /// <summary>The buffer of <paramref name="bands"/> values for light <paramref name="owner"/>.</summary>
+    public double[] For(object owner, int bands)
+    {
+      int i = 0;
+      for (; i < owners.Length && owners[i] != null; i++)
+        if (ReferenceEquals(owners[i], owner))
+        {
+          double[] b = values[i]!;
+          return b.Length == bands ? b : values[i] = new double[bands];
+        }
+      if (i == owners.Length && i >= 64)
+      {
+        // A long-lived thread meets new lights with every scene: forget the old ones (their buffers stay valid for their callers).
+        System.Array.Clear(owners);
+        System.Array.Clear(values);
+        i = 0;
+      }
+      else if (i == owners.Length)
+      {
+        System.Array.Resize(ref owners, 2 * i);
+        System.Array.Resize(ref values, 2 * i);
+      }
+      owners[i] = owner;
+      return values[i] = new double[bands];
+    }
   }
 }

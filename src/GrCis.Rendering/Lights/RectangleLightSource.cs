@@ -48,14 +48,15 @@ public class RectangleLightSource : PointLightSource
   /// <summary>Position of the light point used by the current sample, as (u, v) in [0,1)².</summary>
   void SampleUV(out double u, out double v)
   {
-    if (MT.total <= 1)
+    Execution.WorkerContext context = Execution.WorkerContext.Current;
+    if (context.Sampler.Count <= 1)
     {
-      RandomJames rnd = MT.rnd;
+      RandomJames rnd = context.Rnd ??= new RandomJames();
       u = rnd.UniformNumber();
       v = rnd.UniformNumber();
       return;
     }
-    Execution.WorkerContext.Current.Sampler.Get2D(SampleDimension.RectangleLight, Instance(), out u, out v);
+    context.Sampler.Get2D(SampleDimension.RectangleLight, Instance(), out u, out v);
   }
 
   /// <summary>This light's instance of <see cref="SampleDimension.RectangleLight"/>: from its corner and edges, the same in every clone and run.</summary>

@@ -71,6 +71,9 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
   /// <summary>Whether the BVH has been built (the faithful path never builds it).</summary>
   internal bool HasBvh => Volatile.Read(ref bvh) != null;
 
+  /// <summary>The crossings a query collects, per worker (one query at a time per worker).</summary>
+  static readonly Execution.WorkerSlot<List<MeshHit>> meshHits = new(() => new List<MeshHit>(16));
+
   /// <summary>
   /// Every crossing of the line <c>p0 + t * p1</c> (local coordinates) with a triangle, sorted by <see cref="Intersection.T"/>
   /// (one record for a crossing through a shared edge or vertex); in <see cref="ShellMode"/> each crossing is followed by
@@ -79,7 +82,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
   public override LinkedList<Intersection>? Intersect(Vector3d p0, Vector3d p1)
   {
     Execution.WorkerContext context = Execution.WorkerContext.Current;
-    List<MeshHit> hits = context.MeshHits ??= new List<MeshHit>(16);
+    List<MeshHit> hits = context.Get(meshHits);
     hits.Clear();
     double eps;
     if (ExhaustiveSearch.Active)

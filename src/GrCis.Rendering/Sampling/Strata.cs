@@ -30,7 +30,7 @@ public static class Strata
   public static uint Dimension(SampleDimension purpose, int instance) => Dimension((uint)purpose, instance);
 
   /// <summary>A number of [0,1) for the current sample of <paramref name="dimension"/> (stratified over the pixel's samples).</summary>
-  public static double Sample1D(uint dimension) => Sample1D(MT.rank, MT.total, Pattern(dimension));
+  public static double Sample1D(uint dimension) => Sample1D(Execution.WorkerContext.Current.Sampler.Index, Execution.WorkerContext.Current.Sampler.Count, Pattern(dimension));
 
   /// <summary>Sample <paramref name="rank"/> of <paramref name="total"/> of the one-dimensional pattern <paramref name="pattern"/>.</summary>
   public static double Sample1D(int rank, int total, uint pattern)

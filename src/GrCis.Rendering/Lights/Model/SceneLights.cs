@@ -39,7 +39,7 @@ internal sealed class SceneLights
     if (scene.Sources is IEnumerable<ILightSource> sources)
       foreach (ILightSource source in sources)
       {
-        if (source == null || Accel.LibraryTypes.IsAmbientLight(source))
+        if (source == null || Accel.SubclassCheck.OverridesNothing(source, typeof(AmbientLightSource)))
           continue;
         deltas.Add((ILight?)GrCisLight.For(source) ?? new CustomLight(source));
       }

@@ -115,8 +115,8 @@ public static class MT
   /// <summary>What this thread is rendering (for components that need it).</summary>
   public static IRayScene? scene
   {
-    get => WorkerContext.Current.Scene;
-    set => WorkerContext.Current.Scene = value;
+    get => WorkerScene.Of(WorkerContext.Current);
+    set => WorkerScene.Set(WorkerContext.Current, value);
   }
 
   /// <summary>The image function this thread is rendering with; <see cref="ImageSynthesizer"/> uses it when its own <see cref="ImageSynthesizer.ImageFunction"/> is null.</summary>

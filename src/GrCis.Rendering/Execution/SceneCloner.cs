@@ -43,12 +43,6 @@ public static class SceneCloner
   public static bool HasTimeDependentParts(IRayScene scene)
   {
     ArgumentNullException.ThrowIfNull(scene);
-    if (scene.Animator != null || scene.Intersectable is ITimeDependent || scene.Background is ITimeDependent || scene.Camera is ITimeDependent)
-      return true;
-    if (scene.Sources != null)
-      foreach (ILightSource light in scene.Sources)
-        if (light is ITimeDependent)
-          return true;
-    return false;
+    return AnimatedRayScene.AnyTimeDependentPart(scene);
   }
 }

@@ -88,7 +88,7 @@ internal sealed class EmitterSet
   {
     if (node is CSGInnerNode csg && csg.Operation != SetOperation.Union)
       return;   // an intersection or difference may cut the surface: leave it to the rays that hit it
-    if (node is Plane plane && !plane.Triangle && LibraryTypes.HasPlaneGeometry(plane) &&
+    if (node is Plane plane && !plane.Triangle && SubclassCheck.KeepsGeometry(plane, typeof(Plane)) &&
         double.IsFinite(plane.XMin) && double.IsFinite(plane.XMax) && double.IsFinite(plane.YMin) && double.IsFinite(plane.YMax) &&
         EmissionOf(plane) is Rgb radiance)
     {
@@ -100,7 +100,7 @@ internal sealed class EmitterSet
       if (Vector3d.Cross(b - a, c - a).LengthSquared > 0.0)
         found.Add((plane, new EmissiveRectangle(a, b - a, c - a, normal, radiance)));
     }
-    else if (node is Sphere sphere && LibraryTypes.HasSphereGeometry(sphere) && EmissionOf(sphere) is Rgb glow &&
+    else if (node is Sphere sphere && SubclassCheck.KeepsGeometry(sphere, typeof(Sphere)) && EmissionOf(sphere) is Rgb glow &&
              Similarity(sphere.ToWorld(), out double scale))
     {
       Vector3d centre = Vector3d.TransformPosition(Vector3d.Zero, sphere.ToWorld());
