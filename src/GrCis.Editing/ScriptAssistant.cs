@@ -63,29 +63,16 @@ public sealed class ScriptAssistant : IDisposable
   public async Task<CompletionResult> CompleteAsync(string source, int position, int described = DescribedCompletions, CancellationToken cancel = default)
   {
     CheckPosition(source, position);
-    Document document = At(source);
-    CompletionService service = CompletionService.GetService(document)
-      ?? throw new InvalidOperationException("Roslyn's C# completion service is not available (Microsoft.CodeAnalysis.CSharp.Features missing).");
-    CompletionList list = await service.GetCompletionsAsync(document, position, cancellationToken: cancel).ConfigureAwait(false);
-    TextSpan span = list.Span;
-    string typed = source.Substring(span.Start, Math.Max(0, Math.Min(position, span.End) - span.Start));
-    var ranked = new List<(int Rank, CompletionItem Item)>();
-    foreach (CompletionItem item in list.ItemsList)
-    {
-      int rank = CompletionRanking.Rank(item.FilterText, typed);
-      if (rank >= 0)
-        ranked.Add((rank, item));
-    }
+    Candidates found = await CandidatesAsync(source, position, cancel).ConfigureAwait(false);
     var entries = new List<CompletionEntry>();
-    foreach ((int _, CompletionItem item) in ranked.OrderBy(r => r.Rank).ThenBy(r => r.Item.SortText, StringComparer.OrdinalIgnoreCase)
-               .ThenBy(r => r.Item.DisplayText, StringComparer.Ordinal).Take(MaxCompletions))
+    foreach (Candidate candidate in found.Ranked.Take(MaxCompletions))
     {
       string? detail = null, documentation = null;
       if (entries.Count < described)
-        (detail, documentation) = Split(await service.GetDescriptionAsync(document, item, cancel).ConfigureAwait(false));
-      entries.Add(new CompletionEntry(Label(item), Kind(item.Tags), detail, documentation));
+        (detail, documentation) = await DescribeAsync(found, candidate, cancel).ConfigureAwait(false);
+      entries.Add(new CompletionEntry(candidate.Label, candidate.Kind, detail, documentation));
     }
-    return new CompletionResult(span.Start, span.End, entries);
+    return new CompletionResult(found.Span.Start, found.Span.End, entries);
   }
 
   /// <summary>The signature and documentation of the completion entry <paramref name="label"/> offered at <paramref name="position"/> (for an entry listed undescribed).</summary>
@@ -93,16 +80,71 @@ public sealed class ScriptAssistant : IDisposable
   {
     CheckPosition(source, position);
     ArgumentNullException.ThrowIfNull(label);
+    Candidates found = await CandidatesAsync(source, position, cancel).ConfigureAwait(false);
+    Candidate? candidate = found.All.FirstOrDefault(c => c.Label == label);
+    if (candidate is null)
+      return null;
+    (string? detail, string? documentation) = await DescribeAsync(found, candidate, cancel).ConfigureAwait(false);
+    return new CompletionEntry(label, candidate.Kind, detail, documentation);
+  }
+
+  /// <summary>An entry: Roslyn's item, or a context key (<c>PropertyName.CTX_WIDTH</c>) offered where the context dictionary takes one.</summary>
+  sealed record Candidate(string Label, string Kind, CompletionItem? Item, IFieldSymbol? Key);
+
+  /// <summary>Every entry offered at a position, and those matching the typed word, best first.</summary>
+  sealed record Candidates(Document Document, CompletionService Service, TextSpan Span, IReadOnlyList<Candidate> All, IReadOnlyList<Candidate> Ranked);
+
+  async Task<Candidates> CandidatesAsync(string source, int position, CancellationToken cancel)
+  {
     Document document = At(source);
-    CompletionService? service = CompletionService.GetService(document);
-    if (service is null)
-      return null;
+    SyntaxNode root = (await document.GetSyntaxRootAsync(cancel).ConfigureAwait(false))!;
+    // A name typed at the end of a line that the parser joins with the next line into a declaration: end its
+    // statement there, so the word is what it is as typed, an expression (offsets before it are unchanged).
+    int end = StatementEnds.Before(root, position);
+    if (end >= 0)
+    {
+      document = At(source.Insert(end, ";"));
+      root = (await document.GetSyntaxRootAsync(cancel).ConfigureAwait(false))!;
+    }
+    CompletionService service = CompletionService.GetService(document)
+      ?? throw new InvalidOperationException("Roslyn's C# completion service is not available (Microsoft.CodeAnalysis.CSharp.Features missing).");
     CompletionList list = await service.GetCompletionsAsync(document, position, cancellationToken: cancel).ConfigureAwait(false);
-    CompletionItem? item = list.ItemsList.FirstOrDefault(i => Label(i) == label);
-    if (item is null)
-      return null;
-    (string? detail, string? documentation) = Split(await service.GetDescriptionAsync(document, item, cancel).ConfigureAwait(false));
-    return new CompletionEntry(label, Kind(item.Tags), detail, documentation);
+    CompletionBoosts boosts = CompletionBoosts.At(root, position);
+    TextSpan span = list.Span;
+    if (list.ItemsList.Count == 0)
+    {
+      // Roslyn's empty list has no span: the word at the caret is what an entry would replace.
+      SyntaxToken word = position > 0 ? root.FindToken(position - 1) : default;
+      span = word.IsKind(SyntaxKind.IdentifierToken) && word.Span.End >= position ? word.Span : new TextSpan(position, 0);
+    }
+    string typed = source.Substring(span.Start, Math.Max(0, Math.Min(position, span.End) - span.Start));
+    var all = new List<Candidate>();
+    foreach (CompletionItem item in list.ItemsList)
+      all.Add(new Candidate(Label(item), Kind(item.Tags), item, null));
+    if (boosts.OffersKeys && await document.Project.GetCompilationAsync(cancel).ConfigureAwait(false) is { } compilation)
+      foreach (IFieldSymbol key in CompletionBoosts.Keys(compilation))
+        all.Add(new Candidate(CompletionBoosts.KeyClass + "." + key.Name, "constant", null, key));
+    var ranked = new List<(int Rank, int Tier, int KindTier, bool Preselected, int Uses, Candidate Candidate)>();
+    foreach (Candidate c in all)
+    {
+      string name = c.Item?.FilterText ?? c.Label;
+      int rank = CompletionRanking.Rank(name, typed);
+      if (c.Key is not null && CompletionRanking.Rank(c.Key.Name, typed) is int keyRank and >= 0 && (rank < 0 || keyRank < rank))
+        rank = keyRank; // "CTX_W" finds PropertyName.CTX_WIDTH
+      if (rank >= 0)
+        ranked.Add((rank, boosts.Tier(name), boosts.KindTier(c.Kind), c.Item is not null && CompletionBoosts.Preselected(c.Item), boosts.Uses(c.Key?.Name ?? name), c));
+    }
+    List<Candidate> best = ranked.OrderBy(r => r.Rank).ThenBy(r => r.Tier).ThenByDescending(r => r.Preselected).ThenBy(r => r.KindTier).ThenByDescending(r => r.Uses)
+      .ThenBy(r => r.Candidate.Item?.SortText ?? r.Candidate.Label, StringComparer.OrdinalIgnoreCase)
+      .ThenBy(r => r.Candidate.Label, StringComparer.Ordinal).Select(r => r.Candidate).ToList();
+    return new Candidates(document, service, span, all, best);
+  }
+
+  static async Task<(string? Detail, string? Documentation)> DescribeAsync(Candidates found, Candidate candidate, CancellationToken cancel)
+  {
+    if (candidate.Key is { } key)
+      return (key.ToDisplayString(SymbolDisplayFormat.CSharpShortErrorMessageFormat) + " = \"" + key.ConstantValue + "\"", DocComments.Summary(key));
+    return Split(await found.Service.GetDescriptionAsync(found.Document, candidate.Item!, cancel).ConfigureAwait(false));
   }
 
   /// <summary>The overloads of the call or object creation around <paramref name="position"/>, or null outside one.</summary>
@@ -130,6 +172,10 @@ public sealed class ScriptAssistant : IDisposable
     string? docs = info.Sections.FirstOrDefault(s => s.Kind == QuickInfoSectionKinds.DocumentationComments)?.Text;
     return new HoverInfo(info.Span.Start, info.Span.End, text, string.IsNullOrWhiteSpace(docs) ? null : docs);
   }
+
+  /// <summary>The semantic model of <paramref name="source"/> compiled as a script here (tests compare the services with what the compiler binds).</summary>
+  internal async Task<SemanticModel> ModelAsync(string source, CancellationToken cancel = default) =>
+    (await At(source).GetSemanticModelAsync(cancel).ConfigureAwait(false))!;
 
   /// <summary>A bare Roslyn lookup of the names visible at a position, on a fresh snapshot (a benchmark's floor).</summary>
   internal async Task<int> LookupFloorAsync(string source, int position, CancellationToken cancel = default)

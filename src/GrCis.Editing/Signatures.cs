@@ -64,10 +64,13 @@ internal static class Signatures
       .ToImmutableArray();
   }
 
-  // The first overload with room for the caret's argument that takes every argument before it as typed.
+  // The first overload with room for the caret's argument and every argument written (after the caret too, where a
+  // call is being edited) that takes each of them as written: new PhongMaterial(|new double[] {...}, 0.1) is not the
+  // copy constructor though it is the first with one parameter.
   static int Fitting(ImmutableArray<IMethodSymbol> overloads, BaseArgumentListSyntax args, int active, SemanticModel model)
   {
-    int roomy = -1;
+    int written = args.Arguments.Count(a => !a.Expression.IsMissing) == 0 ? 0 : args.Arguments.Count;
+    int roomy = -1, roomyForAll = -1;
     for (int i = 0; i < overloads.Length; i++)
     {
       ImmutableArray<IParameterSymbol> parameters = overloads[i].Parameters;
@@ -76,24 +79,35 @@ internal static class Signatures
         continue;
       if (roomy < 0)
         roomy = i;
+      if (parameters.Length < written && !isParams)
+        continue;
+      if (roomyForAll < 0)
+        roomyForAll = i;
       bool fits = true;
-      for (int a = 0; a < active && a < args.Arguments.Count && fits; a++)
+      for (int a = 0; a < args.Arguments.Count && fits; a++)
       {
+        ExpressionSyntax argument = args.Arguments[a].Expression;
+        if (argument.IsMissing || model.GetTypeInfo(argument).Type is { TypeKind: TypeKind.Error })
+          continue; // an argument still being typed (new Vec) says nothing yet
         IParameterSymbol p = parameters[System.Math.Min(a, parameters.Length - 1)];
         ITypeSymbol type = p.IsParams && a >= parameters.Length - 1 && p.Type is IArrayTypeSymbol array ? array.ElementType : p.Type;
-        fits = model.ClassifyConversion(args.Arguments[a].Expression, type).IsImplicit;
+        fits = model.ClassifyConversion(argument, type).IsImplicit;
       }
       if (fits)
         return i;
     }
-    return roomy < 0 ? 0 : roomy;
+    return roomyForAll >= 0 ? roomyForAll : roomy < 0 ? 0 : roomy;
   }
+
+  /// <summary>How signature help shows <paramref name="method"/>: <c>PhongMaterial(double[] color, ...)</c>, <c>Matrix4d.CreateTranslation(double x, ...)</c>.</summary>
+  public static string Label(IMethodSymbol method) =>
+    method.MethodKind == MethodKind.Constructor
+      ? method.ContainingType.Name + "(" + string.Join(", ", method.Parameters.Select(p => p.ToDisplayString(Format))) + ")"
+      : method.ToDisplayString(Format);
 
   static SignatureEntry Entry(IMethodSymbol method)
   {
-    string label = method.MethodKind == MethodKind.Constructor
-      ? method.ContainingType.Name + "(" + string.Join(", ", method.Parameters.Select(p => p.ToDisplayString(Format))) + ")"
-      : method.ToDisplayString(Format);
+    string label = Label(method);
     return new SignatureEntry(label, DocComments.Summary(method),
       method.Parameters.Select(p => new ParameterEntry(p.ToDisplayString(Format), DocComments.Parameter(p))).ToList());
   }

@@ -74,6 +74,47 @@ public sealed class CompletionTests(AssistantFixture fixture) : IClassFixture<As
     Assert.Equal("field", result.Items[0].Kind); // a script's top-level variable is a field of its class
   }
 
+  // The next line starts with a name and a dot (most lines of a script): the parser read the word and that line as one
+  // declaration (scene.C root.InsertChild(...), a method), and the lists came out empty.
+  [Theory]
+  [InlineData("CSGInnerNode root = new CSGInnerNode(SetOperation.Union);\nscene.C", "Camera")]
+  [InlineData("CSGInnerNode root = new CSGInnerNode(SetOperation.Union);\nMT.r", "rnd")]
+  [InlineData("CSGInnerNode root = new CSGInnerNode(SetOperation.Union);\nroot.Ins", "InsertChild")]
+  [InlineData("CSGInnerNode root = new CSGInnerNode(SetOperation.Union);\nsc", "scene")]
+  [InlineData("void Build(CSGInnerNode root)\n{\n  root.Ins", "InsertChild")]
+  public async Task A_partial_name_above_a_line_starting_with_a_name_and_a_dot_lists_what_it_lists_at_the_end(string typed, string expected)
+  {
+    string next = typed.StartsWith("void", System.StringComparison.Ordinal) ? "\n  root.InsertChild(new Sphere(), Matrix4d.Identity);\n}" : "\nroot.InsertChild(new Sphere(), Matrix4d.Identity);";
+    CompletionResult alone = await assistant.CompleteAsync(typed + (typed.StartsWith("void", System.StringComparison.Ordinal) ? "\n}" : ""), typed.Length, described: 0);
+    CompletionResult above = await assistant.CompleteAsync(typed + next, typed.Length, described: 0);
+    Assert.Contains(alone.Items, i => i.Label == expected);
+    Assert.Equal(alone.Items.Select(i => i.Label), above.Items.Select(i => i.Label));
+    Assert.Equal((alone.From, alone.To), (above.From, above.To));
+  }
+
+  [Fact]
+  public async Task Inside_context_brackets_the_context_keys_come_first()
+  {
+    const string typed = "context[Pr";
+    CompletionResult result = await assistant.CompleteAsync(typed + "\nscene.Intersectable = null;", typed.Length, described: 2);
+    Assert.Equal("PropertyName", result.Items[0].Label);
+    Assert.Equal("PropertyName.CTX_TOOLTIP", result.Items[1].Label); // what a script sets first
+    Assert.Contains("ToolTip", result.Items[1].Detail);
+    Assert.Contains("help text", result.Items[1].Documentation);
+    Assert.Equal(typed.Length - 2, result.From);
+
+    const string empty = "context[";
+    CompletionResult all = await assistant.CompleteAsync(empty, empty.Length, described: 0);
+    Assert.Equal("PropertyName", all.Items[0].Label);
+    Assert.All(all.Items.Skip(1).Take(14), i => Assert.StartsWith("PropertyName.CTX_", i.Label));
+
+    const string member = "context[PropertyName.CTX_TOOLTIP] = \"\";\ncontext[PropertyName.";
+    CompletionResult keys = await assistant.CompleteAsync(member, member.Length, described: 0);
+    Assert.Equal("CTX_WIDTH", keys.Items[0].Label); // the tooltip is set already
+    CompletionEntry? described = await assistant.DescribeAsync(empty, empty.Length, "PropertyName.CTX_WIDTH");
+    Assert.Contains("image width", described?.Documentation);
+  }
+
   [Fact]
   public async Task A_position_outside_the_text_is_refused()
   {

@@ -29,6 +29,19 @@ public sealed class SignatureAndHoverTests(AssistantFixture fixture) : IClassFix
   }
 
   [Fact]
+  public async Task In_a_call_being_edited_the_arguments_after_the_caret_choose_the_overload_not_the_copy_constructor()
+  {
+    // Unfinished (no closing parenthesis), so nothing binds: before, the first overload with room for one argument
+    // was shown, PhongMaterial(PhongMaterial), though the argument after the caret is a double[].
+    const string source = "var m = new PhongMaterial(new double[] { 1, 0, 0 }, 0.1, 0.6\nscene.Intersectable = null;";
+    int caret = source.IndexOf('(') + 1;
+    SignatureHelp? help = await assistant.SignatureAsync(source, caret);
+    Assert.NotNull(help);
+    Assert.Equal(0, help.ActiveParameter);
+    Assert.StartsWith("PhongMaterial(double[]", help.Signatures[help.Active].Label);
+  }
+
+  [Fact]
   public async Task Inside_a_method_call_the_method_groups_overloads_are_shown_with_their_docs()
   {
     const string source = "double x = System.Math.Max(1.0, ";
