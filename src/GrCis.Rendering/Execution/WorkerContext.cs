@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.ComponentModel;
 using System.Runtime.CompilerServices;
 using System.Threading;
 using MathSupport;
@@ -62,6 +63,14 @@ public sealed class WorkerContext
   internal ulong PixelHash;
 
   internal CancellationToken Cancel;
+
+  /// <summary>
+  /// How many calls of user code are under way on this thread. The recursion guards compiled into user code count
+  /// them (<see cref="Recursion.Enter"/> up, the guard's <c>finally</c> down, inline: a field, not a call, as user
+  /// code is not optimised); nothing else writes it.
+  /// </summary>
+  [EditorBrowsable(EditorBrowsableState.Never)]
+  public int RecursionDepth;
 
   /// <summary>Folder of the script whose code runs here (<see cref="Utilities.DataFiles"/>).</summary>
   internal string? ScriptDirectory;
@@ -135,6 +144,8 @@ public sealed class WorkerContext
       Cancel = cancel,
       ScriptDirectory = parent.ScriptDirectory,
       Time = parent.Time,
+      // The same thread's stack: user calls under way before the worker began still count.
+      RecursionDepth = previous.RecursionDepth,
       Rnd = new RandomJames(),
     };
     if (render == null)
