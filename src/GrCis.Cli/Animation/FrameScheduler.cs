@@ -143,7 +143,7 @@ public sealed class FrameScheduler
     for (int i = 0; i < workers; i++)
     {
       IRayScene scene = scenes[i];
-      threads[i] = new Thread(() => Work(scene)) { IsBackground = true, Name = $"grcis-frame-{i}" };
+      threads[i] = new Thread(() => Work(scene), Rendering.Execution.TileRenderer.WorkerStackSize) { IsBackground = true, Name = $"grcis-frame-{i}" };
       threads[i].Start();
     }
     foreach (Thread t in threads)

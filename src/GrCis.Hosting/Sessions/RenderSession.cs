@@ -74,7 +74,7 @@ public sealed class RenderSession : IDisposable
   {
     if (Interlocked.Exchange(ref started, 1) != 0)
       throw new InvalidOperationException("A render session runs once; create a new one to render again.");
-    var worker = new Thread(Run) { IsBackground = true, Name = "grcis-session" };
+    var worker = new Thread(Run, Rendering.Execution.TileRenderer.WorkerStackSize) { IsBackground = true, Name = "grcis-session" };
     worker.Start();
     return done.Task;
   }

@@ -12,6 +12,12 @@ namespace Rendering.Execution;
 /// </summary>
 public static class TileRenderer
 {
+  /// <summary>
+  /// The stack of every thread that runs user code while rendering (16 MiB, reserved, not committed): the same on every
+  /// platform (.NET's default is 1.5 MiB on Windows), and room for <see cref="Recursion.MaxDepth"/> calls of big frames.
+  /// </summary>
+  public const int WorkerStackSize = 16 << 20;
+
   /// <summary>Tiles of an image in row-major order.</summary>
   public static List<Tile> MakeTiles(int width, int height, int tileSize)
   {
@@ -120,7 +126,7 @@ public static class TileRenderer
       var workers = new Thread[threads];
       for (int i = 0; i < threads; i++)
       {
-        workers[i] = new Thread(Work) { IsBackground = true, Name = $"grcis-render-{i}" };
+        workers[i] = new Thread(Work, WorkerStackSize) { IsBackground = true, Name = $"grcis-render-{i}" };
         workers[i].Start();
       }
       foreach (Thread w in workers)

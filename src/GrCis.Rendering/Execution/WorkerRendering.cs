@@ -63,6 +63,8 @@ public static class WorkerRendering
         Cancel = cancel,
         ScriptDirectory = parent.ScriptDirectory,
         Time = parent.Time,
+        // The same thread's stack: user calls under way before the worker began still count.
+        RecursionDepth = previous.RecursionDepth,
         Rnd = new RandomJames(),
       };
       c.ImageFunction = imageFunction;

@@ -49,6 +49,14 @@ public sealed class WorkerContext
 
   internal CancellationToken Cancel;
 
+  /// <summary>
+  /// How many calls of user code are under way on this thread. The recursion guards compiled into user code count
+  /// them (<see cref="Recursion.Enter"/> up, the guard's <c>finally</c> down, inline: a field, not a call, as user
+  /// code is not optimised); nothing else writes it.
+  /// </summary>
+  [System.ComponentModel.EditorBrowsable(System.ComponentModel.EditorBrowsableState.Never)]
+  public int RecursionDepth;
+
   /// <summary>Folder of the script whose code runs here (<see cref="Utilities.DataFiles"/>).</summary>
   internal string? ScriptDirectory;
 

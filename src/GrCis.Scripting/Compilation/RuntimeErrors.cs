@@ -28,6 +28,8 @@ internal static class RuntimeErrors
     for (Exception? e = ex; e != null; e = e.InnerException)
     {
       StackFrame[] frames = new StackTrace(e, fNeedFileInfo: true).GetFrames();
+      // A recursion guard throws on entry to the method one call too deep: its caller's line is the recursive call.
+      ScriptRuntimeException? entry = null;
       foreach (StackFrame f in frames)
       {
         string? file = f.GetFileName();
@@ -38,8 +40,13 @@ internal static class RuntimeErrors
           continue;
         int line = f.GetFileLineNumber();
         // The exception that passed through the user's line (not a wrapper the renderer added around it).
-        return new ScriptRuntimeException(full, line, source.OriginalColumn(line, f.GetFileColumnNumber()), e);
+        var found = new ScriptRuntimeException(full, line, source.OriginalColumn(line, f.GetFileColumnNumber()), e);
+        if (e is not Rendering.Execution.RecursionTooDeepException || entry != null)
+          return found;
+        entry = found;
       }
+      if (entry != null)
+        return entry;
     }
     return null;
   }

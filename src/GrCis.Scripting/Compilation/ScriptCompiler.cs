@@ -102,6 +102,7 @@ internal static class ScriptCompiler
     var overrides = new List<OverrideAccess.Changed>();
     compilation = OverrideAccess.Normalize(compilation, sources, scriptParseOptions, overrides);
     compilation = DataFileCalls.Rewrite(compilation, sources, scriptParseOptions);
+    compilation = RecursionGuards.GuardLambdas(compilation, sources, scriptParseOptions);
     instrumented = sources.Values.Single();
     (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, path, sources, removed, overrides);
 
@@ -187,6 +188,8 @@ internal static class ScriptCompiler
     var shadowed = new List<ShadowedLibraryTypes.Renamed>();
     var partials = new List<ScriptDiagnostic>();
     compilation = ShadowedLibraryTypes.Rename(compilation, instrumented, ModuleParseOptions, shadowed, partials);
+    // After the renames, so a lambda binds to the types the module means.
+    compilation = RecursionGuards.GuardLambdas(compilation, instrumented, ModuleParseOptions);
     var xml = new MemoryStream();
     (MemoryStream pe, MemoryStream pdb, List<ScriptDiagnostic> warnings) = Emit(compilation, directory, instrumented, removed, overrides, partials, xml);
     warnings.AddRange(ShadowedLibraryTypes.Report(shadowed));
@@ -194,10 +197,15 @@ internal static class ScriptCompiler
       instrumented.ToDictionary(kv => kv.Key.FilePath, kv => kv.Value.ToMap(), StringComparer.Ordinal), shadowed);
   }
 
-  /// <summary>The user's tree with interruption points inserted (see <see cref="InterruptionPoints"/>), parsed again, and the way back to the original.</summary>
+  /// <summary>
+  /// The user's tree with interruption points (see <see cref="InterruptionPoints"/>) and recursion guards of declared
+  /// bodies (<see cref="RecursionGuards"/>) inserted, parsed again, and the way back to the original.
+  /// </summary>
   static (SyntaxTree Tree, InstrumentedSource Source) Instrument(SyntaxTree parsed, CSharpParseOptions parseOptions)
   {
     InstrumentedSource source = InterruptionPoints.Instrument(parsed);
+    SyntaxTree polled = CSharpSyntaxTree.ParseText(source.Instrumented, parseOptions, parsed.FilePath);
+    source = RecursionGuards.Instrument(polled, source);
     return (CSharpSyntaxTree.ParseText(source.Instrumented, parseOptions, parsed.FilePath), source);
   }
 

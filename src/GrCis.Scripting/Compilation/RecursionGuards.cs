@@ -1,0 +1,162 @@
+using System.Collections.Generic;
+using System.Linq;
+using Microsoft.CodeAnalysis;
+using Microsoft.CodeAnalysis.CSharp;
+using Microsoft.CodeAnalysis.CSharp.Syntax;
+using Microsoft.CodeAnalysis.Text;
+
+namespace GrCis.Scripting.Compilation;
+
+/// <summary>
+/// Wraps every body of user code that can take part in a recursion (methods, local functions, constructors,
+/// operators, accessors, lambdas) in <c>var d = Recursion.Enter(); try { … } finally { d.RecursionDepth--; }</c>, so
+/// a recursion without end stops with an exception naming its line (<see cref="Rendering.Execution.Recursion"/>)
+/// instead of a stack overflow that kills the process. The guard goes on the body's own lines: an expression body
+/// <c>=&gt; e;</c> becomes a block in place (<c>=&gt;</c> and <c>;</c> are overwritten, the rest inserted), so no line
+/// moves. Async methods and iterators are left alone: their body runs in pieces, possibly on other threads, and a
+/// count kept across those pieces would be wrong.
+/// </summary>
+internal static class RecursionGuards
+{
+  // A local of that name in a nested body shadows the outer one (allowed since C# 8).
+  const string Variable = "__grcisCall";
+  const string Enter = "var " + Variable + "=global::Rendering.Execution.Recursion.Enter();try{";
+  // The decrement inline (a field of the thread's WorkerContext): user code is not optimised, so a call would stay a call.
+  const string Exit = "}finally{" + Variable + ".RecursionDepth--;}";
+
+  /// <summary>The guards of every declared body of <paramref name="tree"/> (parsed from <paramref name="source"/>'s text) added to it.</summary>
+  public static InstrumentedSource Instrument(SyntaxTree tree, InstrumentedSource source)
+  {
+    var edits = new List<(TextSpan Span, string Text)>();
+    foreach (SyntaxNode node in tree.GetRoot().DescendantNodes())
+    {
+      switch (node)
+      {
+        case BaseMethodDeclarationSyntax m when !IsAsync(m.Modifiers):
+          Guard(m.Body, m.ExpressionBody, m.SemicolonToken, ReturnsValue(m), edits);
+          break;
+        case LocalFunctionStatementSyntax f when !IsAsync(f.Modifiers):
+          Guard(f.Body, f.ExpressionBody, f.SemicolonToken, !IsVoid(f.ReturnType), edits);
+          break;
+        case AccessorDeclarationSyntax a when !IsAsync(a.Modifiers):
+          Guard(a.Body, a.ExpressionBody, a.SemicolonToken, a.Keyword.IsKind(SyntaxKind.GetKeyword), edits);
+          break;
+        case PropertyDeclarationSyntax { ExpressionBody: { } arrow } p:
+          GuardGetter(arrow, p.SemicolonToken, edits);
+          break;
+        case IndexerDeclarationSyntax { ExpressionBody: { } arrow } i:
+          GuardGetter(arrow, i.SemicolonToken, edits);
+          break;
+        case AnonymousFunctionExpressionSyntax { Block: { } block } l when l.AsyncKeyword.IsKind(SyntaxKind.None):
+          GuardBlock(block, edits);
+          break;
+      }
+    }
+    return Apply(source, edits);
+  }
+
+  /// <summary>
+  /// Guards the expression-bodied lambdas that call anything (one without a call cannot recurse). Whether such a body
+  /// is a statement or a value depends on the delegate it becomes, so this pass binds; a lambda that becomes an
+  /// expression tree keeps its form.
+  /// </summary>
+  public static CSharpCompilation GuardLambdas(CSharpCompilation compilation, Dictionary<SyntaxTree, InstrumentedSource> sources,
+                                               CSharpParseOptions parseOptions)
+  {
+    foreach ((SyntaxTree tree, InstrumentedSource source) in sources.ToArray())
+    {
+      List<AnonymousFunctionExpressionSyntax> lambdas = tree.GetRoot().DescendantNodes().OfType<AnonymousFunctionExpressionSyntax>()
+        .Where(l => l.ExpressionBody != null && l.AsyncKeyword.IsKind(SyntaxKind.None) &&
+                    l.ExpressionBody.DescendantNodesAndSelf().OfType<InvocationExpressionSyntax>().Any())
+        .ToList();
+      if (lambdas.Count == 0)
+        continue;
+      SemanticModel model = compilation.GetSemanticModel(tree);
+      var edits = new List<(TextSpan Span, string Text, int Owner)>();
+      foreach (AnonymousFunctionExpressionSyntax l in lambdas)
+      {
+        if (model.GetSymbolInfo(l).Symbol is not IMethodSymbol method ||
+            model.GetTypeInfo(l).ConvertedType is INamedTypeSymbol { Name: "Expression", ContainingNamespace: var ns } &&
+            ns.ToDisplayString() == "System.Linq.Expressions")
+          continue;
+        ExpressionSyntax body = l.ExpressionBody!;
+        string value = method.ReturnsVoid || body is ThrowExpressionSyntax ? "" : "return ";
+        edits.Add((new TextSpan(body.SpanStart, 0), "{" + Enter + value, l.SpanStart));
+        edits.Add((new TextSpan(body.Span.End, 0), ";" + Exit + "}", l.SpanStart));
+      }
+      if (edits.Count == 0)
+        continue;
+      // From the end; where an inner lambda's body ends with the outer one's, the outer close is inserted first and so follows.
+      InstrumentedSource edited = source;
+      foreach ((TextSpan span, string text, int _) in edits.OrderByDescending(e => e.Span.Start).ThenBy(e => e.Owner))
+        edited = edited.WithReplacement(span, text);
+      compilation = edited.Replace(tree, compilation, sources, parseOptions);
+    }
+    return compilation;
+  }
+
+  static void Guard(BlockSyntax? body, ArrowExpressionClauseSyntax? arrow, SyntaxToken semicolon, bool returnsValue,
+                    List<(TextSpan Span, string Text)> edits)
+  {
+    if (body != null)
+    {
+      if (!IsIterator(body))
+        GuardBlock(body, edits);
+    }
+    else if (arrow != null && !semicolon.IsMissing)
+    {
+      string value = returnsValue && arrow.Expression is not ThrowExpressionSyntax ? "return " : "";
+      edits.Add((arrow.ArrowToken.Span, "{" + Enter + value));
+      edits.Add((semicolon.Span, ";" + Exit + "}"));
+    }
+  }
+
+  /// <summary><c>T P =&gt; e;</c> becomes <c>T P {get{… return e;…}}</c>.</summary>
+  static void GuardGetter(ArrowExpressionClauseSyntax arrow, SyntaxToken semicolon, List<(TextSpan Span, string Text)> edits)
+  {
+    if (semicolon.IsMissing)
+      return;
+    string value = arrow.Expression is ThrowExpressionSyntax ? "" : "return ";
+    edits.Add((arrow.ArrowToken.Span, "{get{" + Enter + value));
+    edits.Add((semicolon.Span, ";" + Exit + "}}"));
+  }
+
+  static void GuardBlock(BlockSyntax block, List<(TextSpan Span, string Text)> edits)
+  {
+    if (block.OpenBraceToken.IsMissing || block.CloseBraceToken.IsMissing)
+      return;
+    int open = block.OpenBraceToken.Span.End, close = block.CloseBraceToken.SpanStart;
+    if (open == close)
+      edits.Add((new TextSpan(open, 0), Enter + Exit));
+    else
+    {
+      edits.Add((new TextSpan(open, 0), Enter));
+      edits.Add((new TextSpan(close, 0), Exit));
+    }
+  }
+
+  static InstrumentedSource Apply(InstrumentedSource source, List<(TextSpan Span, string Text)> edits)
+  {
+    // From the end, so earlier positions stay valid (no two edits share a position).
+    InstrumentedSource edited = source;
+    foreach ((TextSpan span, string text) in edits.OrderByDescending(e => e.Span.Start))
+      edited = edited.WithReplacement(span, text);
+    return edited;
+  }
+
+  static bool ReturnsValue(BaseMethodDeclarationSyntax m) => m switch
+  {
+    MethodDeclarationSyntax method => !IsVoid(method.ReturnType),
+    OperatorDeclarationSyntax or ConversionOperatorDeclarationSyntax => true,
+    _ => false, // constructors, destructors
+  };
+
+  static bool IsVoid(TypeSyntax type) => type is PredefinedTypeSyntax p && p.Keyword.IsKind(SyntaxKind.VoidKeyword);
+
+  static bool IsAsync(SyntaxTokenList modifiers) => modifiers.Any(SyntaxKind.AsyncKeyword);
+
+  /// <summary>A body with <c>yield</c> of its own (not of a function inside it).</summary>
+  static bool IsIterator(BlockSyntax body) =>
+    body.DescendantNodes(n => n == body || n is not (AnonymousFunctionExpressionSyntax or LocalFunctionStatementSyntax))
+        .Any(n => n is YieldStatementSyntax);
+}
