@@ -8,6 +8,7 @@ namespace Rendering.Execution;
 /// </summary>
 public sealed class RecursionTooDeepException : Exception
 {
+  /// <summary>The exception with <paramref name="message"/>, which says how deep the calls went.</summary>
   public RecursionTooDeepException(string message) : base(message)
   {
   }
