@@ -26,6 +26,12 @@ public sealed class CliEnvironment
   /// <summary>Relative paths (and the default output file) resolve against this directory.</summary>
   public string WorkingDirectory { get; init; } = Directory.GetCurrentDirectory();
 
+  /// <summary>
+  /// True when grcis is the whole process (<c>Main</c>): settings of the process itself, the heap limit of
+  /// <c>--memory-limit</c>, apply. A test that runs grcis in its own process leaves them alone.
+  /// </summary>
+  public bool OwnsProcess { get; init; }
+
   /// <summary>Signalled by Ctrl+C; a cancelled render writes nothing.</summary>
   public CancellationToken Cancel { get; init; }
 

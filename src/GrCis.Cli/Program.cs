@@ -22,6 +22,7 @@ public static class Program
       Interactive = !Console.IsErrorRedirected && !Console.IsOutputRedirected &&
                     Environment.GetEnvironmentVariable("TERM") is not "dumb",
       Cancel = interrupt.Token,
+      OwnsProcess = true,
     };
     return Run(args, env);
   }
@@ -74,7 +75,12 @@ public static class Program
     {
       return WithStack(env, e, Fail(env, ExitCodes.Failure, "render failed: " + ErrorMessages.OneLine(e.InnerException ?? e)));
     }
-    catch (Exception e) when (e is not OutOfMemoryException)
+    catch (OutOfMemoryException e)
+    {
+      // The heap limit (--memory-limit) was reached outside a script's code; what was allocated is garbage by now.
+      return WithStack(env, e, Fail(env, ExitCodes.Failure, "out of memory: " + e.Message + Jobs.MemoryLimit.Hint()));
+    }
+    catch (Exception e)
     {
       // Scene construction and loaders (OBJ meshes, scripts) report here, with file(line) when they know it.
       return WithStack(env, e, Fail(env, ExitCodes.Failure, ErrorMessages.OneLine(e)));

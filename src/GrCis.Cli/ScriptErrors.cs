@@ -56,7 +56,8 @@ public static class ScriptErrors
       env.Error.WriteLine($"grcis: error: invalid --param: {pe.Message} ({System.IO.Path.GetFileName(re.Path)}, line {re.Line})");
       return ExitCodes.Usage;
     }
-    env.Error.WriteLine("grcis: error: " + Flatten(re.Message));
+    string hint = re.InnerException is OutOfMemoryException ? Jobs.MemoryLimit.Hint() : "";
+    env.Error.WriteLine("grcis: error: " + Flatten(re.Message) + hint);
     return ExitCodes.Failure;
   }
 

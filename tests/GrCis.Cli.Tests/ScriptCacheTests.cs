@@ -143,7 +143,8 @@ public class ScriptCacheTests
     Assert.True(rb.Code == 0, rb.Error);
     Assert.Equal(File.ReadAllBytes(dir.File("a.png")), File.ReadAllBytes(dir.File("b.png")));
     Assert.Single(Entries(cacheDir));
-    Assert.DoesNotContain(Directory.GetFiles(cacheDir), f => !f.EndsWith(ScriptCache.EntryExtension, System.StringComparison.Ordinal));
+    Assert.DoesNotContain(Directory.GetFiles(cacheDir), f => !f.EndsWith(ScriptCache.EntryExtension, System.StringComparison.Ordinal) &&
+                                                              Path.GetFileName(f) != ScriptCache.KeyFileName);
   }
 
   [Fact]

@@ -128,6 +128,25 @@ public sealed class SymlinkTests : IAsyncLifetime
   }
 
   [SkippableFact]
+  public async Task A_save_never_writes_through_a_link_planted_beside_the_script()
+  {
+    Skip.If(OperatingSystem.IsWindows(), "symbolic links need privileges on Windows");
+    string good = Path.Combine(Allowed, "Good.cs"), secret = Path.Combine(Outside, "secret.txt");
+    // The names a save's temporary file had: a fixed one, and the new form with a guess at its random part.
+    string planted = good + ".grcis-save", guessed = Path.Combine(Allowed, ".Good.cs.grcis-save-0000000000000000");
+    File.CreateSymbolicLink(planted, secret);
+    File.CreateSymbolicLink(guessed, secret);
+
+    using HttpResponseMessage save = await client.PutAsync("/api/source?scene=Good", new StringContent("Rendering.Scenes.Circus(scene);\n", Encoding.UTF8));
+    Assert.True(save.IsSuccessStatusCode, $"{save.StatusCode}: {await save.Content.ReadAsStringAsync()}");
+    Assert.Equal("not for the studio", File.ReadAllText(secret));
+    Assert.Null(new FileInfo(good).LinkTarget);                 // a file, not a link leading out
+    Assert.Equal("Rendering.Scenes.Circus(scene);\n", File.ReadAllText(good));
+    Assert.Equal(secret, new FileInfo(planted).LinkTarget);     // left as it was, not used
+    Assert.DoesNotContain(Directory.GetFiles(Allowed, ".Good.cs.grcis-save-*"), f => f != guessed);
+  }
+
+  [SkippableFact]
   public void Real_paths_follow_every_link_on_the_way_and_refuse_a_loop()
   {
     Skip.If(OperatingSystem.IsWindows(), "symbolic links need privileges on Windows");

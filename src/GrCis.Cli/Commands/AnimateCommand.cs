@@ -72,6 +72,7 @@ public sealed class AnimateCommand
   readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
 
   readonly RenderOptionSet render = new();
+  readonly MemoryLimitOption memoryLimit = new();
   readonly ScriptOptions scriptOptions = new();
 
   public Command Build(CliEnvironment env)
@@ -81,6 +82,7 @@ public sealed class AnimateCommand
       scene, output, from, to, fps, frames, shard, resume, video, shutter, parallel,
     };
     render.AddTo(cmd);
+    memoryLimit.AddTo(cmd);
     scriptOptions.AddTo(cmd, withTime: false);
     cmd.Options.Add(quiet);
     cmd.SetAction(parse => Execute(parse, env));
@@ -91,6 +93,7 @@ public sealed class AnimateCommand
   {
     // Validate everything before any work so usage errors never leave files behind.
     RenderSettings settings = render.Read(parse);
+    memoryLimit.Apply(parse, env);
     string? outputText = parse.GetValue(output);
     if (string.IsNullOrWhiteSpace(outputText))
       throw new UsageException("missing -o: give the frame files, e.g. -o frames/out####.png");

@@ -33,6 +33,7 @@ public sealed class RenderCommand
   };
 
   readonly RenderOptionSet render = new();
+  readonly MemoryLimitOption memoryLimit = new();
 
   readonly Option<string?> format = new("--format")
   {
@@ -61,6 +62,7 @@ public sealed class RenderCommand
       scene, output, format, tiles, noise, quiet,
     };
     render.AddTo(cmd);
+    memoryLimit.AddTo(cmd);
     scriptOptions.AddTo(cmd);
     cmd.SetAction(parse => Execute(parse, env));
     return cmd;
@@ -70,6 +72,7 @@ public sealed class RenderCommand
   {
     // Validate everything before any work so usage errors never leave files behind.
     RenderSettings settings = render.Read(parse);
+    memoryLimit.Apply(parse, env);
     ShardSpec? part = parse.GetValue(tiles) is string t ? ShardSpec.Parse(t, "--tiles") : null;
 
     ISceneSource source = scriptOptions.Resolve(parse, parse.GetValue(scene), env);

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
+using System.Text;
 
 namespace GrCis.Cli.Scaffolding;
 
@@ -33,7 +34,9 @@ internal static class SceneFolderWriter
         string temp = Path.Combine(Path.GetDirectoryName(targets[i])!, "." + Path.GetFileName(targets[i]) + ".tmp-" + Guid.NewGuid().ToString("N")[..8]);
         try
         {
-          File.WriteAllText(temp, files[i].Text);
+          // Created new: a file or link of that name is never written through.
+          using (var w = new StreamWriter(new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None), new UTF8Encoding(false)))
+            w.Write(files[i].Text);
           File.Move(temp, targets[i], overwrite: false);
         }
         finally

@@ -14,7 +14,8 @@ internal static class AtomicText
     string temp = full + ".tmp-" + Guid.NewGuid().ToString("N")[..12];
     try
     {
-      using (var w = new StreamWriter(temp, append: false, new UTF8Encoding(false)))
+      // Created new: a file or link of that name (planted, however unlikely the name) is never written through.
+      using (var w = new StreamWriter(new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None), new UTF8Encoding(false)))
       {
         w.NewLine = "\n";
         write(w);

@@ -8,20 +8,22 @@ using GrCis.Scripting.Compilation;
 namespace GrCis.Scripting.Caching;
 
 /// <summary>
-/// The bytes of a cache entry: a header (magic, format, kind, key), the compiled image, and a SHA-256 of all
-/// that at the end, so an entry cut short or damaged is told from a whole one and never loaded.
+/// The bytes of a cache entry: a header (magic, format, kind, key), the compiled image, and at the end an HMAC-SHA-256
+/// of all that under the cache's secret (<see cref="ScriptCache"/>: a random key of the user's, kept private in the
+/// cache folder). An entry cut short or damaged is told from a whole one, and so is one written by anybody who does not
+/// hold the secret (a plain hash anyone can recompute): neither is ever loaded.
 /// </summary>
 internal static class CacheEntries
 {
   /// <summary>Changes when the layout of an entry (or of what it holds) changes; part of every key too.</summary>
-  public const int FormatVersion = 2;
+  public const int FormatVersion = 3;
 
   static readonly byte[] magic = "GRCIS-COMPILED\n"u8.ToArray();
 
   const byte ScriptKind = 1;
   const byte ModuleKind = 2;
 
-  public static byte[] Write(string key, ScriptImage image) => Write(key, ScriptKind, w =>
+  public static byte[] Write(string key, ScriptImage image, byte[] secret) => Write(key, secret, ScriptKind, w =>
   {
     w.Write(image.AssemblyName);
     WriteBytes(w, image.Assembly);
@@ -32,7 +34,7 @@ internal static class CacheEntries
     WriteMap(w, image.Map);
   });
 
-  public static byte[] Write(string key, ModuleImage image) => Write(key, ModuleKind, w =>
+  public static byte[] Write(string key, ModuleImage image, byte[] secret) => Write(key, secret, ModuleKind, w =>
   {
     w.Write(image.AssemblyName);
     WriteBytes(w, image.Assembly);
@@ -58,7 +60,7 @@ internal static class CacheEntries
   });
 
   /// <summary>The script image of an entry, or null when the bytes are not a whole entry of this key and format.</summary>
-  public static ScriptImage? ReadScript(byte[] entry, string key) => Read(entry, key, ScriptKind, r => new ScriptImage(
+  public static ScriptImage? ReadScript(byte[] entry, string key, byte[] secret) => Read(entry, key, secret, ScriptKind, r => new ScriptImage(
     AssemblyName: r.ReadString(),
     Assembly: ReadBytes(r),
     Pdb: ReadBytes(r),
@@ -68,7 +70,7 @@ internal static class CacheEntries
     Map: ReadMap(r)));
 
   /// <summary>The module image of an entry, or null when the bytes are not a whole entry of this key and format.</summary>
-  public static ModuleImage? ReadModule(byte[] entry, string key) => Read(entry, key, ModuleKind, r =>
+  public static ModuleImage? ReadModule(byte[] entry, string key, byte[] secret) => Read(entry, key, secret, ModuleKind, r =>
   {
     string name = r.ReadString();
     byte[] assembly = ReadBytes(r);
@@ -87,7 +89,7 @@ internal static class CacheEntries
     return new ModuleImage(name, assembly, pdb, documentation, files, skipped, warnings, maps, renamed);
   });
 
-  static byte[] Write(string key, byte kind, Action<BinaryWriter> body)
+  static byte[] Write(string key, byte[] secret, byte kind, Action<BinaryWriter> body)
   {
     var stream = new MemoryStream();
     using (var w = new BinaryWriter(stream, Encoding.UTF8, leaveOpen: true))
@@ -98,18 +100,18 @@ internal static class CacheEntries
       w.Write(key);
       body(w);
     }
-    byte[] checksum = SHA256.HashData(stream.GetBuffer().AsSpan(0, (int)stream.Length));
+    byte[] checksum = HMACSHA256.HashData(secret, stream.GetBuffer().AsSpan(0, (int)stream.Length));
     stream.Write(checksum);
     return stream.ToArray();
   }
 
-  static T? Read<T>(byte[] entry, string key, byte kind, Func<BinaryReader, T> body) where T : class
+  static T? Read<T>(byte[] entry, string key, byte[] secret, byte kind, Func<BinaryReader, T> body) where T : class
   {
-    const int checksumLength = SHA256.HashSizeInBytes;
+    const int checksumLength = HMACSHA256.HashSizeInBytes;
     if (entry.Length < magic.Length + checksumLength || !entry.AsSpan(0, magic.Length).SequenceEqual(magic))
       return null;
     int length = entry.Length - checksumLength;
-    if (!SHA256.HashData(entry.AsSpan(0, length)).AsSpan().SequenceEqual(entry.AsSpan(length)))
+    if (!CryptographicOperations.FixedTimeEquals(HMACSHA256.HashData(secret, entry.AsSpan(0, length)), entry.AsSpan(length)))
       return null;
     try
     {

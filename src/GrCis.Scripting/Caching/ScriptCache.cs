@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using System.Linq;
+using System.Security.Cryptography;
 using System.Threading;
 using GrCis.Scripting.Compilation;
 
@@ -15,6 +16,13 @@ namespace GrCis.Scripting.Caching;
 /// or corrupt is only a miss (the script is compiled and the entry replaced). No lock is held while compiling.
 /// The folder is bounded: beyond <see cref="MaxBytes"/> or <see cref="MaxEntries"/> the entries used least
 /// recently are deleted. Pass one to <see cref="ScriptHost"/>; counters tell hits from compilations.
+/// <para>
+/// What the folder holds is code this program runs, so it is trusted only as far as nobody else can write it: on Unix
+/// the folder must belong to the user and not be writable by group or others (else it is not used, with one warning),
+/// an entry is read only when it is a regular file of the user's (a link, a FIFO or a device is a miss), and every
+/// entry carries an HMAC under a random secret of the user's kept in the folder, readable by the user alone
+/// (<see cref="KeyFileName"/>), so an entry nobody holding the secret wrote is never loaded.
+/// </para>
 /// </summary>
 public sealed class ScriptCache
 {
@@ -35,6 +43,19 @@ public sealed class ScriptCache
 
   const string TemporaryExtension = ".tmp";
 
+  /// <summary>The file in the folder holding the secret entries are signed with (32 random bytes, the user's alone).</summary>
+  public const string KeyFileName = ".grcis-cache-key";
+
+  const int KeyLength = 32;
+
+  // Folders already warned about in this process: one warning each.
+  static readonly System.Collections.Concurrent.ConcurrentDictionary<string, bool> warned = new(StringComparer.Ordinal);
+
+  readonly TextWriter? warnings;
+  readonly object openLock = new();
+  bool opened;
+  byte[]? secret;
+
   // A temporary file this old belongs to a writer that died; it is removed when the folder is trimmed.
   static readonly TimeSpan staleTemporary = TimeSpan.FromHours(1);
 
@@ -43,8 +64,10 @@ public sealed class ScriptCache
   /// <param name="directory">The folder of the entries (created when the first one is written).</param>
   /// <param name="maxBytes">Bound of the entries' total size.</param>
   /// <param name="maxEntries">Bound of their number.</param>
-  public ScriptCache(string directory, long maxBytes = DefaultMaxBytes, int maxEntries = DefaultMaxEntries)
+  /// <param name="warnings">Where the one line saying why the folder is not used goes (default: standard error).</param>
+  public ScriptCache(string directory, long maxBytes = DefaultMaxBytes, int maxEntries = DefaultMaxEntries, TextWriter? warnings = null)
   {
+    this.warnings = warnings;
     ArgumentException.ThrowIfNullOrEmpty(directory);
     ArgumentOutOfRangeException.ThrowIfNegativeOrZero(maxBytes);
     ArgumentOutOfRangeException.ThrowIfNegativeOrZero(maxEntries);
@@ -120,13 +143,111 @@ public sealed class ScriptCache
       TryDelete(file);
   }
 
+  /// <summary>Why the folder is not used (another user's, writable by others, its secret not private), or null while it is usable.</summary>
+  public string? Refused { get; private set; }
+
   internal ScriptImage? ReadScript(string key) => Read(key, CacheEntries.ReadScript);
 
   internal ModuleImage? ReadModule(string key) => Read(key, CacheEntries.ReadModule);
 
-  internal void Write(string key, ScriptImage image) => Write(key, CacheEntries.Write(key, image));
+  internal void Write(string key, ScriptImage image)
+  {
+    if (Secret() is byte[] s)
+      Write(key, CacheEntries.Write(key, image, s));
+  }
 
-  internal void Write(string key, ModuleImage image) => Write(key, CacheEntries.Write(key, image));
+  internal void Write(string key, ModuleImage image)
+  {
+    if (Secret() is byte[] s)
+      Write(key, CacheEntries.Write(key, image, s));
+  }
+
+  /// <summary>
+  /// The secret entries are signed with, once the folder is found trustworthy (made, private to the user, when
+  /// missing); null when the cache cannot be used: the folder cannot be made (only costs compilations, silently) or is
+  /// not trusted (<see cref="Refused"/>, one warning).
+  /// </summary>
+  byte[]? Secret()
+  {
+    lock (openLock)
+    {
+      if (!opened)
+      {
+        opened = true;
+        try
+        {
+          CreateFolder();
+          Refused = CacheFolderTrust.Untrusted(Directory);
+          if (Refused == null)
+            (secret, Refused) = LoadOrCreateSecret();
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+          secret = null;
+        }
+        if (Refused != null && warned.TryAdd(Directory, true))
+          (warnings ?? Console.Error).WriteLine($"grcis: warning: the compiled-script cache '{Directory}' is not used: {Refused}; scripts are compiled afresh");
+      }
+      return Refused == null ? secret : null;
+    }
+  }
+
+  (byte[]? Secret, string? Refused) LoadOrCreateSecret()
+  {
+    string path = Path.Combine(Directory, KeyFileName);
+    if (!Exists(path))
+    {
+      // Written whole under another name, then moved into place without replacing: processes that start together agree on one.
+      string temporary = Path.Combine(Directory, $"{KeyFileName}.{Environment.ProcessId}.{Guid.NewGuid():N}{TemporaryExtension}");
+      var options = new FileStreamOptions { Mode = FileMode.CreateNew, Access = FileAccess.Write, Share = FileShare.None };
+      if (!OperatingSystem.IsWindows())
+        options.UnixCreateMode = UnixFileMode.UserRead | UnixFileMode.UserWrite;
+      try
+      {
+        using (var stream = new FileStream(temporary, options))
+          stream.Write(RandomNumberGenerator.GetBytes(KeyLength));
+        File.Move(temporary, path, overwrite: false);
+      }
+      catch (IOException) when (Exists(path))
+      {
+        // Another process made it first: theirs is used.
+      }
+      finally
+      {
+        TryDelete(temporary);
+      }
+    }
+    if (CacheFolderTrust.UntrustedSecret(path) is string why)
+      return (null, why);
+    byte[]? bytes = ReadRegularFile(path, KeyLength);
+    return bytes is { Length: KeyLength } ? (bytes, null)
+      : (null, $"its secret '{KeyFileName}' is not {KeyLength} bytes (delete it, and a new one is made)");
+  }
+
+  /// <summary>True when <paramref name="path"/> names anything, a dangling link included.</summary>
+  static bool Exists(string path) =>
+    File.Exists(path) || System.IO.Directory.Exists(path) || !OperatingSystem.IsWindows() && UnixFileStatus.OfLink(path) != null;
+
+  /// <summary>
+  /// The bytes of <paramref name="path"/> when it is a regular file of the user's of at most <paramref name="maxLength"/>
+  /// bytes, else null: a link (to /dev/zero), a FIFO (whose open would wait for a writer) or a device is never opened.
+  /// </summary>
+  static byte[]? ReadRegularFile(string path, long maxLength)
+  {
+    if (!OperatingSystem.IsWindows())
+    {
+      if (UnixFileStatus.OfLink(path) is not { IsRegularFile: true } status || status.Uid != UnixFileStatus.CurrentUser || status.Size > maxLength)
+        return null;
+    }
+    else if (new FileInfo(path) is { Exists: false } or { LinkTarget: not null } || new FileInfo(path).Length > maxLength)
+      return null;
+    using var stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.Read);
+    if (stream.Length > maxLength)
+      return null;
+    byte[] bytes = new byte[stream.Length];
+    stream.ReadExactly(bytes);
+    return bytes;
+  }
 
   /// <summary>An entry was read but its code could not be loaded: it is removed, and counted as rejected and missed, not hit.</summary>
   internal void Reject(string key)
@@ -139,20 +260,35 @@ public sealed class ScriptCache
 
   string EntryPath(string key) => Path.Combine(Directory, key + EntryExtension);
 
-  T? Read<T>(string key, Func<byte[], string, T?> parse) where T : class
+  T? Read<T>(string key, Func<byte[], string, byte[], T?> parse) where T : class
   {
     string path = EntryPath(key);
-    byte[] bytes;
+    byte[]? bytes;
+    byte[] signing;
     try
     {
-      bytes = File.ReadAllBytes(path);
+      if (Secret() is not byte[] s || !Exists(path))
+      {
+        Interlocked.Increment(ref misses);
+        return null;
+      }
+      bytes = ReadRegularFile(path, MaxBytes);
+      if (bytes == null)
+      {
+        // Not a regular file of the user's (a link, a FIFO, a device), or too big: unusable, and replaced.
+        Interlocked.Increment(ref rejected);
+        Interlocked.Increment(ref misses);
+        TryDelete(path);
+        return null;
+      }
+      signing = s;
     }
     catch (Exception e) when (e is IOException or UnauthorizedAccessException)
     {
       Interlocked.Increment(ref misses);
       return null;
     }
-    T? entry = parse(bytes, key);
+    T? entry = parse(bytes, key, signing);
     if (entry == null)
     {
       Interlocked.Increment(ref rejected);

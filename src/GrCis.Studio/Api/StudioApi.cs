@@ -3,6 +3,8 @@ using System.Collections.Generic;
 using System.Diagnostics.CodeAnalysis;
 using System.IO;
 using System.Linq;
+using System.Security.Cryptography;
+using System.Text;
 using System.Threading;
 using System.Threading.Tasks;
 using GrCis.Hosting;
@@ -133,7 +135,8 @@ internal static class StudioApi
       return Problems.PreconditionFailed($"{Path.GetFileName(entry.Path)} changed on disk since the editor loaded it: reload it, or save again to replace it");
     using var reader = new StreamReader(request.Body, System.Text.Encoding.UTF8);
     string text = await reader.ReadToEndAsync();
-    SaveAtomically(real, text);
+    if (!SaveAtomically(real, text, files))
+      return Problems.Outside(Path.GetFileName(entry.Path));
     s.ActedFor(request);
     response.Headers.ETag = SourceTag(File.ReadAllBytes(real));
     // The selected script's watcher re-renders it (as for a save from any other editor): 204. Any other script is
@@ -286,11 +289,41 @@ internal static class StudioApi
   /// <summary>A script's version as an entity tag: the start of its SHA-256, quoted.</summary>
   internal static string SourceTag(byte[] bytes) => "\"" + Convert.ToHexStringLower(System.Security.Cryptography.SHA256.HashData(bytes), 0, 16) + "\"";
 
-  /// <summary>Writes the whole text to a temporary file beside <paramref name="path"/>, then moves it over: never half a script.</summary>
-  static void SaveAtomically(string path, string text)
+  /// <summary>
+  /// Writes the whole text to a new temporary file beside <paramref name="real"/>, then renames it over: never half a
+  /// script. The temporary file has a random name and is created new (<see cref="FileMode.CreateNew"/> fails on any
+  /// existing name, a link included), so nothing planted beside the script is written through. Before the rename the
+  /// temporary file and the target are resolved again: when either now leads out of the allowed folders (a link planted
+  /// meanwhile), nothing is renamed and false is returned. A rename replaces a link, never writes through it.
+  /// </summary>
+  static bool SaveAtomically(string real, string text, AllowedFiles files)
   {
-    string temp = path + ".grcis-save";
-    File.WriteAllText(temp, text);
-    File.Move(temp, path, overwrite: true);
+    string dir = Path.GetDirectoryName(real)!;
+    string temp = Path.Combine(dir, "." + Path.GetFileName(real) + ".grcis-save-" + Convert.ToHexStringLower(RandomNumberGenerator.GetBytes(8)));
+    try
+    {
+      using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None))
+      using (var writer = new StreamWriter(stream, new UTF8Encoding(encoderShouldEmitUTF8Identifier: false)))
+        writer.Write(text);
+      if (!string.Equals(files.Resolve(temp), temp, StringComparison.Ordinal) || files.Resolve(real) == null)
+      {
+        File.Delete(temp);
+        return false;
+      }
+      File.Move(temp, real, overwrite: true);
+      return true;
+    }
+    catch
+    {
+      try
+      {
+        File.Delete(temp);
+      }
+      catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+      {
+        // The save's own failure is the one to report.
+      }
+      throw;
+    }
   }
 }
