@@ -23,8 +23,6 @@ namespace Rendering.Accel;
 /// </summary>
 internal sealed class WhittedKernel
 {
-  const long HASH_REFRACT = 13L, HASH_REFLECT = 17L, HASH_RECURSION = 101L, HASH_LIGHT = 101L;
-
   readonly RayTracing function;
 
   WhittedKernel(RayTracing function) => this.function = function;
@@ -98,7 +96,7 @@ internal sealed class WhittedKernel
 
     if (f.DoRecursion && i.RecursionAttribute is RecursionFunction recursion)
     {
-      hash += HASH_RECURSION * recursion(i, direction, importance, out RayRecursion rr);
+      hash += RayTracing.HASH_RECURSION * recursion(i, direction, importance, out RayRecursion rr);
       if (rr != null)
         hash = rr.Recursion(f, i, hash, depth, color);
       goto done;
@@ -173,7 +171,7 @@ internal sealed class WhittedKernel
           {
             if (observer != null)
               scratch.NextKind = RayKind.Reflected;
-            hash += HASH_REFLECT * Shade(depth, newImportance, ref origin, ref reflected, comp);
+            hash += RayTracing.HASH_REFLECT * Shade(depth, newImportance, ref origin, ref reflected, comp);
             if (ks.Length >= bands)
               for (int b = 0; b < bands; b++)
                 color[b] += ks[b] * comp[b];
@@ -201,7 +199,7 @@ internal sealed class WhittedKernel
         goto done;
       if (observer != null)
         scratch.NextKind = RayKind.Refracted;
-      hash += HASH_REFRACT * Shade(depth, newImportance, ref origin, ref r, comp);
+      hash += RayTracing.HASH_REFRACT * Shade(depth, newImportance, ref origin, ref r, comp);
       AddScaled(color, comp, kt);
     }
 
@@ -257,7 +255,7 @@ internal sealed class WhittedKernel
         return hash;
       AddLit(color, transmit, intensity, arr);
     }
-    return hash * HASH_LIGHT + source.GetHashCode();
+    return hash * RayCasting.HASH_LIGHT + source.GetHashCode();
   }
 
   /// <summary><see cref="RayCasting.FirstHitAt(int, Vector3d, Vector3d)"/> of the function, the library's scene read directly.</summary>

@@ -12,7 +12,7 @@ namespace Rendering;
 public class RayCasting : IImageFunction
 {
   /// <summary>Factor of the path hash for each light that lit the hit.</summary>
-  protected const long HASH_LIGHT = 101L;
+  protected internal const long HASH_LIGHT = 101L;
 
   /// <summary>Factor of the path hash for each texture applied to the hit (with the texture's own hash).</summary>
   protected const long HASH_TEXTURE = 11L;

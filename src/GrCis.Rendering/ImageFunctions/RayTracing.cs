@@ -25,13 +25,13 @@ namespace Rendering;
 public class RayTracing : RayCasting
 {
   /// <summary>Factor of the path hash for a refracted ray (the hash tells apart pixels that saw different things).</summary>
-  protected const long HASH_REFRACT = 13L;
+  protected internal const long HASH_REFRACT = 13L;
 
   /// <summary>Factor of the path hash for a reflected ray.</summary>
-  protected const long HASH_REFLECT = 17L;
+  protected internal const long HASH_REFLECT = 17L;
 
   /// <summary>Factor of the path hash for a solid's own <see cref="RecursionFunction"/>.</summary>
-  protected const long HASH_RECURSION = 101L;
+  protected internal const long HASH_RECURSION = 101L;
 
   /// <summary>Maximal depth of secondary rays: the camera's ray is depth 0, each reflection or refraction adds one. Default 12.</summary>
   public int MaxLevel = 12;
