@@ -5,7 +5,6 @@ using System.IO;
 using System.Linq;
 using System.Threading;
 using GrCis.Scripting;
-using GrCis.Scripting.Compilation;
 using Microsoft.CodeAnalysis;
 
 namespace GrCis.Editing;
@@ -21,10 +20,15 @@ internal static class DocumentedReferences
   // The contract assemblies whose types System.Private.CoreLib implements and scripts use most.
   static readonly string[] CoreLibContracts = { "System.Runtime", "System.Collections", "System.Console", "System.Runtime.Intrinsics" };
 
-  /// <summary>What a script compiles against (<see cref="ScriptCompiler.References"/>), the modules' with their own doc comments.</summary>
+  /// <summary>What a script compiles against (<see cref="ScriptCompilationInputs"/>), the modules' with their own doc comments.</summary>
   public static IReadOnlyList<MetadataReference> For(IReadOnlyList<ScriptModule> modules) =>
-    With(FrameworkReferences.All).Concat(modules.Select(m => MetadataReference.CreateFromImage(m.Image,
-      documentation: m.Documentation.Length > 0 ? XmlDocumentationProvider.CreateFromBytes(m.Documentation) : null))).ToList();
+    With(ScriptCompilationInputs.FrameworkReferences).Concat(modules.Select(Documented)).ToList();
+
+  static MetadataReference Documented(ScriptModule module)
+  {
+    byte[] xml = ScriptCompilationInputs.ModuleDocumentation(module);
+    return ScriptCompilationInputs.ModuleReference(module, xml.Length > 0 ? XmlDocumentationProvider.CreateFromBytes(xml) : null);
+  }
 
   public static IReadOnlyList<MetadataReference> With(IEnumerable<MetadataReference> references)
   {

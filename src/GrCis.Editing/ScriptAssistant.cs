@@ -5,7 +5,6 @@ using System.Linq;
 using System.Threading;
 using System.Threading.Tasks;
 using GrCis.Scripting;
-using GrCis.Scripting.Compilation;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.Completion;
 using Microsoft.CodeAnalysis.CSharp;
@@ -40,7 +39,7 @@ public sealed class ScriptAssistant : IDisposable
     var projectId = ProjectId.CreateNewId();
     var parse = new CSharpParseOptions(LanguageVersion.Latest, DocumentationMode.Parse, SourceCodeKind.Script);
     var options = new CSharpCompilationOptions(OutputKind.DynamicallyLinkedLibrary,
-      usings: ScriptCompiler.ScriptImports(modules), allowUnsafe: true, nullableContextOptions: NullableContextOptions.Disable);
+      usings: ScriptCompilationInputs.Imports(modules), allowUnsafe: true, nullableContextOptions: NullableContextOptions.Disable);
     workspace.AddProject(ProjectInfo.Create(projectId, VersionStamp.Create(), "Scene", "Scene", LanguageNames.CSharp,
       isSubmission: true, compilationOptions: options, parseOptions: parse,
       metadataReferences: DocumentedReferences.For(modules), hostObjectType: typeof(ScriptGlobals)));

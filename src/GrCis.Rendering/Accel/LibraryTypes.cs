@@ -58,6 +58,13 @@ internal static class LibraryTypes
     return HitCompletion.Full;
   }
 
+  /// <summary>
+  /// The library solid the prepared scene may call directly: exactly <see cref="Sphere"/> or <see cref="Plane"/> (a
+  /// subclass may change the kernel or the hit set-up, so it is called through its interface).
+  /// </summary>
+  public static DirectSolid DirectKernel(IRecordSolid solid) =>
+    solid.GetType() == typeof(Sphere) ? DirectSolid.Sphere : solid.GetType() == typeof(Plane) ? DirectSolid.Plane : DirectSolid.None;
+
   /// <summary>A sphere whose records are the library sphere's (an emitter the light model may sample as a sphere).</summary>
   public static bool HasSphereGeometry(Sphere sphere) => SubclassCheck.KeepsGeometry(sphere, typeof(Sphere));
 
@@ -65,6 +72,28 @@ internal static class LibraryTypes
   public static bool HasPlaneGeometry(Plane plane) => SubclassCheck.KeepsGeometry(plane, typeof(Plane));
 
   // ---------------------------------------------------------------- shading
+
+  /// <summary>
+  /// The library's own scene classes (<see cref="DefaultRayScene"/>, <see cref="AnimatedRayScene"/>, exactly): their
+  /// parts are plain properties, which the Whitted kernel reads once per frame (<see cref="BoundScene"/>). A script's
+  /// own scene class is asked per ray.
+  /// </summary>
+  public static bool IsLibraryScene(IRayScene scene) =>
+    scene.GetType() == typeof(DefaultRayScene) || scene.GetType() == typeof(AnimatedRayScene);
+
+  /// <summary>The camera when it is exactly the library's <see cref="StaticCamera"/> (the kernel calls its ray directly), else null.</summary>
+  public static StaticCamera? DirectCamera(ICamera? camera) =>
+    camera != null && camera.GetType() == typeof(StaticCamera) ? (StaticCamera)camera : null;
+
+  /// <summary>The background when it is exactly the library's <see cref="DefaultBackground"/>, else null.</summary>
+  public static DefaultBackground? DirectBackground(IBackground? background) =>
+    background != null && background.GetType() == typeof(DefaultBackground) ? (DefaultBackground)background : null;
+
+  /// <summary>The library light the kernel may call directly: exactly a <see cref="PointLightSource"/> or an <see cref="AmbientLightSource"/>.</summary>
+  public static DirectLight DirectLight(ILightSource light) =>
+    light.GetType() == typeof(PointLightSource) ? Accel.DirectLight.Point :
+    light.GetType() == typeof(AmbientLightSource) ? Accel.DirectLight.Ambient : Accel.DirectLight.None;
+
 
   /// <summary>A library light: it reads only the world point and normal of a hit.</summary>
   public static bool IsLibraryLight(ILightSource light) =>

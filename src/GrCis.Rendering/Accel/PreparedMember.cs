@@ -14,6 +14,9 @@ internal struct PreparedMember
   /// <summary>Non-null when the allocation-free kernel answers for this member.</summary>
   public IRecordSolid? RecordSolid;
 
+  /// <summary>The library solid <see cref="RecordSolid"/> is, when the kernels call it directly.</summary>
+  public DirectSolid Direct;
+
   /// <summary>Non-null for a non-union CSG subtree evaluated by its allocation-free kernel (then <see cref="RecordSolid"/> is null).</summary>
   public CsgKernel? Csg;
 

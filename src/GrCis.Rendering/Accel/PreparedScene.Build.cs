@@ -159,6 +159,7 @@ public sealed partial class PreparedScene
   internal static void BindSolid(ref PreparedMember m, IRecordSolid f)
   {
     m.RecordSolid = f;
+    m.Direct = LibraryTypes.DirectKernel(f);
     m.LocalToWorld = f.ToWorld();
     m.WorldToLocal = m.LocalToWorld.Inverted();
     m.LocalToObject = f.ToObject();

@@ -211,14 +211,14 @@ public sealed partial class PreparedScene
       ref SolidRecord h = ref q.Free;
       if (m.RecordSolid is IRecordSolid solid)
       {
-        // The library's sphere and plane called directly: no interface call in code compiled without a profile
-        // (ReadyToRun, a render's first moments), no type guard in code compiled with one.
-        if (solid.GetType() == typeof(Sphere))
-          has = Unsafe.As<Sphere>(solid).First(lp0, lp1, q.Len2, out h, out inside);
-        else if (solid.GetType() == typeof(Plane))
-          has = Unsafe.As<Plane>(solid).First(lp0, lp1, q.Len2, out h, out inside);
-        else
-          has = solid.IntersectFirst(lp0, lp1, q.Len2, out h, out inside);
+        // The library's sphere and plane called directly (decided when the member was bound): no interface call in
+        // code compiled without a profile (ReadyToRun, a render's first moments).
+        has = m.Direct switch
+        {
+          DirectSolid.Sphere => Unsafe.As<Sphere>(solid).First(lp0, lp1, q.Len2, out h, out inside),
+          DirectSolid.Plane => Unsafe.As<Plane>(solid).First(lp0, lp1, q.Len2, out h, out inside),
+          _ => solid.IntersectFirst(lp0, lp1, q.Len2, out h, out inside),
+        };
       }
       else
       {

@@ -214,13 +214,13 @@ public sealed partial class PreparedScene : ISceneQuery
     }
     else
       i = new Intersection(f);
-    // The library's sphere and plane directly: no interface call, with or without a profile (see TestMember).
-    if (f.GetType() == typeof(Sphere))
-      Sphere.Init(hit, i);
-    else if (f.GetType() == typeof(Plane))
-      Plane.Init(hit, i);
-    else
-      f.InitIntersection(hit, i);
+    // The library's sphere and plane directly (see TestMember).
+    switch (m.Direct)
+    {
+      case DirectSolid.Sphere: Sphere.Init(hit, i); break;
+      case DirectSolid.Plane: Plane.Init(hit, i); break;
+      default: f.InitIntersection(hit, i); break;
+    }
     if (surfaceOnly && m.Completion != HitCompletion.Full)
       i.CompleteSurface(m.LocalToWorld, m.WorldToLocal, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion, m.Completion);
     else if (m.AttributesCached)

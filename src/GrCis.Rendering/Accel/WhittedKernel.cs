@@ -15,10 +15,11 @@ namespace Rendering.Accel;
 /// <see cref="Distributed.DistributedRayTracing"/> changes only the reflected and refracted directions, which the
 /// kernel asks the function for). Everything else is sampled through <see cref="IImageFunction.GetSample"/>.
 /// <para>
-/// What makes it fast, all decided here rather than in the classes students read: the library's own scene, camera,
-/// background, lights and Phong material are read without interface calls (code compiled without a profile, such as
-/// ReadyToRun images and a render's first moments, would otherwise pay one per sample); the Phong model writes into
-/// stack buffers instead of a new array per light; the thread's shading scratch is fetched once per ray.
+/// What makes it fast, all decided here rather than in the classes students read: the library's own scene's camera,
+/// background and lights are read once per frame and worker (<see cref="BoundScene"/>), each tagged with the library
+/// class called without an interface call (code compiled without a profile, such as ReadyToRun images and a render's
+/// first moments, would otherwise pay one per sample); the Phong model writes into stack buffers instead of a new
+/// array per light; the thread's shading scratch is fetched once per ray.
 /// </para>
 /// </summary>
 internal sealed class WhittedKernel
@@ -42,21 +43,29 @@ internal sealed class WhittedKernel
     context.DoubleX = x;
     context.DoubleY = y;
     Zero(color);
-    IRayScene sc = function.Scene;
-    ICamera? camera = LibraryScene.Is(sc) ? Unsafe.As<DefaultRayScene>(sc).Camera : sc.Camera;
-    if (camera == null)
-      return 11L;
+    BoundScene bound = Bind(ShadingScratch.Of(context), function.Scene);
     Vector3d p0, p1;
-    if (camera.GetType() == typeof(StaticCamera))
-      Unsafe.As<StaticCamera>(camera).Ray(x, y, out p0, out p1);
-    else if (!camera.GetRay(x, y, out p0, out p1))
-      return 11L;
-    return Shade(0, 1.0, ref p0, ref p1, color);
+    if (bound.StaticCamera != null)
+      bound.StaticCamera.Ray(x, y, out p0, out p1);
+    else
+    {
+      ICamera? camera = bound.Library ? bound.Camera : bound.Scene.Camera;
+      if (camera == null || !camera.GetRay(x, y, out p0, out p1))
+        return 11L;
+    }
+    return Shade(bound, 0, 1.0, ref p0, ref p1, color);
+  }
+
+  /// <summary>The scene as this thread reads it during this frame: taken on the thread's first sample of the frame.</summary>
+  BoundScene Bind(ShadingScratch scratch, IRayScene scene)
+  {
+    BoundScene? bound = scratch.Bound;
+    return bound != null && bound.Kernel == this && bound.Scene == scene ? bound : scratch.Bound = new BoundScene(this, scene);
   }
 
   /// <summary><see cref="RayTracing.shade"/> of the function.</summary>
   [SkipLocalsInit]   // the stack buffers are written before they are read
-  long Shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
+  long Shade(BoundScene bound, int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
   {
     RayTracing f = function;
     ShadingScratch scratch = ShadingScratch.Current;
@@ -70,19 +79,19 @@ internal sealed class WhittedKernel
       observer.BeginRay(kind, depth, p0, p1);
     }
 
-    IRayScene sc = f.Scene;
+    IRayScene sc = bound.Scene;
     Vector3d direction = p1;
     Intersection? i = FirstHit(scratch, depth, p0, direction);
     long hash;
-    bool library = LibraryScene.Is(sc);
+    bool library = bound.Library;
     if (i == null)
     {
       f.rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerNormal, depth, p0, direction * 100000.0);
-      IBackground? background = library ? Unsafe.As<DefaultRayScene>(sc).Background : sc.Background;
-      if (background != null)
-        hash = background.GetType() == typeof(DefaultBackground)
-          ? Unsafe.As<DefaultBackground>(background).Fill(color)
-          : background.GetColor(p1, color);
+      IBackground? background = library ? bound.Background : sc.Background;
+      if (bound.DefaultBackground != null)
+        hash = bound.DefaultBackground.Fill(color);
+      else if (background != null)
+        hash = background.GetColor(p1, color);
       else
         hash = RayTracing.FillBackground(sc, color);
       goto done;
@@ -105,8 +114,9 @@ internal sealed class WhittedKernel
     Vector3d viewer = -p1.Normalized();
     double[] surface = i.SurfaceColor!;
 
-    ICollection<ILightSource>? sources = library ? Unsafe.As<DefaultRayScene>(sc).Sources : sc.Sources;
-    if (sources == null || sources.Count == 0)
+    BoundLight[]? lights = bound.Lights;
+    ICollection<ILightSource>? sources = library ? null : sc.Sources;
+    if (library ? lights == null : sources == null || sources.Count == 0)
       AddScaled(color, surface, 1.0);
     else
     {
@@ -115,15 +125,18 @@ internal sealed class WhittedKernel
       bool phong = LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial && surface.Length <= 16;
       Span<double> buffer = stackalloc double[16];
 
-      // A LinkedList (GrCis's type) is walked by nodes: no boxed enumerator per hit.
-      if (sources is LinkedList<ILightSource> linked)
+      if (lights != null)
+        foreach (BoundLight light in lights)
+          hash = AddLight(scratch, light.Source, light.Kind, i, viewer, phong, surface, buffer, color, hash);
+      // A script's own scene class: its lights as it gives them now, a LinkedList (GrCis's type) walked by nodes.
+      else if (sources is LinkedList<ILightSource> linked)
       {
         for (LinkedListNode<ILightSource>? n = linked.First; n != null; n = n.Next)
-          hash = AddLight(scratch, n.Value, i, viewer, phong, surface, buffer, color, hash);
+          hash = AddLight(scratch, n.Value, DirectLight.None, i, viewer, phong, surface, buffer, color, hash);
       }
       else
-        foreach (ILightSource source in sources)
-          hash = AddLight(scratch, source, i, viewer, phong, surface, buffer, color, hash);
+        foreach (ILightSource source in sources!)
+          hash = AddLight(scratch, source, DirectLight.None, i, viewer, phong, surface, buffer, color, hash);
     }
 
     if (depth++ >= f.MaxLevel || (!f.DoReflections && !f.DoRefractions))
@@ -171,7 +184,7 @@ internal sealed class WhittedKernel
           {
             if (observer != null)
               scratch.NextKind = RayKind.Reflected;
-            hash += RayTracing.HASH_REFLECT * Shade(depth, newImportance, ref origin, ref reflected, comp);
+            hash += RayTracing.HASH_REFLECT * Shade(bound, depth, newImportance, ref origin, ref reflected, comp);
             if (ks.Length >= bands)
               for (int b = 0; b < bands; b++)
                 color[b] += ks[b] * comp[b];
@@ -186,20 +199,20 @@ internal sealed class WhittedKernel
     if (f.DoRefractions)
     {
       IMaterial material = i.Material!;
-      double kt = Kt(material);
+      double kt = material.Kt;
       if (f.FresnelRefraction && kt > 0.0)
-        kt *= 1.0 - RayTracing.SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), Index(material));
+        kt *= 1.0 - RayTracing.SchlickReflectance(Math.Abs(Vector3d.Dot(i.Normal, viewer)), material.n);
       double newImportance = importance * kt;
       if (newImportance < f.MinImportance)
         goto done;
       Vector3d r = haveUnit
-        ? Geometry.SpecularRefractionUnit(i.Normal, Index(material), viewerUnit)
-        : Geometry.SpecularRefraction(i.Normal, Index(material), viewer);
+        ? Geometry.SpecularRefractionUnit(i.Normal, material.n, viewerUnit)
+        : Geometry.SpecularRefraction(i.Normal, material.n, viewer);
       if (r.X == 0.0 && r.Y == 0.0 && r.Z == 0.0 || !f.RefractionDirection(i, r, depth, out r))
         goto done;
       if (observer != null)
         scratch.NextKind = RayKind.Refracted;
-      hash += RayTracing.HASH_REFRACT * Shade(depth, newImportance, ref origin, ref r, comp);
+      hash += RayTracing.HASH_REFRACT * Shade(bound, depth, newImportance, ref origin, ref r, comp);
       AddScaled(color, comp, kt);
     }
 
@@ -210,17 +223,17 @@ internal sealed class WhittedKernel
   }
 
   /// <summary>One light's direct contribution (shadow ray included) added to <paramref name="color"/>; returns the hash.</summary>
-  long AddLight(ShadingScratch scratch, ILightSource source, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
+  long AddLight(ShadingScratch scratch, ILightSource source, DirectLight kind, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
   {
     RayTracing f = function;
     double[]? intensity;
     Vector3d dir;
-    if (source.GetType() == typeof(PointLightSource))
-      intensity = Unsafe.As<PointLightSource>(source).Intensity(i, out dir);
-    else if (source.GetType() == typeof(AmbientLightSource))
-      intensity = Unsafe.As<AmbientLightSource>(source).Intensity(out dir);
-    else
-      intensity = source.GetIntensity(i, out dir);
+    switch (kind)
+    {
+      case DirectLight.Point: intensity = Unsafe.As<PointLightSource>(source).Intensity(i, out dir); break;
+      case DirectLight.Ambient: intensity = Unsafe.As<AmbientLightSource>(source).Intensity(out dir); break;
+      default: intensity = source.GetIntensity(i, out dir); break;
+    }
     if (f.rayRegisterer != null && MT.singleRayTracing && source.position is Vector3d lightPosition)
       f.rayRegisterer.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerShadow, i.CoordWorld, lightPosition);
     if (intensity == null)
@@ -284,8 +297,8 @@ internal sealed class WhittedKernel
   PreparedScene? Prepared(ShadingScratch scratch)
   {
     RayTracing f = function;
-    IRayScene sc = f.Scene;
-    IIntersectable? source = LibraryScene.Is(sc) ? Unsafe.As<DefaultRayScene>(sc).Intersectable : sc.Intersectable;
+    BoundScene bound = scratch.Bound!;
+    IIntersectable? source = bound.Library ? bound.Intersectable : bound.Scene.Intersectable;
     PreparedScene? ps = scratch.LastPrepared;
     return ps != null && ps.Source == source ? ps : f.PreparedFor(scratch);
   }
@@ -307,13 +320,6 @@ internal sealed class WhittedKernel
     }
     return max;
   }
-
-  // A material's Kt and index: the shading's scratch copy (exactly a PhongMaterial) without an interface call.
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  static double Kt(IMaterial m) => m.GetType() == typeof(PhongMaterial) ? Unsafe.As<PhongMaterial>(m).Kt : m.Kt;
-
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  static double Index(IMaterial m) => m.GetType() == typeof(PhongMaterial) ? Unsafe.As<PhongMaterial>(m).n : m.n;
 
   /// <summary>color += transmit · light · reflected, band by band; a light or reflectance with fewer bands repeats its last one.</summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]

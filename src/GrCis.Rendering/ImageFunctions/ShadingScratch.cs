@@ -58,6 +58,9 @@ internal sealed class ShadingScratch
   /// <summary>The snapshot this thread used last (checked first: the scene rarely changes between rays).</summary>
   public Accel.PreparedScene? LastPrepared;
 
+  /// <summary>The scene as the Whitted kernel of this frame read it for this thread (<see cref="Accel.BoundScene"/>).</summary>
+  public Accel.BoundScene? Bound;
+
   /// <summary>True while a faithful (GrCis-style, no search structure) query runs on this thread (<see cref="Accel.ExhaustiveSearch"/>).</summary>
   public bool ExhaustiveSearch;
 

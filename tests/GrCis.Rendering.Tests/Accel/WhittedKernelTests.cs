@@ -107,6 +107,46 @@ public class WhittedKernelTests
     AssertSameBits(wider, Render(c, new WiderMirrorTextbook { Scene = c }, synth()).Image, "a subclass's mirror direction");
   }
 
+  [Fact]
+  public void Parts_changed_between_frames_are_read_by_the_next_frame()
+  {
+    // The kernel reads the library scene's camera, background and lights once per frame (BoundScene): a second frame
+    // of the same function after the parts changed must see the new ones, as shade does.
+    static void Change(DefaultRayScene scene)
+    {
+      scene.Camera = new StaticCamera(new Vector3d(0.7, 1.5, -6.0), new Vector3d(-0.1, -0.2, 1.0), 45.0) { Width = 40, Height = 30 };
+      scene.Background = new DefaultBackground(new[] { 0.6, 0.1, 0.2 });
+      scene.Sources = new LinkedList<ILightSource>();
+      scene.Sources.Add(new AmbientLightSource(0.3));
+      scene.Sources.Add(new PointLightSource(new Vector3d(3.0, 5.0, -4.0), 0.8));
+    }
+    var synth = () => new SimpleImageSynthesizer { Width = 40, Height = 30 };
+    var a = (DefaultRayScene)Scenes.Create("Five balls");
+    var b = (DefaultRayScene)Scenes.Create("Five balls");
+    var function = new RayTracing(a);
+    FloatImage before = Render(a, function, synth()).Image;
+    Change(a);
+    Change(b);
+    FloatImage after = Render(a, function, synth()).Image;
+    Assert.False(before.Data.AsSpan().SequenceEqual(after.Data));
+    AssertSameBits(Render(b, new TextbookRayTracing(b), synth()).Image, after, "changed camera, background and lights");
+
+    // On one thread (a probe samples on the caller's): the next frame's kernel must not reuse this thread's binding.
+    var c = (DefaultRayScene)Scenes.Create("Five balls");
+    c.Camera!.Width = 40;
+    c.Camera.Height = 30;
+    var f = new RayTracing(c);
+    var first = new double[3];
+    WhittedKernel.For(f)!.Sample(0.5, 0.5, first);
+    Change(c);
+    var kernel = new double[3];
+    var textbook = new double[3];
+    long hash = WhittedKernel.For(f)!.Sample(0.5, 0.5, kernel);
+    Assert.Equal(f.GetSample(0.5, 0.5, textbook), hash);
+    Assert.Equal(textbook, kernel);
+    Assert.NotEqual(first, kernel);
+  }
+
   sealed class WiderMirrorTextbook : RayTracing
   {
     protected internal override bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction)

@@ -9,7 +9,7 @@ namespace GrCis.Rendering.Tests.ImageFunctions;
 
 /// <summary>
 /// The Whitted path calls the library's own scene, camera, background, lights, sphere and plane directly when the
-/// object is of exactly that class (LibraryScene and the direct cores). A subclass or a class of a script's own
+/// object is of exactly that class (BoundScene, PreparedMember.Direct and the direct cores). A subclass or a class of a script's own
 /// must still be called through its virtual or interface member: these tests render with such classes and check
 /// that their overrides decide the image.
 /// </summary>
