@@ -11,9 +11,10 @@ namespace GrCis.Cli.Tests;
 
 /// <summary>
 /// The Slurm recipes of docs/scale-out.md, taken from the page as they are and run on a one-node Slurm
-/// (<see cref="SlurmCluster"/>), small: only the variables the page names (N, SIZE, FRAMES) are set. One
-/// array task is cancelled and one killed with SIGKILL while rendering; the final job (afterany) still
-/// runs, and the frames, the video and the merged image are the bytes one process writes.
+/// (<see cref="SlurmCluster"/>), small: only the variables the page names (N, SIZE, FRAMES) are set. Array
+/// tasks are cancelled, killed with SIGKILL and requeued while rendering, and a stale temporary file lies in
+/// the frames folder; the final job (afterany) still runs, and the frames, the video and the merged image
+/// are the bytes one process writes.
 /// </summary>
 public class SlurmRecipeTests : IClassFixture<SlurmCluster>
 {
@@ -116,19 +117,28 @@ public class SlurmRecipeTests : IClassFixture<SlurmCluster>
 
     using var dir = new TempDirectory();
     var env = ProjectRoot(dir, files, conf, ("N", "4"), ("SIZE", "160x120"), ("FRAMES", "0-7"));
+    // A temporary file a killed run left on the shared folder (a frame being written when its node died).
+    Directory.CreateDirectory(dir.File("frames"));
+    File.WriteAllBytes(dir.File("frames/out0003.png.tmp-0123456789ab"), [1, 2, 3]);
     string job = Submit(dir, env, submit, "orbit");
 
-    // Tasks 1 and 2 render frames 1, 5 and 2, 6: each is cut after its first frame is saved.
+    // Task k renders frames k and k + 4; tasks 1, 2 and 3 are cut after their first frame is saved:
+    // cancelled, killed (SIGKILL, no handler runs), requeued (it starts again and resumes).
     WaitFor(() => Log(dir, $"logs/orbit-{job}_1.log").Contains(" saved, ", StringComparison.Ordinal), "task 1's first frame");
     Assert.Equal(0, cluster.Command("scancel", $"{job}_1").Code);
     WaitFor(() => Log(dir, $"logs/orbit-{job}_2.log").Contains(" saved, ", StringComparison.Ordinal), "task 2's first frame");
     Assert.Equal(0, cluster.Command("scancel", "--full", "--signal=KILL", $"{job}_2").Code);
+    WaitFor(() => Log(dir, $"logs/orbit-{job}_3.log").Contains(" saved, ", StringComparison.Ordinal), "task 3's first frame");
+    var requeue = cluster.Command("scontrol", "requeue", $"{job}_3");
+    Assert.True(requeue.Code == 0, requeue.Output);
     cluster.WaitUntilIdle(Limit);
 
     Assert.Equal("CANCELLED", cluster.State($"{job}_1"));
     Assert.NotEqual("COMPLETED", cluster.State($"{job}_2"));   // killed: FAILED
     Assert.Equal("COMPLETED", cluster.State($"{job}_0"));
     Assert.Equal("COMPLETED", cluster.State($"{job}_3"));
+    // The requeued task's second run (its log starts again) skipped the frame the first run saved.
+    Assert.Contains("2 frames (1 already complete, skipped)", Log(dir, $"logs/orbit-{job}_3.log"));
 
     // A task's log: progress lines, then its summary last (stdout and stderr in the order written).
     string[] log0 = Log(dir, $"logs/orbit-{job}_0.log").Split('\n', StringSplitOptions.RemoveEmptyEntries);
@@ -138,6 +148,7 @@ public class SlurmRecipeTests : IClassFixture<SlurmCluster>
     // The video job rendered what the two tasks left missing, then encoded.
     string video = Directory.GetFiles(dir.File("logs"), "orbit-video-*.log").Select(File.ReadAllText).Single();
     Assert.Matches(@"wrote [2-4] frames \([4-6] complete, skipped\)", video);
+    Assert.DoesNotContain("tmp-", string.Join(' ', Directory.GetFiles(dir.File("frames"))));
     Assert.Contains("wrote " + dir.File("orbit.mp4") + ": frames 0-7 at 12 fps", video);
 
     // One process, the same options.
