@@ -62,7 +62,7 @@ public class SlurmRecipeTests : IClassFixture<SlurmCluster>
     Recipe(File.ReadAllText(Path.Combine(RepoPaths.Root, "docs", "scale-out.md")), heading);
 
   /// <summary>A project root as the page assumes: <c>scripts/</c>, the recipe's files, and <c>grcis</c> on PATH.</summary>
-  static Dictionary<string, string?> ProjectRoot(TempDirectory dir, Dictionary<string, string> files, string conf, params (string, string)[] variables)
+  internal static Dictionary<string, string?> ProjectRoot(TempDirectory dir, Dictionary<string, string> files, string? conf, params (string, string)[] variables)
   {
     File.CreateSymbolicLink(dir.File("scripts"), RepoPaths.Scripts);
     foreach (var (name, text) in files)
@@ -73,7 +73,7 @@ public class SlurmRecipeTests : IClassFixture<SlurmCluster>
     File.SetUnixFileMode(Path.Combine(bin, "grcis"), (UnixFileMode)0b111_101_101);
     var env = new Dictionary<string, string?>
     {
-      ["SLURM_CONF"] = conf,
+      ["SLURM_CONF"] = conf,   // null: not set
       ["PATH"] = bin + ":" + Environment.GetEnvironmentVariable("PATH"),
     };
     foreach (var (k, v) in variables)
