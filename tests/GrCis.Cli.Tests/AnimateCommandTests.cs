@@ -79,6 +79,22 @@ public class AnimateCommandTests
   }
 
   [Fact]
+  public void Quiet_animation_prints_nothing_on_success_and_one_thread_is_singular()
+  {
+    using var dir = new TempDirectory();
+    string[] args = { "animate", "test-moving", "--fps", "1", "--size", "16x12", "--threads", "1" };
+    CliRun quiet = AnimateRun.Of(dir.Path, [.. args, "-o", "q/f#.png", "-q"]);
+    Assert.True(quiet.ExitCode == 0, quiet.Error);
+    Assert.Equal(("", ""), (quiet.Out, quiet.Error));
+    Assert.Equal(5, Directory.GetFiles(dir.File("q")).Length);
+
+    CliRun loud = AnimateRun.Of(dir.Path, [.. args, "-o", "l/f#.png"]);
+    string summary = Assert.Single(loud.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries));
+    Assert.StartsWith("wrote 5 frames to ", summary);
+    Assert.EndsWith(" on 1 thread", summary);
+  }
+
+  [Fact]
   public void Static_frames_of_a_built_in_scene_differ_only_by_their_frame_seed()
   {
     using var dir = new TempDirectory();
@@ -95,7 +111,7 @@ public class AnimateCommandTests
   public void Shards_together_write_exactly_the_frames_of_one_run()
   {
     using var dir = new TempDirectory();
-    string[] common = { "animate", "test-moving", "--fps", "2", "--size", "20x16", "--spp", "4", "-q" };
+    string[] common = { "animate", "test-moving", "--fps", "2", "--size", "20x16", "--spp", "4" };
     Assert.Equal(0, AnimateRun.Of(dir.Path, [.. common, "-o", "all/f##.png"]).ExitCode);
     for (int i = 0; i < 3; i++)
     {
@@ -138,7 +154,7 @@ public class AnimateCommandTests
     Assert.Equal(0, AnimateRun.Of(dir.Path, "animate", "test-clock", "--to", "0", "--size", "8x8", "-o", "f#.png").ExitCode);
     CliRun again = AnimateRun.Of(dir.Path, "animate", "test-clock", "--to", "0", "--size", "6x4", "-o", "f#.png", "--resume");
     Assert.True(again.ExitCode == 0, again.Error);
-    Assert.Contains("wrote 1 frames", again.Out);
+    Assert.Contains("wrote 1 frame to ", again.Out);
     Assert.Equal(6, PngFile.Load(dir.File("f0.png")).Width);
   }
 

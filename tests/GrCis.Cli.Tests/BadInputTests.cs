@@ -79,12 +79,16 @@ public class BadInputTests
   }
 
   [Fact]
-  public void Output_in_a_missing_directory_fails_without_rendering()
+  public void Output_in_a_missing_directory_is_not_created_when_the_render_fails()
   {
+    // The folder is made only when the image is saved (RenderCommandTests: it is made then).
     using var dir = new TempDirectory();
-    CliRun run = CliRun.Of(dir.Path, "render", "-o", Path.Combine("missing", "x.png"));
-    AssertRejected(run, dir, ExitCodes.Failure, "does not exist");
-    Assert.DoesNotContain("started", run.Error);
+    File.WriteAllText(dir.File("broken.cs"), "this is not C#\n");
+    CliRun run = CliRun.Of(dir.Path, "render", "broken.cs", "-o", Path.Combine("missing", "deeper", "x.png"), "-q");
+    Assert.Equal(ExitCodes.Failure, run.ExitCode);
+    Assert.Equal("", run.Out);
+    Assert.False(Directory.Exists(dir.File("missing")));
+    Assert.Equal(new[] { dir.File("broken.cs") }, dir.AllFiles());
   }
 
   [Fact]

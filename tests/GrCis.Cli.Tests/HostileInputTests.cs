@@ -94,7 +94,7 @@ public class HostileInputTests
     int side = (int)Math.Sqrt(pixels);
     using var dir = new TempDirectory();
     File.WriteAllText(dir.File("bg.cs"), Background);
-    var (code, stdout, error) = GrcisProcess.Run(dir.Path, SmallHeap, "render", "bg.cs", "--size", $"{side}x{side}", "-o", "big.png", "-q");
+    var (code, stdout, error) = GrcisProcess.Run(dir.Path, SmallHeap, "render", "bg.cs", "--size", $"{side}x{side}", "-o", "big.png");
     Assert.True(code == 0, error);
     Assert.StartsWith($"wrote {dir.File("big.png")}: {side}x{side}", stdout);
   }
@@ -275,8 +275,10 @@ public class HostileInputTests
   {
     using var dir = new TempDirectory();
     Directory.CreateDirectory(dir.File("out"));
-    // The script (run twice: preprocessing and the regular call) removes the image's folder after the up-front checks, so the image's save fails.
-    File.WriteAllText(dir.File("vanish.cs"), ScriptCommandTests.SceneBody + $"\nif (System.IO.Directory.Exists(@\"{dir.File("out")}\")) System.IO.Directory.Delete(@\"{dir.File("out")}\", true);\n");
+    // The script (run twice: preprocessing and the regular call) puts a file in place of the image's folder after the
+    // up-front checks, so the folder cannot be made again and the image's save fails.
+    File.WriteAllText(dir.File("vanish.cs"), ScriptCommandTests.SceneBody +
+      $"\nif (System.IO.Directory.Exists(@\"{dir.File("out")}\")) {{ System.IO.Directory.Delete(@\"{dir.File("out")}\", true); System.IO.File.WriteAllText(@\"{dir.File("out")}\", \"x\"); }}\n");
     CliRun run = CliRun.Of(dir.Path, "render", "vanish.cs", "--size", "8x8", "--spp", "4", "-o", "out/x.png", "--noise", "n.pfm", "-q");
     Assert.Equal(ExitCodes.Failure, run.ExitCode);
     string line = Assert.Single(run.ErrorLines);

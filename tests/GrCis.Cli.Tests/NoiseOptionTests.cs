@@ -12,7 +12,7 @@ public class NoiseOptionTests
   {
     using var dir = new TempDirectory();
     CliRun run = CliRun.Of(dir.Path, "render", "Five balls", "--size", "40x30", "--spp", "16", "--algorithm", "path", "-o", "balls.pfm",
-      "--noise", "noise.pfm", "-q");
+      "--noise", "noise.pfm");
 
     Assert.Equal(0, run.ExitCode);
     FloatImage noise = PfmReader.Load(dir.File("noise.pfm"));
@@ -30,7 +30,7 @@ public class NoiseOptionTests
   public void At_one_sample_the_noise_file_is_nan_and_a_warning_says_why()
   {
     using var dir = new TempDirectory();
-    CliRun run = CliRun.Of(dir.Path, "render", "Five balls", "--size", "20x15", "-o", "b.png", "--noise", "n.pfm", "-q");
+    CliRun run = CliRun.Of(dir.Path, "render", "Five balls", "--size", "20x15", "-o", "b.png", "--noise", "n.pfm");
     Assert.Equal(0, run.ExitCode);
     Assert.Contains("no noise estimate at 1 spp", run.Error);
     Assert.All(PfmReader.Load(dir.File("n.pfm")).Data, v => Assert.True(float.IsNaN(v)));

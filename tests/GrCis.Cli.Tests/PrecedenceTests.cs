@@ -24,7 +24,7 @@ public class PrecedenceTests
   {
     using var dir = new TempDirectory();
     string s = Script(dir, "context[PropertyName.CTX_WIDTH] = 48;\ncontext[PropertyName.CTX_HEIGHT] = 36;\ncontext[PropertyName.CTX_SUPERSAMPLING] = 4;\n");
-    CliRun run = CliRun.Of(dir.Path, "render", s, "-o", "a.png", "-q");
+    CliRun run = CliRun.Of(dir.Path, "render", s, "-o", "a.png");
 
     Assert.Equal(0, run.ExitCode);
     Rgb8Image image = PngFile.Load(dir.File("a.png"));
@@ -37,7 +37,7 @@ public class PrecedenceTests
   {
     using var dir = new TempDirectory();
     string s = Script(dir, "context[PropertyName.CTX_WIDTH] = 48;\ncontext[PropertyName.CTX_HEIGHT] = 36;\ncontext[PropertyName.CTX_SUPERSAMPLING] = 4;\n");
-    CliRun run = CliRun.Of(dir.Path, "render", s, "--size", "20x10", "--spp", "1", "-o", "a.png", "-q");
+    CliRun run = CliRun.Of(dir.Path, "render", s, "--size", "20x10", "--spp", "1", "-o", "a.png");
 
     Assert.Equal(0, run.ExitCode);
     Rgb8Image image = PngFile.Load(dir.File("a.png"));
@@ -50,7 +50,7 @@ public class PrecedenceTests
   {
     using var dir = new TempDirectory();
     string s = Script(dir, "context[PropertyName.CTX_WIDTH] = 30;\n");
-    CliRun run = CliRun.Of(dir.Path, "render", s, "-o", "a.png", "-q");
+    CliRun run = CliRun.Of(dir.Path, "render", s, "-o", "a.png");
     Assert.Equal(0, run.ExitCode);
     Assert.Contains("30x480,", SummaryLine(run));
   }
@@ -72,11 +72,11 @@ public class PrecedenceTests
     using var dir = new TempDirectory();
     string s = Script(dir, "context[PropertyName.CTX_SYNTHESIZER] = new SupersamplingImageSynthesizer { Supersampling = 9 };\n");
 
-    CliRun scripted = CliRun.Of(dir.Path, "render", s, "--size", "16x12", "-o", "a.png", "-q");
+    CliRun scripted = CliRun.Of(dir.Path, "render", s, "--size", "16x12", "-o", "a.png");
     Assert.Equal(0, scripted.ExitCode);
     Assert.Contains("16x12, spp 9,", SummaryLine(scripted));
 
-    CliRun overridden = CliRun.Of(dir.Path, "render", s, "--size", "16x12", "--spp", "4", "-o", "b.png", "-q");
+    CliRun overridden = CliRun.Of(dir.Path, "render", s, "--size", "16x12", "--spp", "4", "-o", "b.png");
     Assert.Equal(0, overridden.ExitCode);
     Assert.Contains("16x12, spp 4,", SummaryLine(overridden));
     Assert.Contains("grcis: note: --spp/--jitter given: the script's renderer SupersamplingImageSynthesizer is not used", overridden.ErrorLines);

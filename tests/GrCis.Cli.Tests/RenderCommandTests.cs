@@ -49,12 +49,49 @@ public class RenderCommandTests
   }
 
   [Fact]
-  public void Quiet_render_prints_no_progress()
+  public void Quiet_render_prints_nothing_on_success()
   {
     using var dir = new TempDirectory();
     CliRun run = CliRun.Of(dir.Path, "render", "--size", "16x16", "-o", "q.png", "-q");
     Assert.Equal(0, run.ExitCode);
     Assert.Equal("", run.Error);
+    Assert.Equal("", run.Out);
+    Assert.True(File.Exists(dir.File("q.png")));
+  }
+
+  [Fact]
+  public void Quiet_part_render_prints_nothing_on_success()
+  {
+    using var dir = new TempDirectory();
+    CliRun part = CliRun.Of(dir.Path, "render", "--size", "16x16", "--tiles", "0/1", "-o", "p.grcis-part", "-q");
+    Assert.Equal(0, part.ExitCode);
+    Assert.Equal(("", ""), (part.Out, part.Error));
+    Assert.True(File.Exists(dir.File("p.grcis-part")));
+  }
+
+  [Theory]
+  [InlineData("a/b/x.png")]
+  [InlineData("parts/x.grcis-part")]
+  [InlineData("lin/x.pfm")]
+  public void Missing_folders_of_the_output_are_created_as_animate_creates_its_frames_folder(string output)
+  {
+    using var dir = new TempDirectory();
+    string[] tiles = output.EndsWith(".grcis-part", System.StringComparison.Ordinal) ? ["--tiles", "1/2"] : [];
+    CliRun run = CliRun.Of(dir.Path, ["render", "--size", "40x30", "-o", output, .. tiles]);
+    Assert.True(run.ExitCode == 0, run.Error);
+    Assert.Equal(new[] { dir.File(output) }, dir.AllFiles());
+    Assert.StartsWith("wrote " + dir.File(output) + ":", run.Out);
+  }
+
+  [Fact]
+  public void A_file_where_an_output_folder_should_be_fails_before_rendering()
+  {
+    using var dir = new TempDirectory();
+    File.WriteAllText(dir.File("a"), "x");
+    CliRun run = CliRun.Of(dir.Path, "render", "--size", "40x30", "-o", "a/b/x.png");
+    Assert.Equal(ExitCodes.Failure, run.ExitCode);
+    Assert.Equal($"grcis: error: cannot write '{dir.File("a/b/x.png")}': '{dir.File("a")}' is a file, not a directory", Assert.Single(run.ErrorLines));
+    Assert.Equal(new[] { dir.File("a") }, dir.AllFiles());
   }
 
   [Fact]

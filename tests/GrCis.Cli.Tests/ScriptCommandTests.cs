@@ -41,7 +41,7 @@ public class ScriptCommandTests
   public void Script_from_the_scripts_folder_renders_with_params()
   {
     using var dir = new TempDirectory();
-    CliRun run = CliRun.Of(dir.Path, "render", RepoPaths.Script("TwoSpheres.cs"), "--param", "n=1.5,rc", "--size", "40x30", "-o", "two.png", "-q");
+    CliRun run = CliRun.Of(dir.Path, "render", RepoPaths.Script("TwoSpheres.cs"), "--param", "n=1.5,rc", "--size", "40x30", "-o", "two.png");
 
     Assert.Equal(0, run.ExitCode);
     Rgb8Image image = PngFile.Load(dir.File("two.png"));

@@ -69,7 +69,7 @@ public sealed class AnimateCommand
     DefaultValueFactory = _ => "auto",
   };
 
-  readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
+  readonly Option<bool> quiet = new("--quiet", "-q") { Description = "Print nothing on success: no progress, no summary (notes, warnings and errors still go to stderr)" };
 
   readonly RenderOptionSet render = new();
   readonly MemoryLimitOption memoryLimit = new();
@@ -186,7 +186,9 @@ public sealed class AnimateCommand
       return ExitCodes.Cancelled;
     }
 
-    env.Out.WriteLine(Summary(pattern, plan, saved, skipped, mode, threads, clock.Elapsed));
+    bool silent = parse.GetValue(quiet);
+    if (!silent)
+      env.Out.WriteLine(Summary(pattern, plan, saved, skipped, mode, threads, clock.Elapsed));
 
     if (videoPath != null)
     {
@@ -198,8 +200,9 @@ public sealed class AnimateCommand
         return ExitCodes.Failure;
       }
       encoder.Encode(pattern, plan.Range.First, plan.Range.Count, plan.Timeline.Fps, videoPath);
-      env.Out.WriteLine(string.Create(CultureInfo.InvariantCulture,
-        $"wrote {videoPath}: frames {plan.Range} at {plan.Timeline.Fps:0.###} fps"));
+      if (!silent)
+        env.Out.WriteLine(string.Create(CultureInfo.InvariantCulture,
+          $"wrote {videoPath}: frames {plan.Range} at {plan.Timeline.Fps:0.###} fps"));
     }
     return ExitCodes.Success;
   }
@@ -225,7 +228,7 @@ public sealed class AnimateCommand
     string shardText = plan.Shard.Count > 1 ? $", shard {plan.Shard}" : "";
     string skippedText = skipped > 0 ? $" ({skipped} complete, skipped)" : "";
     return string.Create(CultureInfo.InvariantCulture,
-      $"wrote {saved} frames{skippedText} to {pattern.FullPattern}: frames {plan.Range}{shardText} of 0-{plan.Timeline.FrameCount - 1}, " +
-      $"{elapsed.TotalSeconds:0.00} s, {rate:0.00} frames/s, parallel {mode.ToString().ToLowerInvariant()} on {threads} threads");
+      $"wrote {saved} frame{(saved == 1 ? "" : "s")}{skippedText} to {pattern.FullPattern}: frames {plan.Range}{shardText} of 0-{plan.Timeline.FrameCount - 1}, " +
+      $"{elapsed.TotalSeconds:0.00} s, {rate:0.00} frames/s, parallel {mode.ToString().ToLowerInvariant()} on {threads} thread{(threads == 1 ? "" : "s")}");
   }
 }

@@ -69,7 +69,7 @@ public static class BenchCommand
       bool asJson = parse.GetValue(json);
       bool skipSlow = parse.GetValue(noSlow);
       env.Error.WriteLine(string.Create(CultureInfo.InvariantCulture,
-        $"grcis bench: {cases.Count} cases, {effective} threads; speedup = fast rays/s ÷ faithful (--accel none) rays/s, the faithful path rendered at the small size shown"));
+        $"grcis bench: {cases.Count} cases, {effective} thread{(effective == 1 ? "" : "s")}; speedup = fast rays/s ÷ faithful (--accel none) rays/s, the faithful path rendered at the small size shown"));
       bool measureScaling = parse.GetValue(scaling);
       double? ceiling = null;
       if (measureScaling)

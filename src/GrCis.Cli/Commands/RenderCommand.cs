@@ -52,7 +52,7 @@ public sealed class RenderCommand
     HelpName = "file.pfm",
   };
 
-  readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
+  readonly Option<bool> quiet = new("--quiet", "-q") { Description = "Print nothing on success: no progress, no summary (notes, warnings and errors still go to stderr)" };
   readonly ScriptOptions scriptOptions = new();
 
   public Command Build(CliEnvironment env)
@@ -133,7 +133,8 @@ public sealed class RenderCommand
       File.Delete(noiseTarget.FullPath);
       throw;
     }
-    env.Out.WriteLine(Summary(target, settings, result) + (part is ShardSpec sp ? $", part {sp} (merge with 'grcis merge')" : ""));
+    if (!parse.GetValue(quiet))
+      env.Out.WriteLine(Summary(target, settings, result) + (part is ShardSpec sp ? $", part {sp} (merge with 'grcis merge')" : ""));
     return ExitCodes.Success;
   }
 

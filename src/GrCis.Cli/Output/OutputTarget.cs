@@ -63,7 +63,11 @@ public sealed class OutputTarget
 
   static string Extension(OutputFormat f) => f == OutputFormat.Pfm ? ".pfm" : ".png";
 
-  /// <summary>Fails early when the file cannot be written: missing directory, a directory in the way, no permission.</summary>
+  /// <summary>
+  /// Fails early when the file cannot be written: a directory or a device in the way, a file where a folder
+  /// should be, no permission. Missing folders are fine: <see cref="Save"/> creates them, as <c>animate</c>
+  /// creates its frames folder, so nothing is created when the render fails.
+  /// </summary>
   /// <exception cref="CliFailure">The file could not be created; nothing is left behind.</exception>
   public void CheckWritable()
   {
@@ -72,11 +76,23 @@ public sealed class OutputTarget
     if (IsDevice(FullPath))
       throw new CliFailure($"cannot write '{FullPath}': it is a device, not a file (images are saved through a temporary file and a rename, which would replace it)");
     string? dir = Path.GetDirectoryName(FullPath);
-    if (string.IsNullOrEmpty(dir) || !Directory.Exists(dir))
-      throw new CliFailure($"cannot write '{FullPath}': directory '{dir}' does not exist");
+    if (string.IsNullOrEmpty(dir))
+      throw new CliFailure($"cannot write '{FullPath}': it has no directory");
+
+    // The nearest folder that exists: a missing one below it is created at save time.
+    string existing = dir;
+    while (!Directory.Exists(existing))
+    {
+      if (File.Exists(existing))
+        throw new CliFailure($"cannot write '{FullPath}': '{existing}' is a file, not a directory");
+      string? parent = Path.GetDirectoryName(existing);
+      if (string.IsNullOrEmpty(parent))
+        throw new CliFailure($"cannot write '{FullPath}': directory '{dir}' cannot be created");
+      existing = parent;
+    }
 
     // Probe with the same kind of sibling file the atomic save creates, and remove it at once.
-    string probe = Path.Combine(dir, "." + Path.GetFileName(FullPath) + ".probe-" + Guid.NewGuid().ToString("N")[..12]);
+    string probe = Path.Combine(existing, "." + Path.GetFileName(FullPath) + ".probe-" + Guid.NewGuid().ToString("N")[..12]);
     try
     {
       using var fs = new FileStream(probe, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1, FileOptions.DeleteOnClose);
@@ -128,6 +144,14 @@ public sealed class OutputTarget
 
   void Saving(Action save)
   {
+    try
+    {
+      Directory.CreateDirectory(Path.GetDirectoryName(FullPath)!);
+    }
+    catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+    {
+      throw new CliFailure($"cannot write '{FullPath}': cannot create its directory: {Reason(e)}", e);
+    }
     try
     {
       save();
