@@ -14,7 +14,7 @@ namespace Rendering.Accel;
 /// that overrides nothing relevant keeps every shortcut, one that overrides a relevant member gets
 /// GrCis's general path for that part only. The scene preparation (<see cref="PreparedScene"/>) and the
 /// image functions ask here, through the named predicates of <see cref="LibraryTypes"/> (what each fast path
-/// needs); nothing else looks at concrete types.
+/// needs), which also hold the fast path's exact-class tests (the library classes a kernel calls directly).
 /// </summary>
 internal static class SubclassCheck
 {
