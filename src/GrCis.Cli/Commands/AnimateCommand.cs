@@ -74,7 +74,7 @@ public sealed class AnimateCommand
   readonly RenderOptionSet render = new();
   readonly MemoryLimitOption memoryLimit = new();
   readonly ScriptOptions scriptOptions = new();
-  readonly WatchOption watch = new();
+  readonly WatchOption watch = new("the first frame (or the --frames)");
 
   public Command Build(CliEnvironment env)
   {

@@ -55,7 +55,7 @@ public sealed class RenderCommand
 
   readonly Option<bool> quiet = new("--quiet", "-q") { Description = "No progress output" };
   readonly ScriptOptions scriptOptions = new();
-  readonly WatchOption watch = new();
+  readonly WatchOption watch = new("the image");
 
   public Command Build(CliEnvironment env)
   {

@@ -10,11 +10,17 @@ namespace GrCis.Cli.Commands;
 /// <summary><c>--watch</c> of <c>render</c> and <c>animate</c>: render again on each save of the script, its modules or its data files (<see cref="WatchLoop"/>).</summary>
 public sealed class WatchOption
 {
-  readonly Option<bool> option = new("--watch", "-w")
+  readonly Option<bool> option;
+
+  /// <param name="what">What each pass renders, for the help ("the image", "the first frame, or --frames a-b").</param>
+  public WatchOption(string what)
   {
-    Description = "Stay running: render again each time the script, a --module file or a data file the scene read is saved " +
-                  "(errors are printed and the last good image kept); Ctrl+C to stop",
-  };
+    option = new("--watch", "-w")
+    {
+      Description = $"Stay running: render {what} again each time the script, a --module file or a data file the scene read is saved " +
+                    "(errors are printed and the last good image kept); Ctrl+C to stop",
+    };
+  }
 
   public void AddTo(Command cmd) => cmd.Options.Add(option);
 

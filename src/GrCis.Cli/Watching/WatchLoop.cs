@@ -78,7 +78,11 @@ internal sealed class WatchLoop
   {
     CancellationTokenSource cts;
     lock (sync)
+    {
       pass = cts = CancellationTokenSource.CreateLinkedTokenSource(stop);
+      // This pass renders every change seen so far (one save is several events); a later one cancels it and signals anew.
+      changed.Reset();
+    }
     try
     {
       CliEnvironment passEnv = env.WithCancel(cts.Token);
