@@ -12,7 +12,9 @@ cache is a fresh folder of this run (`GRCIS_CACHE_DIR`). 160x120, 1 spp, the Fiv
 median, min and max of each, the median CPU time (user + system) a save costs (steadier than wall time on a loaded
 machine; the studio's includes its polled /api/status answers), the load average and the machine.
 
-  bench/student-loop.py [ROUNDS] [path/to/grcis.dll]     (default: 10 rounds, the Release build, built first)
+  bench/student-loop.py [ROUNDS] [path/to/grcis.dll] [WAYS]
+      default: 10 rounds, the Release build (built first), WAYS watch,fresh,studio (a comma-separated choice, run
+      in that order)
 """
 import json, os, re, resource, statistics, subprocess, sys, tempfile, threading, time, urllib.request
 
@@ -144,7 +146,9 @@ print(f"grcis: {dll}")
 print(f"machine: {os.cpu_count()} cores, " +
       next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?"))
 print(f"load average before: {open('/proc/loadavg').read().split()[:3]}")
-results = {name: fn() for name, fn in (("watch", bench_watch), ("fresh", bench_fresh), ("studio", bench_studio))}
+ways = {"watch": bench_watch, "fresh": bench_fresh, "studio": bench_studio}
+chosen = sys.argv[3].split(",") if len(sys.argv) > 3 else list(ways)
+results = {name: ways[name]() for name in chosen}
 for name, (times, cpu) in results.items():
     print(summary(name, times, cpu))
 print(f"load average after: {open('/proc/loadavg').read().split()[:3]}")
