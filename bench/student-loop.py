@@ -16,7 +16,7 @@ machine; the studio's includes its polled /api/status answers), the load average
       default: 10 rounds, the Release build (built first), WAYS watch,fresh,studio (a comma-separated choice, run
       in that order)
 """
-import json, os, re, resource, statistics, subprocess, sys, tempfile, threading, time, urllib.request
+import atexit, json, os, re, resource, shutil, statistics, subprocess, sys, tempfile, threading, time, urllib.request
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 rounds = int(sys.argv[1]) if len(sys.argv) > 1 else 10
@@ -27,6 +27,7 @@ if dll is None:
     dll = os.path.join(root, "src/GrCis.Cli/bin/Release/net10.0/grcis.dll")
 dll = os.path.abspath(dll)
 work = tempfile.mkdtemp(prefix="grcis-loop-")
+atexit.register(shutil.rmtree, work, ignore_errors=True)
 env = dict(os.environ, GRCIS_CACHE_DIR=os.path.join(work, "cache"))
 script = os.path.join(work, "s.cs")
 base = open(os.path.join(root, "scripts/FiveBalls.cs"), encoding="utf-8").read()
