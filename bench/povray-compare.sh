@@ -21,13 +21,16 @@ THREADS=${THREADS:-2}
 here=$(cd "$(dirname "$0")" && pwd)
 repo=$(dirname "$here")
 
+# The peer scenes: POVRAY_SCENES, else a folder found from the repository (its own bench/povray, or the shared
+# bench/povray folder beside the repository or its parent); never a path of one machine.
 scenes=${POVRAY_SCENES:-}
 if [[ -z "$scenes" ]]; then
-  for d in "$repo/../shared/bench/povray" "$repo/../../shared/bench/povray" /work/shared/bench/povray; do
+  for d in "$repo/bench/povray" "$repo/../shared/bench/povray" "$repo/../../shared/bench/povray"; do
     if [[ -f "$d/fiveballs.pov" ]]; then scenes=$(cd "$d" && pwd); break; fi
   done
 fi
-[[ -n "$scenes" && -f "$scenes/fiveballs.pov" ]] || { echo "povray-compare: set POVRAY_SCENES to the folder with fiveballs.pov" >&2; exit 2; }
+[[ -z "${POVRAY_SCENES:-}" || -f "$POVRAY_SCENES/fiveballs.pov" ]] || { echo "povray-compare: POVRAY_SCENES='$POVRAY_SCENES' has no fiveballs.pov" >&2; exit 2; }
+[[ -n "$scenes" && -f "$scenes/fiveballs.pov" ]] || { echo "povray-compare: no peer scenes found (looked in bench/povray and ../shared/bench/povray of the repository); set POVRAY_SCENES to the folder with fiveballs.pov" >&2; exit 2; }
 
 if ! command -v povray >/dev/null 2>&1; then
   echo "povray-compare: installing POV-Ray from Debian (apt-get install povray)" >&2

@@ -51,6 +51,18 @@ public sealed class CliEnvironment
   /// </summary>
   public ScriptCache? ScriptCache { get; init; } = ScriptCache.FromEnvironment();
 
+  /// <summary>The same environment with another cancellation (one pass of <c>--watch</c>, cancelled by the next save).</summary>
+  public CliEnvironment WithCancel(CancellationToken cancel) => new(Out, Error)
+  {
+    Interactive = Interactive,
+    WorkingDirectory = WorkingDirectory,
+    OwnsProcess = OwnsProcess,
+    Cancel = cancel,
+    StackTraces = StackTraces,
+    ScriptCache = ScriptCache,
+    ExtraScenes = ExtraScenes,
+  };
+
   /// <summary>Scenes a test registers by name, tried before the resolver (the tests' animated scenes).</summary>
   internal Func<string, GrCis.Hosting.ISceneSource?>? ExtraScenes { get; init; }
 }

@@ -55,40 +55,41 @@ public static class Program
       using Interruption.Scope interruption = Interruption.Use(env.Cancel);
       return parse.Invoke(config);
     }
-    catch (OperationCanceledException) when (env.Cancel.IsCancellationRequested)
-    {
-      return Fail(env, ExitCodes.Cancelled, "cancelled while the scene script ran; nothing written");
-    }
-    catch (Exception e) when (ScriptErrors.Handles(e))
-    {
-      return WithStack(env, e, ScriptErrors.Report(e, env));
-    }
-    catch (UsageException e)
-    {
-      return Fail(env, ExitCodes.Usage, e.Message);
-    }
-    catch (CliFailure e)
-    {
-      return WithStack(env, e, Fail(env, ExitCodes.Failure, e.Message));
-    }
-    catch (RenderException e)
-    {
-      return WithStack(env, e, Fail(env, ExitCodes.Failure, "render failed: " + ErrorMessages.OneLine(e.InnerException ?? e)));
-    }
-    catch (OutOfMemoryException e)
-    {
-      // The heap limit (--memory-limit) was reached outside a script's code; what was allocated is garbage by now.
-      return WithStack(env, e, Fail(env, ExitCodes.Failure, "out of memory: " + e.Message + Jobs.MemoryLimit.Hint()));
-    }
     catch (Exception e)
     {
-      // Scene construction and loaders (OBJ meshes, scripts) report here, with file(line) when they know it.
-      return WithStack(env, e, Fail(env, ExitCodes.Failure, ErrorMessages.OneLine(e)));
+      return Report(env, e);
     }
     finally
     {
       env.Out.Flush();
       env.Error.Flush();
+    }
+  }
+
+  /// <summary>
+  /// Writes the one line (or, for a script that did not compile, the lines) a failed command prints and returns its exit
+  /// code; <c>render --watch</c> reports a failed pass the same way and goes on watching.
+  /// </summary>
+  internal static int Report(CliEnvironment env, Exception e)
+  {
+    switch (e)
+    {
+      case OperationCanceledException when env.Cancel.IsCancellationRequested:
+        return Fail(env, ExitCodes.Cancelled, "cancelled while the scene script ran; nothing written");
+      case Exception when ScriptErrors.Handles(e):
+        return WithStack(env, e, ScriptErrors.Report(e, env));
+      case UsageException:
+        return Fail(env, ExitCodes.Usage, e.Message);
+      case CliFailure:
+        return WithStack(env, e, Fail(env, ExitCodes.Failure, e.Message));
+      case RenderException:
+        return WithStack(env, e, Fail(env, ExitCodes.Failure, "render failed: " + ErrorMessages.OneLine(e.InnerException ?? e)));
+      case OutOfMemoryException:
+        // The heap limit (--memory-limit) was reached outside a script's code; what was allocated is garbage by now.
+        return WithStack(env, e, Fail(env, ExitCodes.Failure, "out of memory: " + e.Message + Jobs.MemoryLimit.Hint()));
+      default:
+        // Scene construction and loaders (OBJ meshes, scripts) report here, with file(line) when they know it.
+        return WithStack(env, e, Fail(env, ExitCodes.Failure, ErrorMessages.OneLine(e)));
     }
   }
 

@@ -74,6 +74,7 @@ public sealed class AnimateCommand
   readonly RenderOptionSet render = new();
   readonly MemoryLimitOption memoryLimit = new();
   readonly ScriptOptions scriptOptions = new();
+  readonly WatchOption watch = new("the first frame (or the --frames)");
 
   public Command Build(CliEnvironment env)
   {
@@ -85,20 +86,32 @@ public sealed class AnimateCommand
     memoryLimit.AddTo(cmd);
     scriptOptions.AddTo(cmd, withTime: false);
     cmd.Options.Add(quiet);
+    watch.AddTo(cmd);
     cmd.SetAction(parse => Execute(parse, env));
     return cmd;
   }
 
   int Execute(ParseResult parse, CliEnvironment env)
   {
+    render.Read(parse);
+    memoryLimit.Apply(parse, env);
+    if (!watch.IsSet(parse))
+      return AnimateOnce(parse, env, watching: false);
+    if (parse.GetValue(video) != null || parse.GetValue(shard) != null || parse.GetValue(resume))
+      throw new UsageException("--watch renders the frames again after each save: --video, --shard and --resume do not apply");
+    return WatchOption.Run(env, parse.GetValue(scene), parse.GetValue(scriptOptions.Modules) ?? [], passEnv => AnimateOnce(parse, passEnv, watching: true));
+  }
+
+  /// <summary>The frames (the whole command, or one pass of <c>--watch</c>, which renders the first frame unless <c>--frames</c> says otherwise).</summary>
+  int AnimateOnce(ParseResult parse, CliEnvironment env, bool watching)
+  {
     // Validate everything before any work so usage errors never leave files behind.
     RenderSettings settings = render.Read(parse);
-    memoryLimit.Apply(parse, env);
     string? outputText = parse.GetValue(output);
     if (string.IsNullOrWhiteSpace(outputText))
       throw new UsageException("missing -o: give the frame files, e.g. -o frames/out####.png");
     FramePattern pattern = FramePattern.Parse(outputText, env.WorkingDirectory);
-    FrameRange? range = parse.GetValue(frames) is string f ? FrameRange.Parse(f) : null;
+    FrameRange? range = parse.GetValue(frames) is string f ? FrameRange.Parse(f) : watching ? new FrameRange(0, 0) : null;
     ShardSpec part = parse.GetValue(shard) is string s ? ShardSpec.Parse(s) : ShardSpec.All;
     ParallelMode requested = ParseParallel(parse.GetValue(parallel) ?? "auto");
     double open = parse.GetValue(shutter);

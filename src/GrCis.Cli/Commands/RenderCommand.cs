@@ -9,6 +9,7 @@ using GrCis.Cli.Jobs;
 using GrCis.Cli.Output;
 using GrCis.Cli.ProgressViews;
 using GrCis.Cli.SceneSources;
+using GrCis.Cli.Watching;
 using GrCis.Scripting;
 using Rendering;
 using Rendering.Execution;
@@ -54,6 +55,7 @@ public sealed class RenderCommand
 
   readonly Option<bool> quiet = new("--quiet", "-q") { Description = "Print nothing on success: no progress, no summary (notes, warnings and errors still go to stderr)" };
   readonly ScriptOptions scriptOptions = new();
+  readonly WatchOption watch = new("the image");
 
   public Command Build(CliEnvironment env)
   {
@@ -64,6 +66,7 @@ public sealed class RenderCommand
     render.AddTo(cmd);
     memoryLimit.AddTo(cmd);
     scriptOptions.AddTo(cmd);
+    watch.AddTo(cmd);
     cmd.SetAction(parse => Execute(parse, env));
     return cmd;
   }
@@ -71,8 +74,19 @@ public sealed class RenderCommand
   int Execute(ParseResult parse, CliEnvironment env)
   {
     // Validate everything before any work so usage errors never leave files behind.
-    RenderSettings settings = render.Read(parse);
+    render.Read(parse);
     memoryLimit.Apply(parse, env);
+    if (!watch.IsSet(parse))
+      return RenderOnce(parse, env);
+    if (parse.GetValue(tiles) != null)
+      throw new UsageException("--watch renders the whole image; --tiles is for a render split over processes");
+    return WatchOption.Run(env, parse.GetValue(scene), parse.GetValue(scriptOptions.Modules) ?? [], passEnv => RenderOnce(parse, passEnv));
+  }
+
+  /// <summary>One render (the whole command, or one pass of <c>--watch</c>).</summary>
+  int RenderOnce(ParseResult parse, CliEnvironment env)
+  {
+    RenderSettings settings = render.Read(parse);
     ShardSpec? part = parse.GetValue(tiles) is string t ? ShardSpec.Parse(t, "--tiles") : null;
 
     ISceneSource source = scriptOptions.Resolve(parse, parse.GetValue(scene), env);

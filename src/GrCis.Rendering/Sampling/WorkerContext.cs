@@ -60,6 +60,9 @@ public sealed class WorkerContext
   /// <summary>Folder of the script whose code runs here (<see cref="Utilities.DataFiles"/>).</summary>
   internal string? ScriptDirectory;
 
+  /// <summary>Where <see cref="Utilities.DataFiles"/> notes the files it found on this thread (null: nowhere).</summary>
+  internal System.Collections.Generic.ICollection<string>? DataFileLog;
+
   // The components' per-worker state, by their keys' indices.
   object?[] slots = new object?[8];
 

@@ -54,6 +54,28 @@ public static class DataFiles
   public static string Resolve(string path)
   {
     ArgumentException.ThrowIfNullOrEmpty(path);
+    string found = Find(path);
+    if (Rendering.Execution.WorkerContext.Current.DataFileLog is ICollection<string> log && File.Exists(found))
+      log.Add(Path.GetFullPath(found));
+    return found;
+  }
+
+  /// <summary>
+  /// While the scope lives, every existing file <see cref="Resolve"/> finds on this thread (the script's own reads, its
+  /// textures and meshes) is added to <paramref name="log"/> as a full path: a front end that re-renders when the scene's
+  /// files change (<c>grcis render --watch</c>) learns which files those are.
+  /// </summary>
+  public static LogScope LogReads(ICollection<string> log)
+  {
+    ArgumentNullException.ThrowIfNull(log);
+    Rendering.Execution.WorkerContext c = Rendering.Execution.WorkerContext.Current;
+    ICollection<string>? previous = c.DataFileLog;
+    c.DataFileLog = log;
+    return new LogScope(c, previous);
+  }
+
+  static string Find(string path)
+  {
     if (File.Exists(path))
       return path;
     string portable = Path.DirectorySeparatorChar == '\\' ? path : path.Replace('\\', '/');
@@ -224,6 +246,26 @@ public static class DataFiles
     {
       if (context != null)
         context.ScriptDirectory = previous;
+    }
+  }
+
+  /// <summary>Restores the thread's previous read log (see <see cref="LogReads"/>).</summary>
+  public readonly struct LogScope : IDisposable
+  {
+    readonly Rendering.Execution.WorkerContext? context;
+    readonly ICollection<string>? previous;
+
+    internal LogScope(Rendering.Execution.WorkerContext context, ICollection<string>? previous)
+    {
+      this.context = context;
+      this.previous = previous;
+    }
+
+    /// <summary>Stops logging into this scope's log.</summary>
+    public void Dispose()
+    {
+      if (context != null)
+        context.DataFileLog = previous;
     }
   }
 }

@@ -64,6 +64,19 @@ public sealed class DataFilesTests : IDisposable
   }
 
   [Fact]
+  public void Files_found_while_a_read_log_is_in_use_are_logged_as_full_paths()
+  {
+    var log = new System.Collections.Generic.List<string>();
+    using (DataFiles.LogReads(log))
+    {
+      ResolveFrom(project, @"..\..\Textures\Marble.jpg");
+      ResolveFrom(project, "missing.txt");   // not found: nothing to watch
+    }
+    ResolveFrom(scenes, "scene.yaml");       // after the scope: not logged
+    Assert.Equal([Path.Combine(project, "Textures", "Marble.jpg")], log);
+  }
+
+  [Fact]
   public void A_path_for_the_project_folder_is_found_from_a_script_in_data_rtscenes()
   {
     // GrCis ran data/rtscenes/*.cs from 048rtmontecarlo-script/bin/Debug: "..\..\Textures" is that project's.
