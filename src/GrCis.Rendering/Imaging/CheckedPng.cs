@@ -297,7 +297,8 @@ public sealed class CheckedPng
     }
     catch (InvalidDataException e)
     {
-      throw new InvalidDataException($"damaged image data (zlib: {e.Message})", e);
+      // The runtime's message names an "unsupported compression method" even for a checksum failure.
+      throw new InvalidDataException("damaged image data (zlib: invalid deflate data or an Adler-32 mismatch)", e);
     }
     if (more)
       throw new InvalidDataException("more image data than the header declares");
