@@ -68,10 +68,11 @@ public class AnimationPartsTests
   {
     using var dir = new TempDirectory();
     var size = new ImageSize(6, 4);
-    var store = new FrameStore(FramePattern.Parse("f##.png", dir.Path), size, 1.0);
+    var timeline = new Rendering.AnimationTimeline(0, 10, 1);
+    var store = new FrameStore(FramePattern.Parse("f##.png", dir.Path), size, 1.0, new FrameFingerprint("clock", "test", size, 1, 0, timeline, 0));
     store.Prepare();
     RenderPlan settings = Precedence.Resolve(new RenderSettings { Width = size.Width, Height = size.Height }, GivenSettings.None, null);
-    var renderer = new FrameRenderer(TestAnimations.Clock(), settings, new Rendering.AnimationTimeline(0, 10, 1));
+    var renderer = new FrameRenderer(TestAnimations.Clock(), settings, timeline);
     var saved = new System.Collections.Generic.List<int>();
     int n = new FrameScheduler(renderer, store).Run(Enumerable.Range(2, count).ToList(), mode, threads, saved.Add, default);
 

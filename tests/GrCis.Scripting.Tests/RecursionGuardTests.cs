@@ -59,6 +59,25 @@ public sealed class RecursionGuardTests : IDisposable
     Assert.Contains($"recursion deeper than {Recursion.MaxDepth} calls", ex.Message);
   }
 
+  [Theory]
+  [InlineData("IEnumerable<int> F(int n)\n{\n  foreach (int x in F(n + 1))\n    yield return x;\n  yield return n;\n}\nforeach (int x in F(0)) { }", 3)]
+  [InlineData("async System.Threading.Tasks.Task<int> F(int n) => await F(n + 1) + 1;\nawait F(0);", 1)]
+  [InlineData("async System.Threading.Tasks.Task F(int n)\n{\n  await F(n + 1);\n}\nawait F(0);", 3)]
+  [InlineData("System.Func<int, System.Threading.Tasks.Task<int>> f = null;\nf = async n => await f(n + 1) + 1;\nawait f(0);", 2)]
+  [InlineData("System.Func<int, System.Threading.Tasks.Task> g = null;\ng = async n => { await g(n + 1); };\nawait g(0);", 2)]
+  [InlineData("var d = new Deep();\nforeach (int x in d.Items) { }\nclass Deep\n{\n  public IEnumerable<int> Items { get { foreach (int x in new Deep().Items) yield return x; yield return 1; } }\n}", 5)]
+  public void A_recursion_through_iterators_or_async_bodies_is_a_runtime_error_at_its_line(string text, int line)
+  {
+    string path = Write("deep.cs", text + "\n");
+    CompiledScript script = host.Compile(path);
+    // 1 MiB, about a thread pool thread's: the check leaves room for the error whatever the stack.
+    Exception? e = OnThread(() => host.Run(script), 1 << 20);
+    var ex = Assert.IsType<ScriptRuntimeException>(e);
+    Assert.Equal(path, ex.Path);
+    Assert.Equal(line, ex.Line);
+    Assert.Contains("fills the thread's stack", ex.Message);
+  }
+
   [Fact]
   public void On_a_small_stack_the_stack_left_ends_it_first()
   {
@@ -96,7 +115,16 @@ public sealed class RecursionGuardTests : IDisposable
       using System.Linq.Expressions;
       using System.Threading.Tasks;
       IEnumerable<int> Gen(int n) { for (int i = 0; i < n; i++) yield return i; }
+      IEnumerable<int> None() { yield break; }
+      IEnumerable<int> Tree(int n) { if (n > 0) foreach (int x in Tree(n - 1)) yield return x + 1; else yield return 0; }
       async Task<int> Later(int n) { await Task.Yield(); return n * 2; }
+      async Task<int> Sooner(int n) => n == 0 ? 0 : await Sooner(n - 1) + 1;
+      async Task Nap() => await Task.Yield();
+      async ValueTask<int> Value2() { await Task.Yield(); return 2; }
+      Func<int, Task<int>> lazy = async n => await Later(n) + 1;
+      Func<Task> napping = async () => await Task.Yield();
+      napping().Wait();
+      Nap().Wait();
       static int Twice(int n) => n * 2;
       void Nothing() { }
       void Fail() => throw new InvalidOperationException("no");
@@ -107,7 +135,8 @@ public sealed class RecursionGuardTests : IDisposable
       act(1);
       var box = new Box(3);
       box.Value = 4;
-      int sum = Gen(4).Sum() + Later(5).Result + compiled(-2) + box.Value + box.Doubled + box[2] + (int)(new Box(1) + new Box(2)).Value;
+      int sum = Gen(4).Sum() + None().Count() + Tree(100).Single() - 100 + Sooner(300).Result - 300 + Value2().Result - 2 + lazy(1).Result - 3 +
+                Later(5).Result + compiled(-2) + box.Value + box.Doubled + box[2] + (int)(new Box(1) + new Box(2)).Value;
       try { Fail(); } catch (InvalidOperationException) { sum += 1000; }
       try { Value(); } catch (InvalidOperationException) { sum += 1000; }
       ref int First(int[] a) => ref a[0];

@@ -8,19 +8,23 @@ namespace GrCis.Cli.Animation;
 /// <summary>
 /// The frame files of an animation on disk. A frame is written under a temporary sibling name and
 /// renamed when complete (<see cref="PngFile.Save(string, Rgb8Image, PngEncoder?)"/>), so a killed
-/// process leaves whole frames and, at worst, temporary files, which the next run removes.
+/// process leaves whole frames and, at worst, temporary files, which the next run removes. Every frame
+/// carries its <see cref="FrameFingerprint"/>, which <see cref="Check"/> verifies for <c>--resume</c>.
 /// </summary>
 public sealed class FrameStore
 {
   readonly FramePattern pattern;
   readonly ImageSize size;
   readonly double gamma;
+  readonly FrameFingerprint fingerprint;
 
-  public FrameStore(FramePattern pattern, ImageSize size, double gamma)
+  public FrameStore(FramePattern pattern, ImageSize size, double gamma, FrameFingerprint fingerprint)
   {
+    ArgumentNullException.ThrowIfNull(fingerprint);
     this.pattern = pattern;
     this.size = size;
     this.gamma = gamma;
+    this.fingerprint = fingerprint;
   }
 
   public FramePattern Pattern => pattern;
@@ -46,26 +50,60 @@ public sealed class FrameStore
     }
   }
 
+  /// <summary>True when frame <paramref name="frame"/> is done: <see cref="Check"/> keeps it.</summary>
+  public bool IsComplete(int frame) => Check(frame).State == FrameState.Kept;
+
   /// <summary>
-  /// True when frame <paramref name="frame"/> is done: its final file exists, decodes as a PNG and
-  /// has the size being rendered (a frame left from a run at another size is rendered again).
+  /// Whether frame <paramref name="frame"/>'s file is a whole frame of this render: every chunk's CRC and
+  /// the image data's zlib checksum hold (<see cref="CheckedPng"/>), its fingerprint equals this render's
+  /// for that frame, and the decoded pixels match the checksum in it. Anything else is rendered again.
   /// </summary>
-  public bool IsComplete(int frame)
+  public FrameCheck Check(int frame)
   {
     string file = pattern.FileOf(frame);
     if (!File.Exists(file))
-      return false;
+      return FrameCheck.Missing;
     try
     {
-      Rgb8Image image = PngFile.Load(file);
-      return image.Width == size.Width && image.Height == size.Height;
+      // Judged by its length before it is opened: a FIFO (length 0) would wait for a writer, and a
+      // huge file is no frame of this size. Deflate adds at most a few bytes per 16 KiB block.
+      long length = new FileInfo(file).Length;
+      long raw = (long)size.Height * (1 + 3L * size.Width);
+      long max = raw + raw / 256 + (1 << 20);
+      if (length < MinPngLength)
+        return new FrameCheck(FrameState.Corrupt, length == 0 ? "empty" : $"cut off ({length} bytes)");
+      if (length > max)
+        return new FrameCheck(FrameState.Corrupt, $"{length} bytes, more than a {size} frame takes");
+
+      CheckedPng png = CheckedPng.Read(file, max);
+      if (!png.Text.TryGetValue(FrameFingerprint.Keyword, out string? stored))
+        return new FrameCheck(FrameState.NoFingerprint);
+      FrameCheck verdict = fingerprint.Compare(frame, stored, out string pixels);
+      if (verdict.State != FrameState.Kept)
+        return verdict;
+      Rgb8Image image = png.Decode();
+      if (image.Width != size.Width || image.Height != size.Height)
+        return new FrameCheck(FrameState.Corrupt, $"{image.Width}x{image.Height} pixels where its fingerprint says {size}");
+      if (FrameFingerprint.PixelHash(image) != pixels)
+        return new FrameCheck(FrameState.Corrupt, "its pixels do not match their checksum");
+      return FrameCheck.Kept;
     }
-    catch (Exception e) when (e is not OutOfMemoryException)
+    catch (InvalidDataException e)
     {
-      // Whatever a damaged file makes the decoder throw, the frame is not complete: render it again.
-      return false;
+      return new FrameCheck(FrameState.Corrupt, Reason(e.Message, file));
+    }
+    catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+    {
+      return new FrameCheck(FrameState.Corrupt, $"unreadable ({(e is UnauthorizedAccessException ? "permission denied" : e.Message)})");
     }
   }
+
+  // Signature, IHDR, an IDAT and IEND: no PNG is shorter.
+  const long MinPngLength = 8 + 25 + 12 + 12;
+
+  /// <summary>The reader's message without the path it starts with (the report names the file).</summary>
+  static string Reason(string message, string file) =>
+    message.StartsWith(file + ": ", StringComparison.Ordinal) ? message[(file.Length + 2)..] : message;
 
   /// <summary>Deletes temporary files a killed run left for this frame; returns how many.</summary>
   public int RemoveStaleTemporaries(int frame)
@@ -90,14 +128,18 @@ public sealed class FrameStore
     return removed;
   }
 
-  /// <summary>Writes frame <paramref name="frame"/> atomically, with the render display encoding (<see cref="DisplayEncoding.ForRender"/>).</summary>
+  /// <summary>
+  /// Writes frame <paramref name="frame"/> atomically, with the render display encoding (<see cref="DisplayEncoding.ForRender"/>)
+  /// and its fingerprint.
+  /// </summary>
   /// <exception cref="CliFailure">The frame could not be written; no partial file remains.</exception>
   public void Save(int frame, FloatImage image)
   {
     string file = pattern.FileOf(frame);
     try
     {
-      PngFile.Save(file, DisplayEncoding.ForRender(gamma).Encode(image));
+      Rgb8Image pixels = DisplayEncoding.ForRender(gamma).Encode(image);
+      PngFile.Save(file, pixels, fingerprint.Entries(frame, pixels));
     }
     catch (ImageSaveException e)
     {

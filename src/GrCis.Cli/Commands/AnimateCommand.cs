@@ -1,4 +1,6 @@
 using System;
+using System.Collections.Generic;
+using System.Linq;
 using System.CommandLine;
 using System.Globalization;
 using System.IO;
@@ -47,7 +49,10 @@ public sealed class AnimateCommand
     HelpName = "i/n",
   };
 
-  readonly Option<bool> resume = new("--resume") { Description = "Skip frames whose files are complete (exist and decode)" };
+  readonly Option<bool> resume = new("--resume")
+  {
+    Description = "Skip frames already made by this same render (intact, fingerprint and pixel checksum match); redo the others and say why",
+  };
 
   readonly Option<string?> video = new("--video")
   {
@@ -147,16 +152,23 @@ public sealed class AnimateCommand
     if (setup.Synthesizer == null && settings.SamplesPerPixel > 1 && settings.EffectiveSamplesPerPixel != settings.SamplesPerPixel)
       env.Error.WriteLine($"grcis: note: --spp {settings.SamplesPerPixel} rounded up to {settings.EffectiveSamplesPerPixel} (a square grid)");
 
-    var store = new FrameStore(pattern, settings.Size, settings.Gamma);
+    var fingerprint = FrameFingerprint.Of(source, setup, Modules(parse, env), plan.Timeline, open);
+    var store = new FrameStore(pattern, settings.Size, settings.Gamma, fingerprint);
     store.Prepare();
     var todo = new System.Collections.Generic.List<int>(plan.Frames.Count);
+    var found = new ResumeReport();
+    bool resuming = parse.GetValue(resume);
     foreach (int k in plan.Frames)
     {
       store.RemoveStaleTemporaries(k);
-      if (!parse.GetValue(resume) || !store.IsComplete(k))
+      FrameCheck check = resuming ? store.Check(k) : FrameCheck.Missing;
+      found.Add(pattern.FileOf(k), check);
+      if (check.State != FrameState.Kept)
         todo.Add(k);
     }
     int skipped = plan.Frames.Count - todo.Count;
+    if (found.Redone > 0)
+      env.Error.WriteLine("grcis: note: --resume is " + found.Describe("redoing"));
 
     var renderer = new FrameRenderer(setup.Scene, setup.Plan, plan.Timeline, open);
     foreach (string note in renderer.Parts.Notes())
@@ -201,7 +213,11 @@ public sealed class AnimateCommand
 
     bool silent = parse.GetValue(quiet);
     if (!silent)
+    {
       env.Out.WriteLine(Summary(pattern, plan, saved, skipped, mode, threads, clock.Elapsed));
+      if (found.Redone > 0)
+        env.Out.WriteLine(found.Describe("redid"));
+    }
 
     if (videoPath != null)
     {
@@ -219,6 +235,9 @@ public sealed class AnimateCommand
     }
     return ExitCodes.Success;
   }
+
+  IEnumerable<string> Modules(ParseResult parse, CliEnvironment env) =>
+    (parse.GetValue(scriptOptions.Modules) ?? []).Select(m => Path.GetFullPath(m, env.WorkingDirectory));
 
   ISceneSource ResolveScene(CliEnvironment env, ParseResult parse, string? spec)
   {

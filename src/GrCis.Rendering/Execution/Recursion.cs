@@ -31,6 +31,18 @@ public static class Recursion
     return c;
   }
 
+  /// <summary>
+  /// Called on entry to every user iterator and async body, which <see cref="Enter"/> does not count (their pieces run
+  /// apart, possibly on other threads, so a count would be wrong): throws while some stack is left when it is nearly
+  /// full, as a recursion through iterators or async methods that never wait fills it.
+  /// </summary>
+  /// <exception cref="RecursionTooDeepException">The thread's stack is nearly full.</exception>
+  public static void CheckStack()
+  {
+    if (!RuntimeHelpers.TryEnsureSufficientExecutionStack())
+      throw new RecursionTooDeepException("recursion through iterators or async methods fills the thread's stack (is there a case that ends it?)");
+  }
+
   [MethodImpl(MethodImplOptions.NoInlining)]
   static void Check(WorkerContext c, int depth)
   {

@@ -1,5 +1,7 @@
 using System;
 using System.Buffers.Binary;
+using System.Collections.Generic;
+using System.Linq;
 using System.IO;
 using System.IO.Compression;
 using System.Text;
@@ -68,6 +70,24 @@ public sealed class PngEncoder
     EncodeRgb(image.Data, image.Width, image.Height, output);
   }
 
+  /// <summary>
+  /// Writes <paramref name="image"/> with text entries, each an uncompressed <c>iTXt</c> chunk (UTF-8 text)
+  /// placed before the image data, where readers of metadata look first. The pixels are those of
+  /// <see cref="Encode(Rgb8Image, Stream)"/>; only the chunks are added.
+  /// </summary>
+  /// <param name="image">The pixels.</param>
+  /// <param name="output">Where the file goes.</param>
+  /// <param name="text">Keyword and text pairs; a keyword is 1 to 79 printable Latin-1 characters without
+  /// leading, trailing or double spaces (the PNG rule).</param>
+  /// <exception cref="ArgumentException">A keyword breaks the PNG rule.</exception>
+  public void Encode(Rgb8Image image, Stream output, IEnumerable<KeyValuePair<string, string>> text)
+  {
+    ArgumentNullException.ThrowIfNull(image);
+    ArgumentNullException.ThrowIfNull(text);
+    byte[][] chunks = text.Select(t => TextChunk(t.Key, t.Value)).ToArray();
+    EncodePacked(image.Data, image.Width, image.Height, 3, 2, output, chunks);
+  }
+
   /// <summary>Quantizes a linear framebuffer with <see cref="Rgb8Image.FromFloatImage"/> and encodes it.</summary>
   public void Encode(FloatImage image, double gamma, Stream output) =>
     Encode(Rgb8Image.FromFloatImage(image, gamma), output);
@@ -80,7 +100,8 @@ public sealed class PngEncoder
   public void EncodeRgba(ReadOnlySpan<byte> rgba, int width, int height, Stream output) =>
     EncodePacked(rgba, width, height, 4, 6, output);
 
-  private void EncodePacked(ReadOnlySpan<byte> pixels, int width, int height, int channels, byte colorType, Stream output)
+  private void EncodePacked(ReadOnlySpan<byte> pixels, int width, int height, int channels, byte colorType, Stream output,
+    IReadOnlyList<byte[]>? textChunks = null)
   {
     ArgumentNullException.ThrowIfNull(output);
     if (width <= 0 || height <= 0)
@@ -88,7 +109,24 @@ public sealed class PngEncoder
     long expected = (long)width * height * channels;
     if (pixels.Length != expected)
       throw new ArgumentException($"Pixel buffer has {pixels.Length} bytes but {width}x{height} with {channels} channels needs {expected}.", nameof(pixels));
-    WritePng(output, width, height, 8, colorType, pixels, ReadOnlySpan<byte>.Empty);
+    WritePng(output, width, height, 8, colorType, pixels, ReadOnlySpan<byte>.Empty, textChunks);
+  }
+
+  /// <summary>The data of an <c>iTXt</c> chunk: keyword, no compression, no language, UTF-8 text.</summary>
+  internal static byte[] TextChunk(string keyword, string text)
+  {
+    ArgumentNullException.ThrowIfNull(keyword);
+    ArgumentNullException.ThrowIfNull(text);
+    bool valid = keyword.Length is >= 1 and <= 79 && keyword[0] != ' ' && keyword[^1] != ' ' && !keyword.Contains("  ", StringComparison.Ordinal) &&
+      keyword.All(c => c is >= ' ' and <= '~' or >= '\u00a1' and <= '\u00ff');
+    if (!valid)
+      throw new ArgumentException($"PNG text keyword '{keyword}' must be 1 to 79 printable Latin-1 characters without leading, trailing or double spaces.", nameof(keyword));
+    byte[] body = Encoding.UTF8.GetBytes(text);
+    byte[] data = new byte[keyword.Length + 5 + body.Length];
+    Encoding.Latin1.GetBytes(keyword, data);
+    // After the keyword: its NUL, compression flag 0, method 0, empty language tag and translated keyword (two NULs).
+    body.CopyTo(data, keyword.Length + 5);
+    return data;
   }
 
   /// <summary>
@@ -97,7 +135,7 @@ public sealed class PngEncoder
   /// gray, palette and 16-bit files; it does not validate the depth/colour-type combination.
   /// </summary>
   internal void WritePng(Stream output, int width, int height, byte bitDepth, byte colorType,
-    ReadOnlySpan<byte> scanlines, ReadOnlySpan<byte> palette)
+    ReadOnlySpan<byte> scanlines, ReadOnlySpan<byte> palette, IReadOnlyList<byte[]>? textChunks = null)
   {
     int channels = colorType switch { 0 => 1, 2 => 3, 3 => 1, 4 => 2, 6 => 4, _ => throw new ArgumentOutOfRangeException(nameof(colorType)) };
     int bitsPerPixel = channels * bitDepth;
@@ -119,6 +157,8 @@ public sealed class PngEncoder
     WriteChunk(output, "IHDR", ihdr);
     if (!palette.IsEmpty)
       WriteChunk(output, "PLTE", palette);
+    foreach (byte[] chunk in textChunks ?? [])
+      WriteChunk(output, "iTXt", chunk);
 
     using MemoryStream compressed = new();
     using (ZLibStream zlib = new(compressed, _compressionLevel, leaveOpen: true))

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 
 namespace Rendering.Imaging;
@@ -12,6 +13,18 @@ public static class PngFile
     ArgumentNullException.ThrowIfNull(image);
     PngEncoder e = encoder ?? PngEncoder.Default;
     AtomicFile.Write(path, s => e.Encode(image, s));
+  }
+
+  /// <summary>
+  /// Saves <paramref name="image"/> with text entries (<see cref="PngEncoder.Encode(Rgb8Image, Stream, IEnumerable{KeyValuePair{string, string}})"/>),
+  /// atomically; <see cref="CheckedPng"/> reads them back.
+  /// </summary>
+  /// <exception cref="ImageSaveException">The file could not be written; an existing target is unchanged.</exception>
+  public static void Save(string path, Rgb8Image image, IReadOnlyList<KeyValuePair<string, string>> text)
+  {
+    ArgumentNullException.ThrowIfNull(image);
+    ArgumentNullException.ThrowIfNull(text);
+    AtomicFile.Write(path, s => PngEncoder.Default.Encode(image, s, text));
   }
 
   /// <summary>Quantizes a linear framebuffer (see <see cref="Rgb8Image.FromFloatImage"/>) and saves it.</summary>

@@ -13,8 +13,10 @@ namespace GrCis.Scripting.Compilation;
 /// a recursion without end stops with an exception naming its line (<see cref="Rendering.Execution.Recursion"/>)
 /// instead of a stack overflow that kills the process. The guard goes on the body's own lines: an expression body
 /// <c>=&gt; e;</c> becomes a block in place (<c>=&gt;</c> and <c>;</c> are overwritten, the rest inserted), so no line
-/// moves. Async methods and iterators are left alone: their body runs in pieces, possibly on other threads, and a
-/// count kept across those pieces would be wrong.
+/// moves. Async and iterator bodies run in pieces, possibly on other threads, so a count kept across those pieces would
+/// be wrong: they begin with a stateless check of the stack left instead (<see cref="Rendering.Execution.Recursion.CheckStack"/>),
+/// which ends a recursion through them (an iterator enumerating itself, an async method awaiting itself without ever
+/// waiting) before the stack overflows.
 /// </summary>
 internal static class RecursionGuards
 {
@@ -23,6 +25,7 @@ internal static class RecursionGuards
   const string Enter = "var " + Variable + "=global::Rendering.Execution.Recursion.Enter();try{";
   // The decrement inline (a field of the thread's WorkerContext): user code is not optimised, so a call would stay a call.
   const string Exit = "}finally{" + Variable + ".RecursionDepth--;}";
+  const string StackCheck = "global::Rendering.Execution.Recursion.CheckStack();";
 
   /// <summary>The guards of every declared body of <paramref name="tree"/> (parsed from <paramref name="source"/>'s text) added to it.</summary>
   public static InstrumentedSource Instrument(SyntaxTree tree, InstrumentedSource source)
@@ -32,8 +35,14 @@ internal static class RecursionGuards
     {
       switch (node)
       {
+        case MethodDeclarationSyntax m when IsAsync(m.Modifiers):
+          GuardAsync(m.Body, m.ExpressionBody, m.SemicolonToken, AsyncReturnsValue(m.ReturnType), edits);
+          break;
         case BaseMethodDeclarationSyntax m when !IsAsync(m.Modifiers):
           Guard(m.Body, m.ExpressionBody, m.SemicolonToken, ReturnsValue(m), edits);
+          break;
+        case LocalFunctionStatementSyntax f when IsAsync(f.Modifiers):
+          GuardAsync(f.Body, f.ExpressionBody, f.SemicolonToken, AsyncReturnsValue(f.ReturnType), edits);
           break;
         case LocalFunctionStatementSyntax f when !IsAsync(f.Modifiers):
           Guard(f.Body, f.ExpressionBody, f.SemicolonToken, !IsVoid(f.ReturnType), edits);
@@ -49,6 +58,9 @@ internal static class RecursionGuards
           break;
         case AnonymousFunctionExpressionSyntax { Block: { } block } l when l.AsyncKeyword.IsKind(SyntaxKind.None):
           GuardBlock(block, edits);
+          break;
+        case AnonymousFunctionExpressionSyntax { Block: { } block }:
+          CheckAtStart(block, edits);
           break;
       }
     }
@@ -66,8 +78,7 @@ internal static class RecursionGuards
     foreach ((SyntaxTree tree, InstrumentedSource source) in sources.ToArray())
     {
       List<AnonymousFunctionExpressionSyntax> lambdas = tree.GetRoot().DescendantNodes().OfType<AnonymousFunctionExpressionSyntax>()
-        .Where(l => l.ExpressionBody != null && l.AsyncKeyword.IsKind(SyntaxKind.None) &&
-                    l.ExpressionBody.DescendantNodesAndSelf().OfType<InvocationExpressionSyntax>().Any())
+        .Where(l => l.ExpressionBody != null && l.ExpressionBody.DescendantNodesAndSelf().OfType<InvocationExpressionSyntax>().Any())
         .ToList();
       if (lambdas.Count == 0)
         continue;
@@ -80,9 +91,13 @@ internal static class RecursionGuards
             ns.ToDisplayString() == "System.Linq.Expressions")
           continue;
         ExpressionSyntax body = l.ExpressionBody!;
-        string value = method.ReturnsVoid || body is ThrowExpressionSyntax ? "" : "return ";
-        edits.Add((new TextSpan(body.SpanStart, 0), "{" + Enter + value, l.SpanStart));
-        edits.Add((new TextSpan(body.Span.End, 0), ";" + Exit + "}", l.SpanStart));
+        bool isAsync = !l.AsyncKeyword.IsKind(SyntaxKind.None);
+        // An async lambda's value is its task's result: none for Task, ValueTask or void.
+        bool none = method.ReturnsVoid || body is ThrowExpressionSyntax ||
+                    isAsync && method.ReturnType is INamedTypeSymbol { Name: "Task" or "ValueTask", IsGenericType: false };
+        string value = none ? "" : "return ";
+        edits.Add((new TextSpan(body.SpanStart, 0), "{" + (isAsync ? StackCheck : Enter) + value, l.SpanStart));
+        edits.Add((new TextSpan(body.Span.End, 0), ";" + (isAsync ? "" : Exit) + "}", l.SpanStart));
       }
       if (edits.Count == 0)
         continue;
@@ -100,7 +115,9 @@ internal static class RecursionGuards
   {
     if (body != null)
     {
-      if (!IsIterator(body))
+      if (IsIterator(body))
+        CheckAtStart(body, edits);
+      else
         GuardBlock(body, edits);
     }
     else if (arrow != null && !semicolon.IsMissing)
@@ -109,6 +126,39 @@ internal static class RecursionGuards
       edits.Add((arrow.ArrowToken.Span, "{" + Enter + value));
       edits.Add((semicolon.Span, ";" + Exit + "}"));
     }
+  }
+
+  /// <summary>An async body begins with the stack check; an expression body becomes a block in place.</summary>
+  static void GuardAsync(BlockSyntax? body, ArrowExpressionClauseSyntax? arrow, SyntaxToken semicolon, bool returnsValue,
+                         List<(TextSpan Span, string Text)> edits)
+  {
+    if (body != null)
+      CheckAtStart(body, edits);
+    else if (arrow != null && !semicolon.IsMissing)
+    {
+      string value = returnsValue && arrow.Expression is not ThrowExpressionSyntax ? "return " : "";
+      edits.Add((arrow.ArrowToken.Span, "{" + StackCheck + value));
+      edits.Add((semicolon.Span, ";}"));
+    }
+  }
+
+  static void CheckAtStart(BlockSyntax block, List<(TextSpan Span, string Text)> edits)
+  {
+    if (!block.OpenBraceToken.IsMissing && !block.CloseBraceToken.IsMissing)
+      edits.Add((new TextSpan(block.OpenBraceToken.Span.End, 0), StackCheck));
+  }
+
+  /// <summary>An async method returns a value unless it is declared <c>void</c>, <c>Task</c> or <c>ValueTask</c>.</summary>
+  static bool AsyncReturnsValue(TypeSyntax type)
+  {
+    SimpleNameSyntax? name = type switch
+    {
+      QualifiedNameSyntax q => q.Right,
+      AliasQualifiedNameSyntax a => a.Name,
+      SimpleNameSyntax n => n,
+      _ => null,
+    };
+    return !IsVoid(type) && name is not IdentifierNameSyntax { Identifier.ValueText: "Task" or "ValueTask" };
   }
 
   /// <summary><c>T P =&gt; e;</c> becomes <c>T P {get{… return e;…}}</c>.</summary>
