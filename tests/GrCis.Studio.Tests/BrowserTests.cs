@@ -37,6 +37,14 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     service.SuppressInitialDiagnosticInformation = true;
     service.HideCommandPromptWindow = true;
     var browser = new ChromeDriver(service, options, TimeSpan.FromSeconds(60));
+    Resize(browser, width, height);
+    return browser;
+  }
+
+  /// <summary>Makes the page of <paramref name="browser"/> <paramref name="width"/> by <paramref name="height"/> CSS pixels.</summary>
+  internal static void Resize(ChromeDriver browser, int width, int height)
+  {
+    browser.Manage().Window.Size = new System.Drawing.Size(width, height);
     // The window's size includes what the browser itself draws around the page: the page is made the size asked for.
     var inner = (IReadOnlyCollection<object>)Js(browser, "return [window.innerWidth, window.innerHeight];")!;
     long[] page = inner.Select(Convert.ToInt64).ToArray();
@@ -45,7 +53,6 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
       System.Drawing.Size outer = browser.Manage().Window.Size;
       browser.Manage().Window.Size = new System.Drawing.Size(outer.Width + width - (int)page[0], outer.Height + height - (int)page[1]);
     }
-    return browser;
   }
 
   /// <param name="server">What the studio's own state says, added to the message on time-out (<see cref="StudioState.Describe"/>); null = nothing.</param>

@@ -16,7 +16,8 @@ function show(text, error) {
 export function showMessages() {
   const s = state.studio;
   const other = s.tab && s.tab !== state.tab ? tookOver : "";
-  const text = [other, ...s.notes, s.error, state.pageError, state.pageNote].filter(Boolean).join("\n");
+  // Each once: a script that fails as it runs fails the same way when its values are read (the page's error) and when rendered.
+  const text = [...new Set([other, ...s.notes, s.error, state.pageError, state.pageNote].filter(Boolean))].join("\n");
   if (text !== dismissed) dismissed = "";
   show(text === dismissed ? "" : text, Boolean(s.error || state.pageError));
 }

@@ -66,7 +66,7 @@ async function loadScriptValues() {
   if (showScriptValue("width", size ? (v.width ?? $("width").value) : null) | showScriptValue("height", size ? (v.height ?? $("height").value) : null))
     state.given.delete("Size");
   if (showScriptValue("spp", v.samplesPerPixel)) state.given.delete("SamplesPerPixel");
-  $("algorithm").options[0].textContent = `scene's choice (${v.algorithm ?? "ray tracing"})`;
+  $("algorithm").options[0].textContent = `scene's (${v.algorithm ?? "ray tracing"})`;
   for (const [id, value] of [["animStart", v.start], ["animEnd", v.end], ["animFps", v.fps]])
     if (showScriptValue(id, value)) state.rangeGiven.delete(id);
   if (v.tooltip) { $("param").title = $("param").placeholder = v.tooltip; }

@@ -31,8 +31,8 @@ export const state = {
   historyFor: -1,
   viewsFor: -1,
   // Zoom and pan of the image (fitted: fitted again to each new image and view size, until the user zooms or pans); a drag
-  // in progress.
-  view: { zoom: 1, panX: 0, panY: 0, fitted: true, drag: null, hoverTimer: null },
+  // in progress; enlarge: fitting may scale the image above 1:1 (smoothly).
+  view: { zoom: 1, panX: 0, panY: 0, fitted: true, enlarge: false, drag: null, hoverTimer: null },
   // Settings the user changed since the scene was chosen: they win over the script's own values (as command-line
   // options do); the other fields show the script's values, marked, and are sent as not given.
   given: new Set(),
