@@ -30,6 +30,8 @@ public sealed class StudioSession : IDisposable
   int? samples;
   double? noise;
   IReadOnlyList<ScriptError> diagnostics = Array.Empty<ScriptError>();
+  // The scene whose script the diagnostics are in (the render's, or a saved script's being checked).
+  string? diagnosticsScene;
   // A saved script other than the watched one being compiled (Check); its number, so a stopped or replaced check says nothing.
   bool checking;
   long checkId;
@@ -77,8 +79,11 @@ public sealed class StudioSession : IDisposable
     };
     Controller.RenderCompleted += (_, e) =>
     {
+      double done;
       lock (sync)
       {
+        // A stopped render is done as far as it got, not 100 %.
+        done = e.Result.Cancelled ? fraction : 1.0;
         statistics = e.Result.Statistics.ToString();
         samples = e.Result.Cancelled ? samples : e.Result.Statistics.SamplesPerPixel;
         noise = e.Result.Cancelled ? noise : e.Result.Statistics.Noise;
@@ -87,7 +92,7 @@ public sealed class StudioSession : IDisposable
         completedId = Controller.RenderId;
         cancelled = e.Result.Cancelled;
       }
-      Show(e.Result.Image, e.Result.Gamma, 1.0);
+      Show(e.Result.Image, e.Result.Gamma, done);
     };
     Controller.Error += (_, e) =>
     {
@@ -95,6 +100,7 @@ public sealed class StudioSession : IDisposable
       {
         error = e.Message;
         diagnostics = ScriptErrors.In(e.Diagnostics, Controller.Selected?.Path);
+        diagnosticsScene = Controller.Selected?.Name;
         errorSequence++;
       }
       Changed();
@@ -190,6 +196,7 @@ public sealed class StudioSession : IDisposable
       {
         error = message;
         diagnostics = found;
+        diagnosticsScene = entry.Name;
         errorSequence++;
       }
     }
@@ -253,6 +260,7 @@ public sealed class StudioSession : IDisposable
                               Controller.LastJob?.Notes ?? Array.Empty<string>(), diagnostics,
                               Controller.Algorithm is RenderAlgorithm a ? RenderAlgorithmNames.Name(a) : null)
       {
+        DiagnosticsScene = diagnostics.Count > 0 ? diagnosticsScene : null,
         Phase = Phase(building, busy),
         Tab = Tab,
         Progressive = Controller.Progressive,

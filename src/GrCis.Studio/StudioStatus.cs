@@ -15,6 +15,9 @@ public sealed record StudioStatus(bool Rendering, int Version, double Fraction, 
   /// </summary>
   public string Phase { get; init; } = "idle";
 
+  /// <summary>The scene whose script <see cref="Diagnostics"/> are in (the render's, or a saved script's that was checked); null when there are none.</summary>
+  public string? DiagnosticsScene { get; init; }
+
   /// <summary>The page (its random id) that started the work on show; null = not known. Another id means another tab took over.</summary>
   public string? Tab { get; init; }
 

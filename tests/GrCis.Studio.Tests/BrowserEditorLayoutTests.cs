@@ -16,7 +16,8 @@ namespace GrCis.Studio.Tests;
 /// pushed out of the window, the page never scrolls sideways, an error reads as lines (not a column of characters),
 /// the settings' select boxes show their whole text; the split between the editor and the image is dragged and kept;
 /// axe-core finds no violation of any impact (load, render, editor, error, probe); an error thrown at a script's line
-/// is marked when the editor opens after the failed render. One studio and one browser for the class.
+/// is marked when the editor opens after the failed render, and only in that script; the error goes when another scene
+/// is chosen. One studio and one browser for the class.
 /// </summary>
 [Collection(BrowserCollection.Name)]
 public sealed class BrowserEditorLayoutTests(ScriptsStudioFixture studio) : IClassFixture<ScriptsStudioFixture>
@@ -142,6 +143,12 @@ public sealed class BrowserEditorLayoutTests(ScriptsStudioFixture studio) : ICla
     Assert.True(box[3] - box[1] <= 6 * line, $"{size}: the error takes {(box[3] - box[1]) / line:0} lines");
     if (full)
       AssertAccessible(browser, $"{size}, an error beside the editor", anyImpact: true);
+    // The error is at line 3 of the failing script, not of the one in the editor: nothing marked there.
+    Assert.Empty(browser.FindElements(By.CssSelector("#editor .line-error")));
+    Assert.Empty(browser.FindElements(By.CssSelector("#diagnostics li")));
+    // Another scene chosen: the error was the failing script's, and goes.
+    Choose(browser, longest);
+    Until(browser, () => !browser.FindElement(By.Id("messageBox")).Displayed, "no error once another scene is chosen");
 
     // Every script of the repository in the editor: none widens it.
     if (width == 1024)

@@ -260,6 +260,9 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     browser.SwitchTo().NewWindow(WindowType.Tab);
     browser.Navigate().GoToUrl(studio.Server.Url);
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the second tab's scene list");
+    // A new tab has taken nothing from anyone: the first tab's image is on show, with no notice.
+    Until(browser, () => browser.FindElement(By.Id("stats")).Text.StartsWith("48x36", StringComparison.Ordinal), "the render on show in the new tab");
+    Assert.DoesNotContain("Another tab", Messages());
     string second = browser.CurrentWindowHandle;
     RenderIn(browser, studio.Server.Session, "Five balls", 40, 30);
     Assert.DoesNotContain("Another tab", Messages());

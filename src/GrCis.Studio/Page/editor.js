@@ -28,7 +28,7 @@ async function openEditor() {
   ed.scene = name;
   loadSource(text, r.headers.get("ETag"));
   // The errors of a render that failed before the editor was opened (or while it showed another text) are marked now.
-  showDiagnostics(state.studio.diagnostics);
+  showDiagnostics(state.studio.diagnostics, state.studio.diagnosticsScene);
   // The file on disk is asked for its version once a second while the editor is open (a 304 while unchanged).
   clearInterval(ed.timer);
   ed.timer = setInterval(checkSource, 1000);

@@ -5,7 +5,7 @@ export const $ = id => document.getElementById(id);
 
 // A render's own part of the studio's status: what a new render starts from.
 export const freshRender = () => ({
-  fraction: 0, seconds: 0, statistics: "", samples: null, noise: null, error: null, diagnostics: [],
+  fraction: 0, seconds: 0, statistics: "", samples: null, noise: null, error: null, diagnostics: [], diagnosticsScene: null, stopped: false,
 });
 
 // This page's id: the studio has one render at a time, so a page tells when another tab's request replaced its own.
@@ -37,6 +37,10 @@ export const state = {
   // options do); the other fields show the script's values, marked, and are sent as not given.
   given: new Set(),
   rangeGiven: new Set(),
+  // This tab has had a render of its own (only then is another tab's render a takeover); the render whose error and
+  // notes are about a scene no longer chosen (not shown).
+  ownedRender: false,
+  staleRender: -1,
   // The page's own last error (a refused request) and note: shown beside the studio's until the next action.
   pageError: "",
   pageNote: "",
