@@ -30,6 +30,9 @@ public sealed class StudioSession : IDisposable
   int? samples;
   double? noise;
   IReadOnlyList<ScriptError> diagnostics = Array.Empty<ScriptError>();
+  // How far the render had got when the user stopped it: what its progress stays at (its last tiles or pass, still
+  // finishing, report more, and its completion 100 %); null while not stopped.
+  double? stoppedAt;
   // The scene whose script the diagnostics are in (the render's, or a saved script's being checked).
   string? diagnosticsScene;
   // A saved script other than the watched one being compiled (Check); its number, so a stopped or replaced check says nothing.
@@ -72,18 +75,15 @@ public sealed class StudioSession : IDisposable
     {
       lock (sync)
       {
-        fraction = e.Fraction;
+        fraction = stoppedAt ?? e.Fraction;
         elapsed = e.Elapsed;
       }
       Changed();
     };
     Controller.RenderCompleted += (_, e) =>
     {
-      double done;
       lock (sync)
       {
-        // A stopped render is done as far as it got, not 100 %.
-        done = e.Result.Cancelled ? fraction : 1.0;
         statistics = e.Result.Statistics.ToString();
         samples = e.Result.Cancelled ? samples : e.Result.Statistics.SamplesPerPixel;
         noise = e.Result.Cancelled ? noise : e.Result.Statistics.Noise;
@@ -92,7 +92,7 @@ public sealed class StudioSession : IDisposable
         completedId = Controller.RenderId;
         cancelled = e.Result.Cancelled;
       }
-      Show(e.Result.Image, e.Result.Gamma, done);
+      Show(e.Result.Image, e.Result.Gamma, 1.0);
     };
     Controller.Error += (_, e) =>
     {
@@ -209,15 +209,17 @@ public sealed class StudioSession : IDisposable
     Controller.Stop();
     lock (sync)
     {
+      stoppedAt ??= fraction;
       checkId++;
       checking = false;
     }
     Changed();
   }
 
-  /// <summary>What the studio does now: <c>compiling</c> (a script being built: compiled and run), <c>rendering</c> or <c>idle</c>.</summary>
+  /// <summary>What the studio does now: <c>compiling</c> (a script being built: compiled and run), <c>rendering</c>,
+  /// <c>stopping</c> (a render the user stopped, its workers still finishing) or <c>idle</c>.</summary>
   string Phase(bool building, bool busy) =>
-    building || checking ? "compiling" : busy ? "rendering" : "idle";
+    building || checking ? "compiling" : busy ? (stoppedAt != null ? "stopping" : "rendering") : "idle";
 
   // A render is starting (asked by the page, or a watched script changed): its state starts afresh.
   void Started()
@@ -227,6 +229,7 @@ public sealed class StudioSession : IDisposable
     {
       error = null;
       diagnostics = Array.Empty<ScriptError>();
+      stoppedAt = null;
       statistics = "";
       fraction = 0.0;
       elapsed = TimeSpan.Zero;
@@ -243,7 +246,7 @@ public sealed class StudioSession : IDisposable
     {
       image = shown;
       gamma = g;
-      fraction = done;
+      fraction = stoppedAt ?? done;
       version++;
     }
     Changed();

@@ -11,7 +11,8 @@ public sealed record StudioStatus(bool Rendering, int Version, double Fraction, 
 {
   /// <summary>
   /// <c>compiling</c> while a script is built (compiled and run: a render's, or a saved script's that is not the one
-  /// rendered), <c>rendering</c> while the pixels are computed, else <c>idle</c>.
+  /// rendered), <c>rendering</c> while the pixels are computed, <c>stopping</c> after Stop until the render has ended,
+  /// else <c>idle</c>.
   /// </summary>
   public string Phase { get; init; } = "idle";
 

@@ -3,7 +3,7 @@ import { $, state, freshRender } from "./state.js";
 import { showMessages } from "./messages.js";
 import { showDiagnostics } from "./diagnostics.js";
 
-const phaseText = { compiling: "compiling the script…", rendering: "rendering…", idle: "" };
+const phaseText = { compiling: "compiling the script…", rendering: "rendering…", stopping: "stopping…", idle: "" };
 const ownsRender = s => { if (s.tab === state.tab) state.ownedRender = true; };
 
 export function showStatus() {
