@@ -53,5 +53,6 @@ export const state = {
   // The last pixel probed (its ray tree, for the 3D view).
   probe: null,
   // Animation: the run's frames per second and whether Play steps through its frames.
-  animation: { fps: 25, playing: false, timer: null, showing: Promise.resolve() },
+  // onShow: what the status bar and History say while a frame, not a still render, is on show ("" = a still).
+  animation: { fps: 25, playing: false, timer: null, showing: Promise.resolve(), onShow: "" },
 };

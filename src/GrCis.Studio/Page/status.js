@@ -16,6 +16,7 @@ export function showStatus() {
   $("stats").textContent = s.statistics || (s.samples != null
     ? `${s.samples} spp so far` + (s.noise != null ? `, noise ${s.noise.toPrecision(3)} RMSE` : "")
     : "");
+  if (state.animation.onShow) $("stats").textContent = state.animation.onShow;
   $("stats").title = $("stats").textContent;   // in full, where the status bar cuts it
   // The first compile of a script takes seconds: say so, not a still page.
   $("phase").textContent = s.phase === "idle" && s.stopped ? "stopped" : phaseText[s.phase] ?? s.phase;
@@ -47,6 +48,7 @@ export function noteCheck() {
 export function adopt(renderId) {
   const studio = state.studio;
   if (renderId <= studio.renderId) return;   // its events came first
+  state.animation.onShow = "";   // the status bar is about this render from now on
   Object.assign(studio, freshRender(), { renderId, phase: "compiling", rendering: true, tab: state.tab });
   showStatus();
 }

@@ -4,6 +4,7 @@
 import { $, state } from "./state.js";
 import { api } from "./api.js";
 import { showError, say } from "./messages.js";
+import { showStatus } from "./status.js";
 
 const canvas = $("canvas"), ctx = canvas.getContext("2d");
 const view = state.view;
@@ -34,6 +35,12 @@ export async function showImage(version) {
   if (r.status === 404) return;
   state.shownVersion = Number(r.headers.get("X-Image-Version"));
   await draw(r);
+  // A still render on show again after animation frames: the status bar is about it again, and History once it ends.
+  if (state.animation.onShow) {
+    state.animation.onShow = "";
+    state.historyFor = -1;
+    showStatus();
+  }
 }
 
 // A newer image was announced: fetched once the one being fetched is drawn, so previews never pile up or arrive out of order.
