@@ -311,7 +311,9 @@ public sealed partial class DemoController : IDisposable
         }
         // On the UI context when one is set, so history and the display change together.
         LastResult = e.Result;
-        History.Add(RenderRecord.From(e.Result));
+        // A failed render's image (black, or cut short) is nothing to go back to.
+        if (e.Result.Error == null)
+          History.Add(RenderRecord.From(e.Result));
         // A script's or module's error already names its place (file(line,col): runtime error: …), as grcis prints it.
         if (e.Result.Error != null)
           Error?.Invoke(this, DemoErrorEventArgs.For(e.Result.Error is GrCis.Scripting.ScriptRuntimeException located

@@ -30,6 +30,11 @@ public sealed class StudioSession : IDisposable
   int? samples;
   double? noise;
   IReadOnlyList<ScriptError> diagnostics = Array.Empty<ScriptError>();
+  // How far the render had got when the user stopped it: what its progress stays at (its last tiles or pass, still
+  // finishing, report more, and its completion 100 %); null while not stopped.
+  double? stoppedAt;
+  // The scene whose script the diagnostics are in (the render's, or a saved script's being checked).
+  string? diagnosticsScene;
   // A saved script other than the watched one being compiled (Check); its number, so a stopped or replaced check says nothing.
   bool checking;
   long checkId;
@@ -70,7 +75,7 @@ public sealed class StudioSession : IDisposable
     {
       lock (sync)
       {
-        fraction = e.Fraction;
+        fraction = stoppedAt ?? e.Fraction;
         elapsed = e.Elapsed;
       }
       Changed();
@@ -95,6 +100,7 @@ public sealed class StudioSession : IDisposable
       {
         error = e.Message;
         diagnostics = ScriptErrors.In(e.Diagnostics, Controller.Selected?.Path);
+        diagnosticsScene = Controller.Selected?.Name;
         errorSequence++;
       }
       Changed();
@@ -190,6 +196,7 @@ public sealed class StudioSession : IDisposable
       {
         error = message;
         diagnostics = found;
+        diagnosticsScene = entry.Name;
         errorSequence++;
       }
     }
@@ -202,15 +209,17 @@ public sealed class StudioSession : IDisposable
     Controller.Stop();
     lock (sync)
     {
+      stoppedAt ??= fraction;
       checkId++;
       checking = false;
     }
     Changed();
   }
 
-  /// <summary>What the studio does now: <c>compiling</c> (a script being built: compiled and run), <c>rendering</c> or <c>idle</c>.</summary>
+  /// <summary>What the studio does now: <c>compiling</c> (a script being built: compiled and run), <c>rendering</c>,
+  /// <c>stopping</c> (a render the user stopped, its workers still finishing) or <c>idle</c>.</summary>
   string Phase(bool building, bool busy) =>
-    building || checking ? "compiling" : busy ? "rendering" : "idle";
+    building || checking ? "compiling" : busy ? (stoppedAt != null ? "stopping" : "rendering") : "idle";
 
   // A render is starting (asked by the page, or a watched script changed): its state starts afresh.
   void Started()
@@ -220,6 +229,7 @@ public sealed class StudioSession : IDisposable
     {
       error = null;
       diagnostics = Array.Empty<ScriptError>();
+      stoppedAt = null;
       statistics = "";
       fraction = 0.0;
       elapsed = TimeSpan.Zero;
@@ -236,7 +246,7 @@ public sealed class StudioSession : IDisposable
     {
       image = shown;
       gamma = g;
-      fraction = done;
+      fraction = stoppedAt ?? done;
       version++;
     }
     Changed();
@@ -253,6 +263,7 @@ public sealed class StudioSession : IDisposable
                               Controller.LastJob?.Notes ?? Array.Empty<string>(), diagnostics,
                               Controller.Algorithm is RenderAlgorithm a ? RenderAlgorithmNames.Name(a) : null)
       {
+        DiagnosticsScene = diagnostics.Count > 0 ? diagnosticsScene : null,
         Phase = Phase(building, busy),
         Tab = Tab,
         Progressive = Controller.Progressive,

@@ -11,9 +11,13 @@ public sealed record StudioStatus(bool Rendering, int Version, double Fraction, 
 {
   /// <summary>
   /// <c>compiling</c> while a script is built (compiled and run: a render's, or a saved script's that is not the one
-  /// rendered), <c>rendering</c> while the pixels are computed, else <c>idle</c>.
+  /// rendered), <c>rendering</c> while the pixels are computed, <c>stopping</c> after Stop until the render has ended,
+  /// else <c>idle</c>.
   /// </summary>
   public string Phase { get; init; } = "idle";
+
+  /// <summary>The scene whose script <see cref="Diagnostics"/> are in (the render's, or a saved script's that was checked); null when there are none.</summary>
+  public string? DiagnosticsScene { get; init; }
 
   /// <summary>The page (its random id) that started the work on show; null = not known. Another id means another tab took over.</summary>
   public string? Tab { get; init; }

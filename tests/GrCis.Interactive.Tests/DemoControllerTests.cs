@@ -109,6 +109,7 @@ public class DemoControllerTests
 
     Assert.False(r.Succeeded);
     Assert.Equal($"{path}(9,5): runtime error: InvalidOperationException: homework not finished", error!.Message);
+    Assert.Empty(demo.History.Items);
     GrCis.Scripting.ScriptDiagnostic d = Assert.Single(error.Diagnostics);
     Assert.Equal((path, 9, 5, "error", "InvalidOperationException", "homework not finished"), (d.Path, d.Line, d.Column, d.Severity, d.Id, d.Message));
   }

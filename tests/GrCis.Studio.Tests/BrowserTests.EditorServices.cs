@@ -23,7 +23,7 @@ public sealed partial class BrowserTests
     RenderIn(browser, studio.Server.Session, "Assisted", 320, 240);
     browser.FindElement(By.Id("edit")).Click();
     Until(browser, () => browser.FindElements(By.CssSelector("#editor .CodeMirror")).Count == 1, "the editor");
-    IWebElement input = browser.FindElement(By.CssSelector("#editor .CodeMirror textarea"));
+    IWebElement input = browser.FindElement(By.CssSelector("#editor .CodeMirror-code[contenteditable]"));
     void TypeAtEnd(string keys)
     {
       Js(browser, "const cm = document.querySelector('#editor .CodeMirror').CodeMirror; cm.focus(); cm.setCursor(cm.lineCount(), 0);");

@@ -36,6 +36,9 @@ public sealed partial class BrowserTests
     Until(browser, () => play.Enabled, "the Play button");
     string Shown() => browser.FindElement(By.Id("animFrame")).GetAttribute("data-frame") ?? "";
     Until(browser, () => Shown() == last.ToString(System.Globalization.CultureInfo.InvariantCulture), "the last frame on show");
+    // The status bar and History describe the frame on show, not the still render before it.
+    Assert.StartsWith($"animation frame {last + 1}/{last + 1}", browser.FindElement(By.Id("stats")).Text);
+    Assert.Contains("not kept in History", browser.FindElement(By.Id("historyLabel")).Text);
 
     // Play: the frames go round (from the last to the first and on).
     play.Click();

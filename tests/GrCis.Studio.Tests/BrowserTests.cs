@@ -37,6 +37,14 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     service.SuppressInitialDiagnosticInformation = true;
     service.HideCommandPromptWindow = true;
     var browser = new ChromeDriver(service, options, TimeSpan.FromSeconds(60));
+    Resize(browser, width, height);
+    return browser;
+  }
+
+  /// <summary>Makes the page of <paramref name="browser"/> <paramref name="width"/> by <paramref name="height"/> CSS pixels.</summary>
+  internal static void Resize(ChromeDriver browser, int width, int height)
+  {
+    browser.Manage().Window.Size = new System.Drawing.Size(width, height);
     // The window's size includes what the browser itself draws around the page: the page is made the size asked for.
     var inner = (IReadOnlyCollection<object>)Js(browser, "return [window.innerWidth, window.innerHeight];")!;
     long[] page = inner.Select(Convert.ToInt64).ToArray();
@@ -45,7 +53,6 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
       System.Drawing.Size outer = browser.Manage().Window.Size;
       browser.Manage().Window.Size = new System.Drawing.Size(outer.Width + width - (int)page[0], outer.Height + height - (int)page[1]);
     }
-    return browser;
   }
 
   /// <param name="server">What the studio's own state says, added to the message on time-out (<see cref="StudioState.Describe"/>); null = nothing.</param>
@@ -253,6 +260,9 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     browser.SwitchTo().NewWindow(WindowType.Tab);
     browser.Navigate().GoToUrl(studio.Server.Url);
     Until(browser, () => browser.FindElements(By.CssSelector("#scene option")).Count > 5, "the second tab's scene list");
+    // A new tab has taken nothing from anyone: the first tab's image is on show, with no notice.
+    Until(browser, () => browser.FindElement(By.Id("stats")).Text.StartsWith("48x36", StringComparison.Ordinal), "the render on show in the new tab");
+    Assert.DoesNotContain("Another tab", Messages());
     string second = browser.CurrentWindowHandle;
     RenderIn(browser, studio.Server.Session, "Five balls", 40, 30);
     Assert.DoesNotContain("Another tab", Messages());
@@ -277,7 +287,8 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     return (both[0], both[1]);
   }
 
-  static void AssertFitted(IWebDriver browser)
+  /// <summary>The image inside the view and centred; as large as fits when <paramref name="enlarged"/>, else 1:1 (<paramref name="width"/> px wide).</summary>
+  static void AssertFitted(IWebDriver browser, bool enlarged, int width)
   {
     (double[] image, double[] view) = Boxes(browser);
     Assert.True(image[0] >= view[0] - 0.5 && image[1] >= view[1] - 0.5 && image[2] <= view[2] + 0.5 && image[3] <= view[3] + 0.5,
@@ -285,7 +296,10 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     Assert.InRange(image[0] - view[0] - (view[2] - image[2]), -2.0, 2.0);
     Assert.InRange(image[1] - view[1] - (view[3] - image[3]), -2.0, 2.0);
     // As large as fits: 8 px of margin (view.js) from the view's sides or from its top and bottom.
-    Assert.True(Math.Min(image[0] - view[0], image[1] - view[1]) <= 9.0, $"image [{string.Join(", ", image)}] smaller than fits [{string.Join(", ", view)}]");
+    if (enlarged)
+      Assert.True(Math.Min(image[0] - view[0], image[1] - view[1]) <= 9.0, $"image [{string.Join(", ", image)}] smaller than fits [{string.Join(", ", view)}]");
+    else
+      Assert.Equal(width, image[2] - image[0], 1);
   }
 
   [SkippableFact]
@@ -301,8 +315,23 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     IWebElement view = browser.FindElement(By.Id("view"));
     new Actions(browser).MoveToElement(view, 10, 10).ScrollByAmount(0, -300).Perform();
     browser.FindElement(By.Id("fit")).Click();
-    AssertFitted(browser);
+    // A small image is not blown up by default: fitted, it is 1:1, centred, drawn with square pixels.
+    AssertFitted(browser, enlarged: false, 160);
+    bool Smooth() => (bool)Js(browser, "return getComputedStyle(document.getElementById('canvas')).imageRendering === 'auto';")!;
+    Assert.False(Smooth());
+
+    // Asked for, fitting enlarges it, smoothly; zoomed with the wheel, its pixels are squares again.
+    browser.FindElement(By.Id("enlarge")).Click();
+    AssertFitted(browser, enlarged: true, 160);
     Assert.True(Boxes(browser).Image[2] - Boxes(browser).Image[0] > 160, "the small image is zoomed in to fit");
+    Assert.True(Smooth());
+    Js(browser, """
+      const r = document.getElementById('view').getBoundingClientRect();
+      document.getElementById('view').dispatchEvent(new WheelEvent('wheel',
+        { deltaY: -100, clientX: (r.left + r.right) / 2, clientY: (r.top + r.bottom) / 2, bubbles: true, cancelable: true }));
+      """);
+    Assert.False(Smooth());
+    browser.FindElement(By.Id("fit")).Click();
 
     // Key 1: one image pixel per screen pixel, about the view's centre; key F fits again.
     new Actions(browser).SendKeys("1").Perform();
@@ -310,8 +339,10 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     Assert.Equal(160.0, image[2] - image[0], 1);
     Assert.InRange((image[0] + image[2]) / 2 - (box[0] + box[2]) / 2, -2.0, 2.0);
     new Actions(browser).SendKeys("f").Perform();
-    AssertFitted(browser);
+    AssertFitted(browser, enlarged: true, 160);
     Shot(browser, "studio-fit.png");
+    browser.FindElement(By.Id("enlarge")).Click();
+    AssertFitted(browser, enlarged: false, 160);
   }
 
   [SkippableFact]

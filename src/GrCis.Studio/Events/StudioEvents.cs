@@ -37,7 +37,7 @@ internal static class StudioEvents
   internal sealed record PreviewEvent(long RenderId, int Version);
 
   /// <summary>The error and the compiler diagnostics, set or cleared (null and none: the script compiled).</summary>
-  internal sealed record ErrorsEvent(long RenderId, string? Error, IReadOnlyList<ScriptError> Diagnostics);
+  internal sealed record ErrorsEvent(long RenderId, string? Error, IReadOnlyList<ScriptError> Diagnostics, string? Scene);
 
   /// <summary>A saved script's check (<c>PUT /api/source</c>'s <c>check</c>) ended; its errors, if any, came before.</summary>
   internal sealed record CheckedEvent(long RenderId, long Check, bool Compiles);
@@ -107,7 +107,7 @@ internal static class StudioEvents
     if (fresh || now.Tab != before.Tab)
       yield return ("render", new RenderEvent(id, now.Tab));
     if (now.ErrorSequence != before.ErrorSequence)
-      yield return ("errors", new ErrorsEvent(id, now.Error, now.Diagnostics));
+      yield return ("errors", new ErrorsEvent(id, now.Error, now.Diagnostics, now.DiagnosticsScene));
     if (fresh || now.Fraction != before.Fraction || now.Seconds != before.Seconds || now.Samples != before.Samples || now.Noise != before.Noise)
       yield return ("progress", new ProgressEvent(id, now.Fraction, now.Seconds, now.Samples, now.Noise));
     if (now.Version != before.Version)

@@ -4,6 +4,7 @@ import { $, state } from "./state.js";
 import { api } from "./api.js";
 import { showError } from "./messages.js";
 import { draw } from "./view.js";
+import { showStatus } from "./status.js";
 import { settings, rangeValue } from "./settings.js";
 
 const anim = state.animation;
@@ -56,6 +57,10 @@ async function showFrame(k) {
   await draw(r);
   // The shown frame: its number and its PNG, the bytes served (the file written, when frames go to a folder).
   $("animFrame").textContent = `frame ${k + 1}/${Number($("animScrub").max) + 1}`;
+  // The status bar and History describe the frame, not the still render shown before it.
+  anim.onShow = `animation ${$("animFrame").textContent}: ${$("animStatus").textContent}`;
+  $("historyLabel").textContent = $("historyLabel").title = "an animation frame (frames are not kept in History)";
+  showStatus();
   $("animFrame").dataset.frame = k;
   $("framePng").href = `api/animation/frame/${k}.png`;
   $("framePng").download = `out${String(k).padStart(4, "0")}.png`;

@@ -1,9 +1,11 @@
-// Compiler diagnostics in the editor: the line marked, the column underlined, a list below that jumps to each.
+// Compiler diagnostics in the editor: the line marked, the column underlined, a list below that jumps to each. Only
+// those of the script the editor shows: another script's lines say nothing about this one.
 import { $, state } from "./state.js";
 
-export function showDiagnostics(list) {
+export function showDiagnostics(list, scene) {
   const editor = state.editor.cm;
   if (!editor) return;
+  if (scene !== state.editor.scene) list = [];
   for (const m of state.editor.marks) m.clear ? m.clear() : editor.removeLineClass(m, "background", "line-error");
   const marks = state.editor.marks = [];
   const ul = $("diagnostics");

@@ -5,6 +5,8 @@ import { api, problemText } from "./api.js";
 import { showError, say } from "./messages.js";
 import { showStatus } from "./status.js";
 import { assist } from "./assist.js";
+import { applySplit, initSplit } from "./split.js";
+import { showDiagnostics } from "./diagnostics.js";
 
 const ed = state.editor;
 
@@ -14,14 +16,19 @@ async function openEditor() {
   if (!r.ok) { showError(`${name} is not a script file`); return; }
   const text = await r.text();
   $("editorPane").hidden = false;
+  applySplit();
   $("editorName").textContent = state.scenes.find(x => x.name === name)?.file ?? name;
   if (!ed.cm) {
-    ed.cm = CodeMirror($("editor"), { value: text, mode: "text/x-csharp", lineNumbers: true, indentUnit: 2, tabSize: 2 });
+    // The text itself is the editable element (contenteditable, not CodeMirror's hidden textarea): screen readers read
+    // it, and the region that scrolls the code is the one the keyboard is in.
+    ed.cm = CodeMirror($("editor"), { value: text, mode: "text/x-csharp", lineNumbers: true, indentUnit: 2, tabSize: 2, inputStyle: "contenteditable" });
     ed.cm.setOption("extraKeys", { "Ctrl-S": save, "Cmd-S": save });
     assist(ed.cm);
   }
   ed.scene = name;
   loadSource(text, r.headers.get("ETag"));
+  // The errors of a render that failed before the editor was opened (or while it showed another text) are marked now.
+  showDiagnostics(state.studio.diagnostics, state.studio.diagnosticsScene);
   // The file on disk is asked for its version once a second while the editor is open (a 304 while unchanged).
   clearInterval(ed.timer);
   ed.timer = setInterval(checkSource, 1000);
@@ -101,6 +108,7 @@ export async function save() {
 }
 
 export function initEditor() {
+  initSplit();
   $("edit").addEventListener("click", openEditor);
   $("save").addEventListener("click", save);
   $("closeEditor").addEventListener("click", closeEditor);

@@ -40,6 +40,7 @@ const handlers = {
     if (!current(e.renderId)) return;
     studio.error = e.error;
     studio.diagnostics = e.diagnostics;
+    studio.diagnosticsScene = e.scene;
   },
   progress(e) {
     if (!current(e.renderId)) return;
@@ -52,8 +53,9 @@ const handlers = {
   },
   done(e) {
     if (!current(e.renderId)) return;
+    // A stopped render's bar stays where it stopped: its image is not complete.
     Object.assign(studio, { statistics: e.statistics, samples: e.samples, noise: e.noise, width: e.width, height: e.height,
-      samplesPerPixel: e.samplesPerPixel, version: e.version, fraction: 1 });
+      samplesPerPixel: e.samplesPerPixel, version: e.version, fraction: e.cancelled ? studio.fraction : 1, stopped: e.cancelled });
     wantImage(e.version);
     finished(e.version);
   },

@@ -15,8 +15,12 @@ function show(text, error) {
 
 export function showMessages() {
   const s = state.studio;
-  const other = s.tab && s.tab !== state.tab ? tookOver : "";
-  const text = [other, ...s.notes, s.error, state.pageError, state.pageNote].filter(Boolean).join("\n");
+  // A fresh tab took nothing back from anyone: the notice is for a tab whose own render was replaced.
+  const other = s.tab && s.tab !== state.tab && state.ownedRender ? tookOver : "";
+  // The error and notes of a render of a scene no longer chosen are not this scene's.
+  const own = state.staleRender !== s.renderId;
+  // Each once: a script that fails as it runs fails the same way when its values are read (the page's error) and when rendered.
+  const text = [...new Set([other, ...(own ? s.notes : []), own ? s.error : "", state.pageError, state.pageNote].filter(Boolean))].join("\n");
   if (text !== dismissed) dismissed = "";
   show(text === dismissed ? "" : text, Boolean(s.error || state.pageError));
 }

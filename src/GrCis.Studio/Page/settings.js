@@ -25,10 +25,12 @@ export async function loadScenes() {
     group.appendChild(o);
   }
   if (list.selected) select.value = list.selected;
-  sceneChanged();
+  return sceneChanged();
 }
 
-export function sceneChanged() {
+export function sceneChanged(e) {
+  // Chosen by the user: the shown render's error and notes are another scene's.
+  if (e) state.staleRender = state.studio.renderId;
   const s = state.scenes.find(x => x.name === $("scene").value);
   $("edit").hidden = !s?.file;
   $("param").value = s?.param ?? "";
@@ -66,7 +68,7 @@ async function loadScriptValues() {
   if (showScriptValue("width", size ? (v.width ?? $("width").value) : null) | showScriptValue("height", size ? (v.height ?? $("height").value) : null))
     state.given.delete("Size");
   if (showScriptValue("spp", v.samplesPerPixel)) state.given.delete("SamplesPerPixel");
-  $("algorithm").options[0].textContent = `scene's choice (${v.algorithm ?? "ray tracing"})`;
+  $("algorithm").options[0].textContent = `scene's (${v.algorithm ?? "ray tracing"})`;
   for (const [id, value] of [["animStart", v.start], ["animEnd", v.end], ["animFps", v.fps]])
     if (showScriptValue(id, value)) state.rangeGiven.delete(id);
   if (v.tooltip) { $("param").title = $("param").placeholder = v.tooltip; }
@@ -98,8 +100,22 @@ export function settings() {
   };
 }
 
-// The algorithm and preview choice the studio renders with now ("" = the scene's choice), shown after a reload of the page.
+// The algorithm and preview choice the studio renders with now ("" = the scene's choice), shown after a reload of the page;
+// so are the size and samples per pixel of the render on show (a reload mid-render must not offer another size).
 export function showChoices(status) {
+  if (status.width != null && status.height != null &&
+      (Number($("width").value) !== status.width || Number($("height").value) !== status.height)) {
+    $("width").value = status.width;
+    $("height").value = status.height;
+    for (const f of ["width", "height"]) { $(f).classList.remove("script"); $(f).title = ""; }
+    state.given.add("Size");
+  }
+  if (status.samplesPerPixel != null && Number($("spp").value) !== status.samplesPerPixel) {
+    $("spp").value = status.samplesPerPixel;
+    $("spp").classList.remove("script");
+    $("spp").title = "";
+    state.given.add("SamplesPerPixel");
+  }
   $("algorithm").value = status.algorithm ?? "";
   $("progressive").value = status.progressive == null ? "" : String(status.progressive);
 }

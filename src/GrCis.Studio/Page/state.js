@@ -5,7 +5,7 @@ export const $ = id => document.getElementById(id);
 
 // A render's own part of the studio's status: what a new render starts from.
 export const freshRender = () => ({
-  fraction: 0, seconds: 0, statistics: "", samples: null, noise: null, error: null, diagnostics: [],
+  fraction: 0, seconds: 0, statistics: "", samples: null, noise: null, error: null, diagnostics: [], diagnosticsScene: null, stopped: false,
 });
 
 // This page's id: the studio has one render at a time, so a page tells when another tab's request replaced its own.
@@ -31,12 +31,16 @@ export const state = {
   historyFor: -1,
   viewsFor: -1,
   // Zoom and pan of the image (fitted: fitted again to each new image and view size, until the user zooms or pans); a drag
-  // in progress.
-  view: { zoom: 1, panX: 0, panY: 0, fitted: true, drag: null, hoverTimer: null },
+  // in progress; enlarge: fitting may scale the image above 1:1 (smoothly).
+  view: { zoom: 1, panX: 0, panY: 0, fitted: true, enlarge: false, drag: null, hoverTimer: null },
   // Settings the user changed since the scene was chosen: they win over the script's own values (as command-line
   // options do); the other fields show the script's values, marked, and are sent as not given.
   given: new Set(),
   rangeGiven: new Set(),
+  // This tab has had a render of its own (only then is another tab's render a takeover); the render whose error and
+  // notes are about a scene no longer chosen (not shown).
+  ownedRender: false,
+  staleRender: -1,
   // The page's own last error (a refused request) and note: shown beside the studio's until the next action.
   pageError: "",
   pageNote: "",
@@ -49,5 +53,6 @@ export const state = {
   // The last pixel probed (its ray tree, for the 3D view).
   probe: null,
   // Animation: the run's frames per second and whether Play steps through its frames.
-  animation: { fps: 25, playing: false, timer: null, showing: Promise.resolve() },
+  // onShow: what the status bar and History say while a frame, not a still render, is on show ("" = a still).
+  animation: { fps: 25, playing: false, timer: null, showing: Promise.resolve(), onShow: "" },
 };

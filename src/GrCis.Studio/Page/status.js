@@ -3,10 +3,12 @@ import { $, state, freshRender } from "./state.js";
 import { showMessages } from "./messages.js";
 import { showDiagnostics } from "./diagnostics.js";
 
-const phaseText = { compiling: "compiling the script…", rendering: "rendering…", idle: "" };
+const phaseText = { compiling: "compiling the script…", rendering: "rendering…", stopping: "stopping…", idle: "" };
+const ownsRender = s => { if (s.tab === state.tab) state.ownedRender = true; };
 
 export function showStatus() {
   const s = state.studio;
+  ownsRender(s);
   $("bar").style.width = (100 * s.fraction).toFixed(1) + "%";
   $("progress").setAttribute("aria-valuenow", (100 * s.fraction).toFixed(0));
   $("elapsed").textContent = s.seconds.toFixed(1) + " s";
@@ -14,13 +16,14 @@ export function showStatus() {
   $("stats").textContent = s.statistics || (s.samples != null
     ? `${s.samples} spp so far` + (s.noise != null ? `, noise ${s.noise.toPrecision(3)} RMSE` : "")
     : "");
+  if (state.animation.onShow) $("stats").textContent = state.animation.onShow;
   $("stats").title = $("stats").textContent;   // in full, where the status bar cuts it
   // The first compile of a script takes seconds: say so, not a still page.
-  $("phase").textContent = phaseText[s.phase] ?? s.phase;
+  $("phase").textContent = s.phase === "idle" && s.stopped ? "stopped" : phaseText[s.phase] ?? s.phase;
   $("phase").dataset.phase = s.phase;
   noteCheck();
   showMessages();
-  showDiagnostics(s.diagnostics);
+  showDiagnostics(s.diagnostics, s.diagnosticsScene);
   $("stop").disabled = s.phase === "idle";
   // The downloads are links: without an image (version 0, before the first preview) they lead nowhere, so they have no href.
   for (const id of ["png", "pfm"]) {
@@ -45,6 +48,7 @@ export function noteCheck() {
 export function adopt(renderId) {
   const studio = state.studio;
   if (renderId <= studio.renderId) return;   // its events came first
+  state.animation.onShow = "";   // the status bar is about this render from now on
   Object.assign(studio, freshRender(), { renderId, phase: "compiling", rendering: true, tab: state.tab });
   showStatus();
 }

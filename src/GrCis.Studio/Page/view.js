@@ -4,12 +4,17 @@
 import { $, state } from "./state.js";
 import { api } from "./api.js";
 import { showError, say } from "./messages.js";
+import { showStatus } from "./status.js";
 
 const canvas = $("canvas"), ctx = canvas.getContext("2d");
 const view = state.view;
 
 export function place() {
   canvas.style.transform = $("canvasB").style.transform = `translate(${view.panX}px, ${view.panY}px) scale(${view.zoom})`;
+  // Pixels stay sharp squares when zoomed in (to inspect them); only a fitted image enlarged on request is smoothed.
+  const smooth = view.fitted && view.enlarge && view.zoom > 1;
+  canvas.classList.toggle("smooth", smooth);
+  $("canvasB").classList.toggle("smooth", smooth);
 }
 
 export async function draw(response) {
@@ -30,6 +35,12 @@ export async function showImage(version) {
   if (r.status === 404) return;
   state.shownVersion = Number(r.headers.get("X-Image-Version"));
   await draw(r);
+  // A still render on show again after animation frames: the status bar is about it again, and History once it ends.
+  if (state.animation.onShow) {
+    state.animation.onShow = "";
+    state.historyFor = -1;
+    showStatus();
+  }
 }
 
 // A newer image was announced: fetched once the one being fetched is drawn, so previews never pile up or arrive out of order.
@@ -73,12 +84,13 @@ export async function showView() {
 }
 
 // The whole image in the view, as large as it fits (within the zoom's 1/8 to 64), centred; it stays fitted (each new
-// image, a view that changes size) until the user zooms or pans.
+// image, a view that changes size) until the user zooms or pans. Never above 1:1 unless the user asks (Enlarge): a small
+// image blown up looks worse than it is.
 const margin = 8;   // px of the view's grey around a fitted image, so its edges show
 export function fit() {
   view.fitted = true;
   const w = $("view").clientWidth, h = $("view").clientHeight;
-  view.zoom = Math.min(64, Math.max(1 / 8, Math.min((w - 2 * margin) / canvas.width, (h - 2 * margin) / canvas.height)));
+  view.zoom = Math.min(view.enlarge ? 64 : 1, Math.max(1 / 8, Math.min((w - 2 * margin) / canvas.width, (h - 2 * margin) / canvas.height)));
   view.panX = (w - canvas.width * view.zoom) / 2;
   view.panY = (h - canvas.height * view.zoom) / 2;
   place();
@@ -156,6 +168,13 @@ export function initView(onClick) {
     else if (e.key === "1") actualSize();
   });
   $("fit").addEventListener("click", fit);
+  // Enlarge (kept by the browser): a fitted image smaller than the view fills it, smoothly scaled.
+  view.enlarge = $("enlarge").checked = localStorage.getItem("grcis-enlarge") === "true";
+  $("enlarge").addEventListener("change", () => {
+    view.enlarge = $("enlarge").checked;
+    localStorage.setItem("grcis-enlarge", String(view.enlarge));
+    if (view.fitted && canvas.classList.contains("drawn")) fit();
+  });
   $("actual").addEventListener("click", actualSize);
   // The panes beside it open and close, the window changes size: a fitted image is fitted again.
   new ResizeObserver(() => { if (view.fitted && canvas.classList.contains("drawn")) fit(); }).observe($("view"));
