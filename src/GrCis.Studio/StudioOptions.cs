@@ -20,6 +20,12 @@ public sealed record StudioOptions
   /// <summary>Leave the built-in scenes out of the scene list (GrCis's <c>-nodefault</c>).</summary>
   public bool NoDefault { get; init; }
 
+  /// <summary>
+  /// Load the editor's language services in the background as the studio starts, so the page's first completion is
+  /// answered at once (<c>grcis studio</c> does; an embedding that never edits leaves it off and saves the seconds).
+  /// </summary>
+  public bool WarmEditor { get; init; }
+
   /// <summary>Where compiled scene scripts are kept between runs (null: compiled afresh in each studio).</summary>
   public GrCis.Scripting.Caching.ScriptCache? ScriptCache { get; init; }
 

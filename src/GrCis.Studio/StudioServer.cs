@@ -132,6 +132,9 @@ public sealed class StudioServer : IAsyncDisposable
     // Kestrel listens on the one endpoint configured above, so its one address names the port.
     int port = new Uri(app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses.First()).Port;
     Volatile.Write(ref guard, new AccessGuard(token, AccessGuard.HostsFor(options.Host, port, options.IsLoopback), options.IsAnyAddress ? port : 0, port));
+    // The editor's language services load while the user opens the page, not on its first completion.
+    if (options.WarmEditor)
+      _ = app.Services.GetRequiredService<EditorAssistance>().WarmAsync(app.Lifetime.ApplicationStopping);
     string shown = options.IsLoopback ? "127.0.0.1" : StudioOptions.UrlHost(options.Host);
     return new StudioServer(app, session, token, $"http://{shown}:{port}/?token={token}");
   }
@@ -151,6 +154,9 @@ public sealed class StudioServer : IAsyncDisposable
     {
     }
   }
+
+  /// <summary>The studio's editor services (tests look at their warm-up).</summary>
+  internal EditorAssistance Editor => app.Services.GetRequiredService<EditorAssistance>();
 
   public async ValueTask DisposeAsync()
   {

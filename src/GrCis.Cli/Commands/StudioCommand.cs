@@ -54,6 +54,7 @@ public sealed class StudioCommand
       Paths = parse.GetValue(paths) ?? Array.Empty<string>(),
       NoDefault = parse.GetValue(noDefault),
       ScriptCache = env.ScriptCache,
+      WarmEditor = true,
     };
     foreach (string path in options.Paths)
       if (!File.Exists(path) && !Directory.Exists(path))

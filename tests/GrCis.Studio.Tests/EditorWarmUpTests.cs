@@ -1,0 +1,51 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Net.Http;
+using System.Net.Http.Json;
+using System.Text.Json;
+using System.Threading.Tasks;
+
+namespace GrCis.Studio.Tests;
+
+/// <summary>
+/// The editor's language services load in the background when the studio starts (<see cref="StudioOptions.WarmEditor"/>,
+/// on in <c>grcis studio</c>; issue 39), so the page's first completion does not pay their seconds of loading.
+/// </summary>
+public sealed class EditorWarmUpTests
+{
+  [Fact]
+  public async Task The_language_services_load_when_the_studio_starts_without_a_request()
+  {
+    DirectoryInfo folder = Directory.CreateTempSubdirectory("grcis-studio-warm-");
+    try
+    {
+      File.WriteAllText(Path.Combine(folder.FullName, "FiveBalls.cs"), "Rendering.Scenes.FiveBalls(scene);\n");
+      await using StudioServer server = await StudioServer.StartAsync(new StudioOptions { Paths = [folder.FullName], WarmEditor = true }, new List<string>());
+      Task warmed = Assert.IsAssignableFrom<Task>(server.Editor.Warmed);
+      await warmed.WaitAsync(TimeSpan.FromMinutes(3));
+      Assert.True(warmed.IsCompletedSuccessfully);
+      Assert.True(server.Editor.Loaded);
+
+      // The page's completion is then answered by the loaded services.
+      using HttpClient client = StudioFixture.ClientOf(server);
+      const string source = "scene.";
+      using HttpResponseMessage answer = await client.PostAsJsonAsync("/api/editor/complete", new { text = source, position = source.Length, scene = "FiveBalls" });
+      answer.EnsureSuccessStatusCode();
+      JsonElement items = (await answer.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("items");
+      Assert.True(items.GetArrayLength() > 0);
+    }
+    finally
+    {
+      folder.Delete(recursive: true);
+    }
+  }
+
+  [Fact]
+  public async Task A_studio_told_not_to_warm_loads_nothing_until_asked()
+  {
+    await using StudioServer server = await StudioServer.StartAsync(new StudioOptions { NoDefault = true }, new List<string>());
+    Assert.Null(server.Editor.Warmed);
+    Assert.False(server.Editor.Loaded);
+  }
+}
