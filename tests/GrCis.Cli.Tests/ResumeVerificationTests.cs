@@ -16,7 +16,7 @@ namespace GrCis.Cli.Tests;
 /// </summary>
 public class ResumeVerificationTests
 {
-  static readonly string[] Common = ["animate", "test-moving", "--fps", "1", "--size", "20x16", "-q"];
+  static readonly string[] Common = ["animate", "test-moving", "--fps", "1", "--size", "20x16"];
 
   /// <summary>The common command at 4 spp unless <paramref name="extra"/> says otherwise.</summary>
   static CliRun Animate(TempDirectory dir, params string[] extra) =>
@@ -100,7 +100,7 @@ public class ResumeVerificationTests
 
     CliRun resumed = Animate(dir, "--resume");
     Assert.True(resumed.ExitCode == 0, resumed.Error);
-    Assert.Contains("wrote 1 frames (4 complete, skipped)", resumed.Out);
+    Assert.Contains("wrote 1 frame (4 complete, skipped)", resumed.Out);
     Assert.Contains("redid 1 frame: 1 corrupt (m2.png: CRC mismatch in chunk IDAT", resumed.Out);
     Assert.Contains("grcis: note: --resume is redoing 1 frame: 1 corrupt", resumed.Error);
     Assert.Equal(2001, Stamp(dir, 1).Year);
@@ -220,7 +220,7 @@ public class ResumeVerificationTests
     using var dir = new TempDirectory();
     string script = ScriptCommandTests.SceneBody;
     File.WriteAllText(dir.File("S.cs"), script);
-    string[] args = ["animate", "S.cs", "--to", "1", "--fps", "1", "--size", "8x6", "-o", "s/f#.png", "-q", "--resume"];
+    string[] args = ["animate", "S.cs", "--to", "1", "--fps", "1", "--size", "8x6", "-o", "s/f#.png", "--resume"];
     Assert.Equal(0, CliRun.Of(dir.Path, args).ExitCode);
     CliRun same = CliRun.Of(dir.Path, args);
     Assert.True(same.ExitCode == 0, same.Error);

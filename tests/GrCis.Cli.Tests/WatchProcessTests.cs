@@ -35,7 +35,7 @@ public class WatchProcessTests
     using var dir = new TempDirectory();
     string script = dir.File("s.cs");
     Save(script, Scene("0.1"));
-    using var grcis = new WatchedProcess(dir.Path, "render", "s.cs", "-o", "out.png", "--size", "16x12", "-q", "--watch");
+    using var grcis = new WatchedProcess(dir.Path, "render", "s.cs", "-o", "out.png", "--size", "16x12", "--watch");
     grcis.WaitForPasses(1, 1);
     Assert.InRange(Red(dir.File("out.png")), 0, 120);
 
@@ -57,7 +57,7 @@ public class WatchProcessTests
     string module = dir.File("mods/Palette.cs");
     Save(module, "namespace Course;\npublic static class Palette { public static double Red => 0.1; }\n");
     Save(dir.File("s.cs"), Scene("Palette.Red", "using Course;\n"));
-    using var grcis = new WatchedProcess(dir.Path, "render", "s.cs", "--module", "mods", "-o", "out.png", "--size", "16x12", "-q", "--watch");
+    using var grcis = new WatchedProcess(dir.Path, "render", "s.cs", "--module", "mods", "-o", "out.png", "--size", "16x12", "--watch");
     grcis.WaitForPasses(1, 1);
     Assert.InRange(Red(dir.File("out.png")), 0, 120);
 
@@ -75,7 +75,7 @@ public class WatchProcessTests
     Save(dir.File("data/red.txt"), "0.1");
     Save(dir.File("s.cs"), Scene("double.Parse(File.ReadAllText(\"data/red.txt\"), System.Globalization.CultureInfo.InvariantCulture)",
                                  "using System.IO;\n"));
-    using var grcis = new WatchedProcess(dir.Path, "render", "s.cs", "-o", "out.png", "--size", "16x12", "-q", "--watch");
+    using var grcis = new WatchedProcess(dir.Path, "render", "s.cs", "-o", "out.png", "--size", "16x12", "--watch");
     grcis.WaitForPasses(1, 1);
     Assert.InRange(Red(dir.File("out.png")), 0, 120);
 
@@ -91,7 +91,7 @@ public class WatchProcessTests
     using var dir = new TempDirectory();
     string script = dir.File("s.cs");
     Save(script, Scene("0.1"));
-    using var grcis = new WatchedProcess(dir.Path, "render", "s.cs", "-o", "out.png", "--size", "16x12", "-q", "--watch");
+    using var grcis = new WatchedProcess(dir.Path, "render", "s.cs", "-o", "out.png", "--size", "16x12", "--watch");
     grcis.WaitForPasses(1, 1);
     byte[] good = File.ReadAllBytes(dir.File("out.png"));
 
@@ -117,7 +117,7 @@ public class WatchProcessTests
     using var dir = new TempDirectory();
     string script = dir.File("s.cs");
     Save(script, Scene("0.1"));
-    using var grcis = new WatchedProcess(dir.Path, "animate", "s.cs", "-o", "f####.png", "--size", "16x12", "-q", "--watch");
+    using var grcis = new WatchedProcess(dir.Path, "animate", "s.cs", "-o", "f####.png", "--size", "16x12", "--watch");
     grcis.WaitForPasses(1, 1);
     Assert.InRange(Red(dir.File("f0000.png")), 0, 120);
     Assert.False(File.Exists(dir.File("f0001.png")), "--watch renders only the first frame without --frames");
@@ -136,7 +136,7 @@ public class WatchProcessTests
   {
     using var dir = new TempDirectory();
     Save(dir.File("s.cs"), Scene("0.1"));
-    using var grcis = new WatchedProcess(dir.Path, "render", "s.cs", "-o", "out.png", "--size", "16x12", "-q", "--watch");
+    using var grcis = new WatchedProcess(dir.Path, "render", "s.cs", "-o", "out.png", "--size", "16x12", "--watch");
     grcis.WaitForPasses(1, 1);
 
     Assert.Equal(ExitCodes.Cancelled, grcis.Signal(signal));
