@@ -19,7 +19,7 @@ namespace Rendering.Accel;
 /// background and lights are read once per frame and worker (<see cref="BoundScene"/>), each tagged with the library
 /// class called without an interface call (code compiled without a profile, such as ReadyToRun images and a render's
 /// first moments, would otherwise pay one per sample); the Phong model writes into stack buffers instead of a new
-/// array per light; the thread's shading scratch is fetched once per ray.
+/// array per light; the thread's shading scratch is fetched once per sample.
 /// </para>
 /// </summary>
 internal sealed class WhittedKernel
@@ -43,7 +43,8 @@ internal sealed class WhittedKernel
     context.DoubleX = x;
     context.DoubleY = y;
     Zero(color);
-    BoundScene bound = Bind(ShadingScratch.Of(context), function.Scene);
+    ShadingScratch scratch = ShadingScratch.Of(context);
+    BoundScene bound = Bind(scratch, function.Scene);
     Vector3d p0, p1;
     if (bound.StaticCamera != null)
       bound.StaticCamera.Ray(x, y, out p0, out p1);
@@ -53,7 +54,7 @@ internal sealed class WhittedKernel
       if (camera == null || !camera.GetRay(x, y, out p0, out p1))
         return 11L;
     }
-    return Shade(bound, 0, 1.0, ref p0, ref p1, color);
+    return Shade(scratch, bound, 0, 1.0, ref p0, ref p1, color);
   }
 
   /// <summary>The scene as this thread reads it during this frame: taken on the thread's first sample of the frame.</summary>
@@ -65,10 +66,9 @@ internal sealed class WhittedKernel
 
   /// <summary><see cref="RayTracing.shade"/> of the function.</summary>
   [SkipLocalsInit]   // the stack buffers are written before they are read
-  long Shade(BoundScene bound, int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
+  long Shade(ShadingScratch scratch, BoundScene bound, int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color)
   {
     RayTracing f = function;
-    ShadingScratch scratch = ShadingScratch.Current;
     RayObserver? observer = scratch.Observer;
     int rayDepth = depth;
     RayKind kind = RayKind.Primary;
@@ -184,7 +184,7 @@ internal sealed class WhittedKernel
           {
             if (observer != null)
               scratch.NextKind = RayKind.Reflected;
-            hash += RayTracing.HASH_REFLECT * Shade(bound, depth, newImportance, ref origin, ref reflected, comp);
+            hash += RayTracing.HASH_REFLECT * Shade(scratch, bound, depth, newImportance, ref origin, ref reflected, comp);
             if (ks.Length >= bands)
               for (int b = 0; b < bands; b++)
                 color[b] += ks[b] * comp[b];
@@ -212,7 +212,7 @@ internal sealed class WhittedKernel
         goto done;
       if (observer != null)
         scratch.NextKind = RayKind.Refracted;
-      hash += RayTracing.HASH_REFRACT * Shade(bound, depth, newImportance, ref origin, ref r, comp);
+      hash += RayTracing.HASH_REFRACT * Shade(scratch, bound, depth, newImportance, ref origin, ref r, comp);
       AddScaled(color, comp, kt);
     }
 
