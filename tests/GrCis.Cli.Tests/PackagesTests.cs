@@ -1,7 +1,6 @@
 using System;
 using System.Collections;
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.IO;
 using System.IO.Compression;
 using System.Linq;
@@ -159,33 +158,6 @@ public class PackagesTests
   }
 
   /// <summary>Runs a program to its end (at most 3 minutes); exit code and stdout + stderr.</summary>
-  internal static (int Code, string Output) Exec(string folder, Dictionary<string, string?>? env, string program, params string[] args)
-  {
-    var psi = new ProcessStartInfo(program)
-    {
-      WorkingDirectory = folder,
-      RedirectStandardOutput = true,
-      RedirectStandardError = true,
-      UseShellExecute = false,
-    };
-    foreach (string a in args)
-      psi.ArgumentList.Add(a);
-    if (env != null)
-      foreach ((string k, string? v) in env)
-      {
-        if (v == null)
-          psi.Environment.Remove(k);
-        else
-          psi.Environment[k] = v;
-      }
-    using Process p = Process.Start(psi)!;
-    var stdout = p.StandardOutput.ReadToEndAsync();
-    var stderr = p.StandardError.ReadToEndAsync();
-    if (!p.WaitForExit(180_000))
-    {
-      p.Kill(entireProcessTree: true);
-      Assert.Fail($"{program} {string.Join(' ', args)} did not finish in 3 minutes");
-    }
-    return (p.ExitCode, stdout.Result + stderr.Result);
-  }
+  internal static (int Code, string Output) Exec(string folder, Dictionary<string, string?>? env, string program, params string[] args) =>
+    Shell.Run(folder, env, TimeSpan.FromMinutes(3), program, args);
 }

@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.IO;
 using System.Linq;
 using System.Text.RegularExpressions;
@@ -146,32 +145,6 @@ public class ReadmeTests
     return m.Groups[1].Value;
   }
 
-  static (int Code, string Output) Bash(string folder, Dictionary<string, string?> env, string script, TimeSpan limit)
-  {
-    var psi = new ProcessStartInfo("bash")
-    {
-      WorkingDirectory = folder,
-      RedirectStandardOutput = true,
-      RedirectStandardError = true,
-      UseShellExecute = false,
-    };
-    foreach (string a in new[] { "--noprofile", "--norc", "-e", "-o", "pipefail", script })
-      psi.ArgumentList.Add(a);
-    foreach ((string k, string? v) in env)
-    {
-      if (v == null)
-        psi.Environment.Remove(k);
-      else
-        psi.Environment[k] = v;
-    }
-    using Process p = Process.Start(psi)!;
-    var stdout = p.StandardOutput.ReadToEndAsync();
-    var stderr = p.StandardError.ReadToEndAsync();
-    if (!p.WaitForExit(limit))
-    {
-      p.Kill(entireProcessTree: true);
-      Assert.Fail($"{script} did not finish in {limit.TotalMinutes} minutes");
-    }
-    return (p.ExitCode, stdout.Result + stderr.Result);
-  }
+  static (int Code, string Output) Bash(string folder, Dictionary<string, string?> env, string script, TimeSpan limit) =>
+    Shell.Run(folder, env, limit, "bash", "--noprofile", "--norc", "-e", "-o", "pipefail", script);
 }
