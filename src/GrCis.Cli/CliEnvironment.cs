@@ -6,7 +6,7 @@ using GrCis.Scripting.Caching;
 namespace GrCis.Cli;
 
 /// <summary>Where a command reads and writes: the real console in <c>Main</c>, captured writers in tests.</summary>
-public sealed class CliEnvironment
+public sealed record CliEnvironment
 {
   public CliEnvironment(TextWriter output, TextWriter error)
   {
@@ -52,16 +52,7 @@ public sealed class CliEnvironment
   public ScriptCache? ScriptCache { get; init; } = ScriptCache.FromEnvironment();
 
   /// <summary>The same environment with another cancellation (one pass of <c>--watch</c>, cancelled by the next save).</summary>
-  public CliEnvironment WithCancel(CancellationToken cancel) => new(Out, Error)
-  {
-    Interactive = Interactive,
-    WorkingDirectory = WorkingDirectory,
-    OwnsProcess = OwnsProcess,
-    Cancel = cancel,
-    StackTraces = StackTraces,
-    ScriptCache = ScriptCache,
-    ExtraScenes = ExtraScenes,
-  };
+  public CliEnvironment WithCancel(CancellationToken cancel) => this with { Cancel = cancel };
 
   /// <summary>Scenes a test registers by name, tried before the resolver (the tests' animated scenes).</summary>
   internal Func<string, GrCis.Hosting.ISceneSource?>? ExtraScenes { get; init; }
