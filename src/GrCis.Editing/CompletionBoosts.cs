@@ -91,12 +91,16 @@ internal sealed class CompletionBoosts
     return new CompletionBoosts(uses, order, keysSet, afterKeyClass, afterDot);
   }
 
-  // The element access or call on the context dictionary that takes `key` as its first argument, and whether it sets it.
+  // The element access or call on the context dictionary that takes `key` as its first argument (or a helper taking the
+  // dictionary, then the key), and whether it sets it.
   static (ExpressionSyntax? Owner, bool Written) KeyOf(ExpressionSyntax key) =>
     key.Parent is ArgumentSyntax { Parent: BaseArgumentListSyntax list } argument ? KeyOf(list, list.Arguments.IndexOf(argument)) : (null, false);
 
   static (ExpressionSyntax? Owner, bool Written) KeyOf(BaseArgumentListSyntax list, int argument)
   {
+    // A helper given the dictionary and then a key reads it: Util.TryParseBool(context, PropertyName.CTX_PREPROCESSING).
+    if (argument > 0 && list.Parent is InvocationExpressionSyntax helper && IsContext(list.Arguments[argument - 1].Expression))
+      return (helper, false);
     if (argument != 0)
       return (null, false);
     switch (list.Parent)

@@ -109,6 +109,8 @@ public sealed class ScriptAssistant : IDisposable
       ?? throw new InvalidOperationException("Roslyn's C# completion service is not available (Microsoft.CodeAnalysis.CSharp.Features missing).");
     CompletionList list = await service.GetCompletionsAsync(document, position, cancellationToken: cancel).ConfigureAwait(false);
     CompletionBoosts boosts = CompletionBoosts.At(root, position);
+    SemanticModel? model = await document.GetSemanticModelAsync(cancel).ConfigureAwait(false);
+    TargetTyping target = TargetTyping.At(model, root, position);
     TextSpan span = list.Span;
     if (list.ItemsList.Count == 0)
     {
@@ -123,7 +125,7 @@ public sealed class ScriptAssistant : IDisposable
     if (boosts.OffersKeys && await document.Project.GetCompilationAsync(cancel).ConfigureAwait(false) is { } compilation)
       foreach (IFieldSymbol key in CompletionBoosts.Keys(compilation))
         all.Add(new Candidate(CompletionBoosts.KeyClass + "." + key.Name, "constant", null, key));
-    var ranked = new List<(int Rank, int Tier, int KindTier, bool Preselected, int Uses, Candidate Candidate)>();
+    var ranked = new List<(int Rank, int Tier, int KindTier, bool Preselected, bool Fits, int Uses, Candidate Candidate)>();
     foreach (Candidate c in all)
     {
       string name = c.Item?.FilterText ?? c.Label;
@@ -131,9 +133,10 @@ public sealed class ScriptAssistant : IDisposable
       if (c.Key is not null && CompletionRanking.Rank(c.Key.Name, typed) is int keyRank and >= 0 && (rank < 0 || keyRank < rank))
         rank = keyRank; // "CTX_W" finds PropertyName.CTX_WIDTH
       if (rank >= 0)
-        ranked.Add((rank, boosts.Tier(name), boosts.KindTier(c.Kind), c.Item is not null && CompletionBoosts.Preselected(c.Item), boosts.Uses(c.Key?.Name ?? name), c));
+        ranked.Add((rank, boosts.Tier(name), boosts.KindTier(c.Kind), c.Item is not null && CompletionBoosts.Preselected(c.Item),
+                    target.Asks && c.Item is not null && target.Fits(name), boosts.Uses(c.Key?.Name ?? name), c));
     }
-    List<Candidate> best = ranked.OrderBy(r => r.Rank).ThenBy(r => r.Tier).ThenByDescending(r => r.Preselected).ThenBy(r => r.KindTier).ThenByDescending(r => r.Uses)
+    List<Candidate> best = ranked.OrderBy(r => r.Rank).ThenBy(r => r.Tier).ThenByDescending(r => r.Preselected).ThenByDescending(r => r.Fits).ThenBy(r => r.KindTier).ThenByDescending(r => r.Uses)
       .ThenBy(r => r.Candidate.Item?.SortText ?? r.Candidate.Label, StringComparer.OrdinalIgnoreCase)
       .ThenBy(r => r.Candidate.Label, StringComparer.Ordinal).Select(r => r.Candidate).ToList();
     return new Candidates(document, service, span, all, best);
