@@ -110,6 +110,9 @@ public sealed partial class BrowserTests(StudioFixture studio) : IClassFixture<S
     Until(browser, () => browser.FindElements(By.CssSelector("#files option")).Count > 0, "the file picker");
     Js(browser, "document.getElementById('files').value = arguments[0];", path);
     browser.FindElement(By.Id("add")).Click();
+    // Added once the scene list shows it selected (until then Edit would open the script selected before).
+    Until(browser, () => (string?)Js(browser, "return document.getElementById('scene').selectedOptions[0]?.textContent;") == Path.GetFileName(path),
+          "the added script selected");
   }
 
   /// <summary>Renders <paramref name="scene"/> at the size given and waits for its statistics and the Stop button disabled;

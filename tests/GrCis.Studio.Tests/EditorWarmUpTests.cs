@@ -48,4 +48,22 @@ public sealed class EditorWarmUpTests
     Assert.Null(server.Editor.Warmed);
     Assert.False(server.Editor.Loaded);
   }
+
+  [Fact]
+  public async Task The_ready_request_loads_the_services_of_a_cold_studio_and_answers_once_they_are_loaded()
+  {
+    await using StudioServer server = await StudioServer.StartAsync(new StudioOptions { NoDefault = true }, new List<string>());
+    Assert.Null(server.Editor.Warmed);
+    using HttpClient client = StudioFixture.ClientOf(server);
+    using HttpResponseMessage ready = await client.GetAsync("/api/editor/ready");
+    Assert.Equal(System.Net.HttpStatusCode.NoContent, ready.StatusCode);
+    Task warmed = Assert.IsAssignableFrom<Task>(server.Editor.Warmed);
+    Assert.True(warmed.IsCompletedSuccessfully);
+    Assert.True(server.Editor.Loaded);
+
+    // A second page's request finds them ready and starts nothing new.
+    using HttpResponseMessage again = await client.GetAsync("/api/editor/ready");
+    Assert.Equal(System.Net.HttpStatusCode.NoContent, again.StatusCode);
+    Assert.Same(warmed, server.Editor.Warmed);
+  }
 }

@@ -8,12 +8,13 @@ using Microsoft.AspNetCore.Builder;
 using Microsoft.AspNetCore.Http;
 using Microsoft.AspNetCore.Http.HttpResults;
 using Microsoft.AspNetCore.Routing;
+using Microsoft.Extensions.Hosting;
 
 namespace GrCis.Studio;
 
 /// <summary>
 /// The editor's language services under <c>/api/editor</c>: completion (and one entry's description), signature help,
-/// hover, and a check of unsaved text. Each request carries the editor's whole text and a character offset into it.
+/// hover, a check of unsaved text, and whether the services are loaded yet. Each request carries the editor's whole text and a character offset into it.
 /// </summary>
 internal static class EditorApi
 {
@@ -38,6 +39,12 @@ internal static class EditorApi
       Invalid(r) is { } problem ? problem
       : await e.Assistant.HoverAsync(r.Text!, r.Position, cancel) is { } hover ? TypedResults.Ok(hover) : TypedResults.NoContent());
     editor.MapPost("/check", Check);
+    // Answers once the language services are loaded: until then the page says that completion is loading.
+    editor.MapGet("/ready", async (EditorAssistance e, IHostApplicationLifetime lifetime, CancellationToken cancel) =>
+    {
+      await e.ReadyAsync(lifetime.ApplicationStopping, cancel);
+      return TypedResults.NoContent();
+    });
   }
 
   static async Task<Results<Ok<CheckResult>, ProblemHttpResult>> Check(EditorRequest r, EditorAssistance e, StudioSession s, AllowedFiles files,

@@ -28,22 +28,35 @@ public sealed class EditorAssistance(StudioSession session) : IDisposable
 
   /// <summary>
   /// Loads the language services and runs one completion in the background, so that the page's first completion
-  /// finds them ready instead of paying their few seconds of loading (started when the studio starts).
+  /// finds them ready instead of paying their few seconds of loading (started when the studio starts, or by the first
+  /// <see cref="ReadyAsync"/>); started once, later calls return the same warm-up.
   /// </summary>
-  internal Task WarmAsync(CancellationToken cancel) => Warmed = Task.Run(async () =>
+  internal Task WarmAsync(CancellationToken cancel)
   {
-    try
-    {
-      await Assistant.CompleteAsync(WarmText, WarmText.Length, cancel: cancel).ConfigureAwait(false);
-    }
-    catch (Exception e) when (e is OperationCanceledException or ObjectDisposedException)
-    {
-      // The studio stopped first.
-    }
-  }, CancellationToken.None);
+    lock (warming)
+      return Warmed ??= Task.Run(async () =>
+      {
+        try
+        {
+          await Assistant.CompleteAsync(WarmText, WarmText.Length, cancel: cancel).ConfigureAwait(false);
+        }
+        catch (Exception e) when (e is OperationCanceledException or ObjectDisposedException)
+        {
+          // The studio stopped first.
+        }
+      }, CancellationToken.None);
+  }
+
+  readonly object warming = new();
 
   /// <summary>The warm-up started with the studio, or null before it starts.</summary>
   internal Task? Warmed { get; private set; }
+
+  /// <summary>
+  /// Completes when the language services answer at their warm speed (starting the warm-up if the studio did not):
+  /// the page shows that they are loading until then. <paramref name="cancel"/> ends only the wait.
+  /// </summary>
+  public Task ReadyAsync(CancellationToken stopping, CancellationToken cancel) => WarmAsync(stopping).WaitAsync(cancel);
 
   /// <summary>True once the language services are loaded.</summary>
   internal bool Loaded => assistant.IsValueCreated;

@@ -25,6 +25,7 @@ async function openEditor() {
     ed.cm.setOption("extraKeys", { "Ctrl-S": save, "Cmd-S": save });
     assist(ed.cm);
   }
+  awaitLanguageServices();
   ed.scene = name;
   loadSource(text, r.headers.get("ETag"));
   // The errors of a render that failed before the editor was opened (or while it showed another text) are marked now.
@@ -32,6 +33,17 @@ async function openEditor() {
   // The file on disk is asked for its version once a second while the editor is open (a 304 while unchanged).
   clearInterval(ed.timer);
   ed.timer = setInterval(checkSource, 1000);
+}
+
+// Until the studio's language services have loaded (a few seconds after it starts), the editor bar says so: the first
+// completion would otherwise seem not to come.
+function awaitLanguageServices() {
+  if (ed.ready) return;
+  const shown = setTimeout(() => { $("assistLoading").hidden = false; }, 300);
+  ed.ready = api("editor/ready").catch(() => null).finally(() => {
+    clearTimeout(shown);
+    $("assistLoading").hidden = true;
+  });
 }
 
 function closeEditor() {

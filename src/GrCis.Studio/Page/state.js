@@ -48,8 +48,8 @@ export const state = {
   compilingSave: null,
   lastCheck: 0,
   // The script editor: CodeMirror, the scene it shows, its marks; the version (ETag) of the file its text started from, and a
-  // newer one found on disk while it has unsaved edits.
-  editor: { cm: null, scene: null, marks: [], tag: null, diskTag: null, diskText: null, epoch: 0, checking: false, timer: null },
+  // newer one found on disk while it has unsaved edits; the wait for the language services to load (once per page).
+  editor: { cm: null, scene: null, marks: [], tag: null, diskTag: null, diskText: null, epoch: 0, checking: false, timer: null, ready: null },
   // The last pixel probed (its ray tree, for the 3D view).
   probe: null,
   // Animation: the run's frames per second and whether Play steps through its frames.
