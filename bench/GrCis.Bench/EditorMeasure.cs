@@ -4,7 +4,12 @@ using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
+using System.Net.Http;
+using System.Net.Http.Json;
+using System.Text.RegularExpressions;
+using System.Threading.Tasks;
 using GrCis.Editing;
+using GrCis.Studio;
 
 namespace GrCis.Bench;
 
@@ -16,6 +21,10 @@ namespace GrCis.Bench;
 /// median and 95th percentile of the warm calls, in ms, each against the issue's 150 ms budget; and, as the floor
 /// measured in the same run, a bare Roslyn lookup of the names visible at the same positions. Also the check of a draft
 /// (the whole text compiled as the script, <c>ScriptHost.Check</c>), which marks errors while typing.
+/// Completion in the middle of a script as a student types it (a member's name cut after its first letter, the rest of
+/// the file after the caret), and, first of all in a fresh process, what a page meets in a studio just started as
+/// <c>grcis studio</c> starts it (language services warming in the background): how long after the start the studio
+/// answers, and how long the first and second completions then take.
 /// </summary>
 internal static class EditorMeasure
 {
@@ -30,6 +39,7 @@ internal static class EditorMeasure
     }
     string[] scripts = Directory.GetFiles(args[0], "*.cs").OrderBy(f => f, StringComparer.Ordinal).ToArray();
     var total = Stopwatch.StartNew();
+    (double answering, double first, double second) = AfterStudioStart(args[0], scripts).GetAwaiter().GetResult();
     using var assistant = new ScriptAssistant();
     var cold = Stopwatch.StartNew();
     assistant.CompleteAsync("scene.", 6).GetAwaiter().GetResult();
@@ -42,6 +52,7 @@ internal static class EditorMeasure
     var hover = new List<double>();
     var floor = new List<double>();
     var check = new List<double>();
+    var midScript = new List<double>();
     using var host = new GrCis.Scripting.ScriptHost();
     host.Check("scene.Intersectable = null;", Path.Combine(args[0], "Warm-up.cs"));
     foreach (string file in scripts)
@@ -57,6 +68,8 @@ internal static class EditorMeasure
           describe.Add(Time(() => assistant.DescribeAsync(typed, typed.Length, list.Items[^1].Label).GetAwaiter().GetResult()));
         floor.Add(Time(() => assistant.LookupFloorAsync(typed, typed.Length).GetAwaiter().GetResult()));
       }
+      foreach ((string cut, int caret) in MidScript(text).Take(40))
+        midScript.Add(Time(() => assistant.CompleteAsync(cut, caret).GetAwaiter().GetResult()));
       // A draft that differs from everything compiled before (a new comment), as each keystroke's text does.
       for (int i = 0; i < 3; i++)
         check.Add(Time(() => host.Check(text + $"\n// draft {i}\n", file)));
@@ -67,8 +80,10 @@ internal static class EditorMeasure
     }
 
     Console.WriteLine($"editor services on {scripts.Length} scripts ({Environment.ProcessorCount} cores), ms; budget {BudgetMs} ms warm");
+    Console.WriteLine($"studio started: answers after {answering,6:F0}; first completion {first,6:F0}, second {second,6:F0}");
     Console.WriteLine($"first completion (cold)   {cold.Elapsed.TotalMilliseconds,8:F0}");
     Report($"completion, {ScriptAssistant.DescribedCompletions} described", completion, floor);
+    Report("completion mid-script", midScript, floor);
     Report("completion, none described", bare, floor);
     Report("describe one more entry", describe, floor);
     Report("signature help", signature, floor);
@@ -77,6 +92,36 @@ internal static class EditorMeasure
     Report("check of a draft (compile)", check, floor);
     Console.WriteLine($"whole run {total.Elapsed.TotalSeconds:F1} s");
     return 0;
+  }
+
+  /// <summary>
+  /// A studio started as <c>grcis studio</c> starts it, asked as a page asks as soon as it can: ms from the start until
+  /// it answers its status, then the first completion's and the second's time (a member cut mid-script).
+  /// </summary>
+  static async Task<(double Answering, double First, double Second)> AfterStudioStart(string folder, string[] scripts)
+  {
+    var clock = Stopwatch.StartNew();
+    await using StudioServer studio = await StudioServer.StartAsync(new StudioOptions { Paths = [folder], WarmEditor = true }, new List<string>());
+    using var client = new HttpClient { BaseAddress = new Uri(new Uri(studio.Url).GetLeftPart(UriPartial.Authority)) };
+    client.DefaultRequestHeaders.Add(AccessGuard.HeaderName, studio.Token);
+    (await client.GetAsync("/api/status")).EnsureSuccessStatusCode();
+    double answering = clock.Elapsed.TotalMilliseconds;
+    (string text, int caret) = scripts.Select(f => MidScript(File.ReadAllText(f)).Skip(3).FirstOrDefault()).First(p => p.Text is not null);
+    double Complete()
+    {
+      long start = Stopwatch.GetTimestamp();
+      client.PostAsJsonAsync("/api/editor/complete", new { text, position = caret }).GetAwaiter().GetResult().EnsureSuccessStatusCode();
+      return Stopwatch.GetElapsedTime(start).TotalMilliseconds;
+    }
+    double first = Complete();
+    return (answering, first, Complete());
+  }
+
+  // A member's name after a dot cut after its first letter, the rest of the file kept: the text and the caret.
+  static IEnumerable<(string Text, int Caret)> MidScript(string text)
+  {
+    foreach (Match m in Regex.Matches(text, @"(?<=[A-Za-z0-9_)\]]\.)[A-Za-z_]\w+"))
+      yield return (text.Remove(m.Index + 1, m.Length - 1), m.Index + 1);
   }
 
   static IEnumerable<int> Positions(string text, Func<char, bool> pick)
