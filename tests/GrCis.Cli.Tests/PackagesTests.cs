@@ -35,8 +35,9 @@ public class PackagesTests
     string version = SceneFolderTemplate.PackageVersion;
 
     // Pack what the test run has just built (the library, the tool), and the template (nothing to compile).
+    // The tool as its one portable package (the platform packages compiled ahead of time are README's, ReadmeTests).
     foreach (string project in new[] { "src/GrCis.Mathematics", "src/GrCis.Rendering", "src/GrCis.Compatibility", "src/GrCis.Cli" })
-      Run(RepoPaths.Root, null, "pack", project, "-c", Configuration, "--no-build", "-o", feed, "--disable-build-servers");
+      Run(RepoPaths.Root, null, "pack", project, "-c", Configuration, "--no-build", "-o", feed, "--disable-build-servers", "-p:GrCisToolRids=portable");
     Run(RepoPaths.Root, null, "pack", "templates/GrCis.Templates.csproj", "-c", Configuration, "-o", feed, "--disable-build-servers");
     foreach (string id in new[] { "GrCis.Mathematics", "GrCis.Rendering", "GrCis.Compatibility", "GrCis.Cli", "GrCis.Templates" })
       Assert.True(File.Exists(Path.Combine(feed, $"{id}.{version}.nupkg")), $"{id}.{version}.nupkg not packed");

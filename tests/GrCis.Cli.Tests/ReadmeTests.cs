@@ -123,6 +123,7 @@ public class ReadmeTests
         foreach (string o in outputs)
           Assert.True(File.Exists(o) || Directory.Exists(o), $"README.md:{block.Line}: {o} was not written\n{output}");
       }
+      InstalledToolIsCompiledAheadOfTime(home);
     }
     finally
     {
@@ -134,6 +135,35 @@ public class ReadmeTests
           File.Delete(created);
       }
     }
+  }
+
+  /// <summary>
+  /// What README's <c>dotnet tool install</c> gave is this machine's platform package of the tool (not the portable
+  /// fallback), and its code, the library's and Roslyn's, is compiled ahead of time (ReadyToRun).
+  /// </summary>
+  static void InstalledToolIsCompiledAheadOfTime(string home)
+  {
+    string rid = System.Runtime.InteropServices.RuntimeInformation.RuntimeIdentifier;
+    string store = Path.Combine(home, ".dotnet", "tools", ".store");
+    string[] tools = Directory.GetFiles(store, "grcis.dll", SearchOption.AllDirectories);
+    string tool = Assert.Single(tools);
+    Assert.Contains($"{Path.DirectorySeparatorChar}grcis.cli.{rid}{Path.DirectorySeparatorChar}", tool, StringComparison.Ordinal);
+    foreach (string dll in new[] { "grcis.dll", "GrCis.Rendering.dll", "GrCis.Hosting.dll", "Microsoft.CodeAnalysis.CSharp.dll" })
+      Assert.True(IsReadyToRun(Path.Combine(Path.GetDirectoryName(tool)!, dll)), $"{dll} of the installed tool is not ReadyToRun");
+  }
+
+  [Fact]
+  public void Precompiled_assemblies_are_told_from_plain_ones()
+  {
+    Assert.True(IsReadyToRun(typeof(object).Assembly.Location)); // the runtime's own, compiled ahead of time
+    Assert.False(IsReadyToRun(typeof(ReadmeTests).Assembly.Location));
+  }
+
+  /// <summary>Whether an assembly carries precompiled code (a ReadyToRun header in its CLI header).</summary>
+  internal static bool IsReadyToRun(string dll)
+  {
+    using var reader = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(dll));
+    return reader.PEHeaders.CorHeader is { ManagedNativeHeaderDirectory.Size: > 0 };
   }
 
   static string GlobalPackagesFolder()
