@@ -22,7 +22,13 @@ namespace GrCis.Bench.Embree;
 /// </summary>
 public static class EmbreeComparison
 {
-  /// <summary>The command: prints the table; 0 on success, 1 for a bad mesh file, 2 without libembree3.</summary>
+  /// <summary>True when Intel Embree 3's shared library loads on this machine.</summary>
+  public static bool IsAvailable => EmbreeNative.IsAvailable;
+
+  /// <summary>The Debian package that ships it.</summary>
+  public const string DebianPackage = EmbreeNative.DebianPackage;
+
+  /// <summary>The command: prints the table; 0 on success, 1 for a bad argument or mesh file, 2 without libembree3, 3 when hits disagree.</summary>
   public static int Run(string[] args, TextWriter output, TextWriter error)
   {
     EmbreeOptions options;
