@@ -18,7 +18,9 @@ namespace GrCis.Bench.Embree;
 /// placed as <c>grcis bench --mesh</c> places it (centred, box diagonal 3); without <c>--mesh</c>, a procedural
 /// torus of 100,000 triangles. Per ray set and thread count, each implementation is timed once per round, the
 /// implementations alternating within a round; the median over rounds is reported. Hit or miss must agree ray for
-/// ray with Embree's single-ray query (mismatches are counted and printed). The BVH builds are timed too.
+/// ray with Embree's single-ray query (mismatches are counted and printed). The BVH builds are timed too. Ray sets:
+/// camera rays with tight framing, incoherent rays (closest hit), segments between random points of the mesh's box,
+/// and shadow rays from the surface points the incoherent rays hit to a light outside the mesh (occlusion).
 /// </summary>
 public static class EmbreeComparison
 {
@@ -78,11 +80,14 @@ public static class EmbreeComparison
     root.InsertChild(solid, Matrix4d.Identity);
     PreparedScene scene = PreparedScene.Prepare(root);
 
+    RaySet incoherent = RaySet.Incoherent(min, max, options.Rays, options.Seed);
     RaySet[] sets =
     {
       RaySet.CameraTight(min, max, options.Size),
-      RaySet.Incoherent(min, max, options.Rays, options.Seed),
+      incoherent,
       RaySet.SegmentsBetween(min, max, options.Rays, options.Seed + 1),
+      RaySet.ShadowFromSurfaces(incoherent, (p0, p1) => solid.IntersectFirst(p0, p1, p1.LengthSquared, out SolidRecord h, out _) ? h.T : double.PositiveInfinity,
+                                0.5 * (min + max), (max - min).Length, options.Seed + 2),
     };
     foreach (RaySet rays in sets)
     {

@@ -95,6 +95,34 @@ internal sealed class RaySet
     return set;
   }
 
+  /// <summary>
+  /// Shadow rays as a renderer sends them: from the surface points where <paramref name="firstHit"/> finds the incoherent
+  /// rays of <paramref name="from"/> hitting, to a random point of a sphere of radius <paramref name="lightRadius"/> around
+  /// <paramref name="center"/> (a light outside the mesh, seeded); segments, t in (0, 1].
+  /// </summary>
+  public static RaySet ShadowFromSurfaces(RaySet from, Func<Vector3d, Vector3d, double> firstHit, Vector3d center, double lightRadius, int seed)
+  {
+    var random = new Random(seed);
+    var starts = new System.Collections.Generic.List<Vector3d>();
+    for (int i = 0; i < from.Count; i++)
+    {
+      var p0 = new Vector3d(from.Ox[i], from.Oy[i], from.Oz[i]);
+      var p1 = new Vector3d(from.Dx[i], from.Dy[i], from.Dz[i]);
+      double t = firstHit(p0, p1);
+      if (double.IsFinite(t))
+        starts.Add(Rounded(p0 + t * p1));
+    }
+    var set = new RaySet("shadow rays from surface points to a light", starts.Count, true);
+    for (int i = 0; i < starts.Count; i++)
+    {
+      double z = 2.0 * random.NextDouble() - 1.0, phi = 2.0 * Math.PI * random.NextDouble();
+      double r = Math.Sqrt(Math.Max(0.0, 1.0 - z * z));
+      Vector3d light = Rounded(center + lightRadius * new Vector3d(r * Math.Cos(phi), r * Math.Sin(phi), z));
+      set.Set(i, starts[i], light - starts[i], 1.0);
+    }
+    return set;
+  }
+
   static Vector3d Inside(Random random, Vector3d min, Vector3d max) =>
     new(min.X + random.NextDouble() * (max.X - min.X), min.Y + random.NextDouble() * (max.Y - min.Y), min.Z + random.NextDouble() * (max.Z - min.Z));
 
