@@ -161,8 +161,15 @@ public static class EmbreeComparison
       {
         rh->Ray = new EmbreeNative.Ray
         {
-          OrgX = (float)r.Ox[i], OrgY = (float)r.Oy[i], OrgZ = (float)r.Oz[i], TNear = (float)r.TNear[i],
-          DirX = (float)r.Dx[i], DirY = (float)r.Dy[i], DirZ = (float)r.Dz[i], TFar = (float)r.TFar[i], Mask = uint.MaxValue,
+          OrgX = (float)r.Ox[i],
+          OrgY = (float)r.Oy[i],
+          OrgZ = (float)r.Oz[i],
+          TNear = (float)r.TNear[i],
+          DirX = (float)r.Dx[i],
+          DirY = (float)r.Dy[i],
+          DirZ = (float)r.Dz[i],
+          TFar = (float)r.TFar[i],
+          Mask = uint.MaxValue,
         };
         bool hit = r.Segments ? embree.Occluded(&rh->Ray) : embree.Intersect(rh);
         if (hit)
