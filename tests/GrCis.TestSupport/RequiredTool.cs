@@ -20,6 +20,17 @@ public static class RequiredTool
   public static string Find(string command, string debianPackage) =>
     Find(command, debianPackage, Environment.GetEnvironmentVariable("PATH"), Required);
 
+  /// <summary>The same rule for a shared library (found by the caller, e.g. with NativeLibrary.TryLoad): skips or fails when absent.</summary>
+  public static void Library(string library, bool present, string debianPackage)
+  {
+    if (present)
+      return;
+    string message = $"'{library}' is not installed: install the Debian package '{debianPackage}' (apt-get install -y {debianPackage}; .ci/run does)";
+    if (Required)
+      throw new Xunit.Sdk.XunitException(message + $"; {RequireVariable}=1, so this fails instead of skipping");
+    throw new SkipException(message);
+  }
+
   /// <summary>True when <c>GRCIS_REQUIRE_TOOLS=1</c>: a missing tool fails the test.</summary>
   public static bool Required => Environment.GetEnvironmentVariable(RequireVariable) == "1";
 

@@ -15,4 +15,7 @@ internal enum DirectSolid : byte
 
   /// <summary>Exactly the library's <see cref="Rendering.Plane"/>.</summary>
   Plane,
+
+  /// <summary>Exactly the library's <see cref="Rendering.TriangleMesh"/>: shadow queries use its any-hit walk (<see cref="TriangleMesh.IntersectAny"/>).</summary>
+  Mesh,
 }

@@ -59,11 +59,12 @@ internal static class LibraryTypes
   }
 
   /// <summary>
-  /// The library solid the prepared scene may call directly: exactly <see cref="Sphere"/> or <see cref="Plane"/> (a
+  /// The library solid the prepared scene may call directly: exactly <see cref="Sphere"/>, <see cref="Plane"/> or <see cref="TriangleMesh"/> (a
   /// subclass may change the kernel or the hit set-up, so it is called through its interface).
   /// </summary>
   public static DirectSolid DirectKernel(IRecordSolid solid) =>
-    solid.GetType() == typeof(Sphere) ? DirectSolid.Sphere : solid.GetType() == typeof(Plane) ? DirectSolid.Plane : DirectSolid.None;
+    solid.GetType() == typeof(Sphere) ? DirectSolid.Sphere : solid.GetType() == typeof(Plane) ? DirectSolid.Plane :
+    solid.GetType() == typeof(TriangleMesh) ? DirectSolid.Mesh : DirectSolid.None;
 
   /// <summary>A sphere whose records are the library sphere's (an emitter the light model may sample as a sphere).</summary>
   public static bool HasSphereGeometry(Sphere sphere) => SubclassCheck.KeepsGeometry(sphere, typeof(Sphere));

@@ -222,6 +222,70 @@ internal sealed class MeshBvh
     return found;
   }
 
+  /// <summary>
+  /// Any-hit with early exit: some hit that <see cref="Intersection.FirstIntersection"/> accepts with T ≤ <paramref name="tMax"/>
+  /// and runs against the face (Front). True at the first such hit found, in no particular order; otherwise false, with
+  /// <paramref name="onlyBack"/> true when accepted back-face hits (exits) lie in that range. Boxes beyond
+  /// <paramref name="tMax"/> or behind the origin are never opened.
+  /// </summary>
+  [SkipLocalsInit]   // the stack is written before it is read
+  public bool AnyFront(in Vector3d p0, in Vector3d p1, double len2, double tMax, out MeshHit hit, out bool onlyBack)
+  {
+    hit = default;
+    onlyBack = false;
+    if (triId.Length == 0)
+      return false;
+    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
+    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
+    if (!LineBox(0, ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar) || rootFar <= 0.0 || rootNear > tMax)
+      return false;
+    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
+    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
+    WideNode[] nodes = wide.Nodes;
+
+    // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)); only boxes meeting (0, tMax] are pushed.
+    int size = wide.StackSize;
+    Span<int> stack = size <= 1024 ? stackalloc int[size] : new int[size];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0)
+    {
+      int code = stack[--sp];
+      if (code >= 0)
+      {
+        ref WideNode n = ref nodes[code];
+        int mask = n.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
+        for (; mask != 0; mask &= mask - 1)
+        {
+          int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
+          if (far.GetElement(lane) <= 0.0 || near.GetElement(lane) > tMax)
+            continue;
+          stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);
+        }
+        continue;
+      }
+      int slot = ~code;
+      ref WideNode parent = ref nodes[slot / WideNode.Width];
+      int start = parent.Index[slot % WideNode.Width], end = start + parent.Count[slot % WideNode.Width];
+      for (int k = start; k < end; k++)
+      {
+        if (!Triangle(k, ox, oy, oz, dx, dy, dz, out double t, out double u, out double v, out bool front))
+          continue;
+        if (!(t > 0.0 && t * t * len2 > Intersection.RAY_EPSILON2) || t > tMax)
+          continue;
+        if (!front)
+        {
+          onlyBack = true;
+          continue;
+        }
+        hit = new MeshHit { T = t, Triangle = triId[k], U = u, V = v, Front = true };
+        onlyBack = false;
+        return true;
+      }
+    }
+    return false;
+  }
+
   /// <summary>Parameter interval of the line in a node's box (the same widened slabs as <see cref="IntersectAll"/>).</summary>
   bool LineBox(int node, double ox, double oy, double oz, double dx, double dy, double dz, double ix, double iy, double iz,
                out double tMin, out double tMax)

@@ -142,10 +142,46 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
   /// </summary>
   public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
-    hit = default;
     MeshBvh b = Bvh;
-    bool hasFirst = b.Nearest(p0, p1, len2, true, out MeshHit first);
     bool hasLast = b.Nearest(p0, p1, len2, false, out MeshHit last);
+    return First(b, p0, p1, len2, hasLast, last, out hit, out insideBefore);
+  }
+
+  /// <summary>
+  /// The shadow query's form of <see cref="IntersectFirst"/> (for the library's own class only; the prepared scene decides):
+  /// when the list is outside just before the first accepted record (the last rejected hit is a back face), any accepted
+  /// front-face hit with T ≤ <paramref name="tMax"/> may answer instead of the first one, and the walk stops there; with
+  /// none, there is no record up to <paramref name="tMax"/> that changes the list's state, and none is reported (an
+  /// accepted back-face hit is reported as the first record, an exit, so the caller falls back to the list). Otherwise
+  /// the answer is <see cref="IntersectFirst"/>'s.
+  /// </summary>
+  internal bool IntersectAny(in Vector3d p0, in Vector3d p1, double len2, double tMax, out SolidRecord hit, out bool insideBefore)
+  {
+    MeshBvh b = Bvh;
+    bool hasLast = b.Nearest(p0, p1, len2, false, out MeshHit last);
+    if (!hasLast || last.Front)
+      return First(b, p0, p1, len2, hasLast, last, out hit, out insideBefore);
+    insideBefore = false;
+    hit = default;
+    if (!b.AnyFront(p0, p1, len2, tMax, out MeshHit any, out bool onlyBack))
+    {
+      if (!onlyBack)
+        return false;
+      hit.Enter = hit.Front = false;   // an exit while outside: irregular, the list decides
+      return true;
+    }
+    hit.T = any.T;
+    hit.CoordLocal = p0 + any.T * p1;
+    hit.Data = any.Triangle;
+    hit.Aux = new Vector3d(any.U, any.V, 0.0);
+    hit.Enter = hit.Front = true;
+    return true;
+  }
+
+  bool First(MeshBvh b, in Vector3d p0, in Vector3d p1, double len2, bool hasLast, in MeshHit last, out SolidRecord hit, out bool insideBefore)
+  {
+    hit = default;
+    bool hasFirst = b.Nearest(p0, p1, len2, true, out MeshHit first);
     insideBefore = hasLast ? last.Front : hasFirst && !first.Front;
     if (!hasFirst)
       return false;

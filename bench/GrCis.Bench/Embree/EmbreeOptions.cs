@@ -1,0 +1,49 @@
+using System;
+using System.Globalization;
+using System.Linq;
+
+namespace GrCis.Bench.Embree;
+
+/// <summary>Settings of <see cref="EmbreeComparison"/>.</summary>
+public sealed class EmbreeOptions
+{
+  /// <summary>An OBJ file (.obj or .obj.gz); null: a procedural torus of 100,000 triangles.</summary>
+  public string? MeshFile { get; set; }
+
+  /// <summary>Camera rays per side (size² rays).</summary>
+  public int Size { get; set; } = 512;
+
+  /// <summary>Incoherent rays and segments.</summary>
+  public int Rays { get; set; } = 200_000;
+
+  public int[] Threads { get; set; } = { 1, 2 };
+
+  /// <summary>Rounds; the median is reported.</summary>
+  public int Repeats { get; set; } = 3;
+
+  public int Seed { get; set; } = 1;
+
+  public static EmbreeOptions Parse(string[] args)
+  {
+    var o = new EmbreeOptions();
+    for (int i = 0; i < args.Length; i++)
+    {
+      string value = i + 1 < args.Length ? args[i + 1] : throw new ArgumentException($"{args[i]} needs a value");
+      switch (args[i])
+      {
+        case "--mesh": o.MeshFile = value; break;
+        case "--size": o.Size = Positive(args[i], value); break;
+        case "--rays": o.Rays = Positive(args[i], value); break;
+        case "--threads": o.Threads = value.Split(',').Select(v => Positive(args[i], v)).ToArray(); break;
+        case "--repeats": o.Repeats = Positive(args[i], value); break;
+        case "--seed": o.Seed = int.Parse(value, CultureInfo.InvariantCulture); break;
+        default: throw new ArgumentException($"unknown option '{args[i]}' (--mesh, --size, --rays, --threads, --repeats, --seed)");
+      }
+      i++;
+    }
+    return o;
+  }
+
+  static int Positive(string option, string value) =>
+    int.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out int n) && n > 0 ? n : throw new ArgumentException($"{option}: '{value}' is not a positive whole number");
+}

@@ -1,0 +1,21 @@
+using System.Collections.Generic;
+using System.Linq;
+
+namespace GrCis.Bench.Embree;
+
+/// <summary>What one <see cref="EmbreeComparison"/> run measured.</summary>
+public sealed class EmbreeReport
+{
+  /// <summary>Triangles of the mesh.</summary>
+  public int Triangles { get; init; }
+
+  /// <summary>Median seconds of the library's mesh BVH build (one thread), and of Embree's MEDIUM build on one thread and on all.</summary>
+  public double LibraryBuild { get; set; }
+  public double EmbreeBuild1 { get; set; }
+  public double EmbreeBuildAll { get; set; }
+
+  public List<EmbreeRow> Rows { get; } = new();
+
+  /// <summary>Rays, over all rows' first thread count, whose hit or miss differed from Embree's.</summary>
+  public int Mismatches => Rows.Where(r => r.Threads == Rows[0].Threads).Sum(r => r.Mismatches);
+}

@@ -1,0 +1,80 @@
+using System;
+using System.IO;
+using System.Linq;
+using GrCis.Bench.Embree;
+using GrCis.TestSupport;
+
+namespace GrCis.Bench.Tests;
+
+/// <summary>The Embree comparison on a small mesh: every library query must agree with Embree ray for ray.</summary>
+public sealed class EmbreeComparisonTests
+{
+  /// <summary>The workplace's shared mesh folder ($GRCIS_SHARED, else shared/ beside a folder above the test binaries), or a skip.</summary>
+  static string SharedMesh(string name)
+  {
+    string? env = Environment.GetEnvironmentVariable("GRCIS_SHARED");
+    if (!string.IsNullOrEmpty(env) && File.Exists(Path.Combine(env, "data", "meshes", name)))
+      return Path.Combine(env, "data", "meshes", name);
+    for (DirectoryInfo? d = new(AppContext.BaseDirectory); d != null; d = d.Parent)
+    {
+      string candidate = Path.Combine(d.FullName, "shared", "data", "meshes", name);
+      if (File.Exists(candidate))
+        return candidate;
+    }
+    Skip.If(true, $"shared/data/meshes/{name} not found above {AppContext.BaseDirectory} (set GRCIS_SHARED)");
+    return "";
+  }
+
+  [SkippableFact]
+  public void Teapot_hits_agree_with_Embree_ray_for_ray_on_every_ray_set()
+  {
+    RequiredTool.Library("libembree3.so.3", EmbreeComparison.IsAvailable, EmbreeComparison.DebianPackage);
+    string teapot = SharedMesh("teapot.obj.gz");
+    var output = new StringWriter();
+    EmbreeReport report = EmbreeComparison.Measure(
+      new EmbreeOptions { MeshFile = teapot, Size = 48, Rays = 3000, Threads = new[] { 1, 2 }, Repeats = 1 }, output);
+
+    Assert.True(report.Triangles > 1000, output.ToString());
+    Assert.True(report.LibraryBuild > 0.0 && report.EmbreeBuild1 > 0.0 && report.EmbreeBuildAll > 0.0);
+    // Four ray sets; camera: Embree single and packets, the mesh kernel, the scene; the others three each; two thread counts.
+    Assert.Equal(2 * (4 + 3 + 3 + 3), report.Rows.Count);
+    foreach (EmbreeRow row in report.Rows)
+    {
+      Assert.True(row.Mismatches == 0, $"{row.Query} on {row.Rays}: {row.Mismatches} rays disagree with Embree\n{output}");
+      Assert.True(row.Mrays > 0.0 && double.IsFinite(row.Mrays));
+    }
+    // Each set has hits and misses, so agreement means something.
+    foreach (var set in report.Rows.GroupBy(r => r.Rays))
+    {
+      int rays = set.Key.StartsWith("camera", StringComparison.Ordinal) ? 48 * 48 : set.Key.StartsWith("shadow", StringComparison.Ordinal) ? set.First().ReferenceHits : 3000;
+      if (!set.Key.StartsWith("shadow", StringComparison.Ordinal))
+        Assert.InRange(set.First().ReferenceHits, rays / 20, rays - rays / 20);
+      else
+        Assert.True(set.First().ReferenceHits > 100, $"{set.First().ReferenceHits} shadow rays blocked");
+    }
+    Assert.Equal(0, report.Mismatches);
+  }
+
+  [SkippableFact]
+  public void A_missing_mesh_file_is_one_line_naming_it_and_exit_1()
+  {
+    RequiredTool.Library("libembree3.so.3", EmbreeComparison.IsAvailable, EmbreeComparison.DebianPackage);
+    string missing = Path.Combine(Path.GetTempPath(), "grcis-no-such-mesh-" + Guid.NewGuid().ToString("N") + ".obj");
+    var output = new StringWriter();
+    var error = new StringWriter();
+    Assert.Equal(1, EmbreeComparison.Run(new[] { "--mesh", missing }, output, error));
+    string message = error.ToString().Trim();
+    Assert.DoesNotContain('\n', message);
+    Assert.Contains(missing, message);
+  }
+
+  [Fact]
+  public void Bad_options_are_named()
+  {
+    var e = Assert.Throws<ArgumentException>(() => EmbreeOptions.Parse(new[] { "--threads", "1,x" }));
+    Assert.Equal("--threads: 'x' is not a positive whole number", e.Message);
+    e = Assert.Throws<ArgumentException>(() => EmbreeOptions.Parse(new[] { "--frobnicate", "1" }));
+    Assert.StartsWith("unknown option '--frobnicate'", e.Message);
+    Assert.Equal(new[] { 2 }, EmbreeOptions.Parse(new[] { "--threads", "2" }).Threads);
+  }
+}
