@@ -5,6 +5,7 @@ using System.Linq;
 using System.Net;
 using System.Net.Http;
 using System.Net.Http.Json;
+using System.Net.Sockets;
 using System.Text.Json;
 using System.Text.Json.Serialization;
 using System.Threading;
@@ -73,6 +74,8 @@ public sealed class StudioSupervisor : IAsyncDisposable
   int generation;
   Task supervising = Task.CompletedTask;
   string token = "";
+  // The listening socket taken before Kestrel started (it listens on it); closed after Kestrel.
+  Socket? taken;
   string hostHeader = "";
 
   StudioSupervisor(WebApplication app, Func<ProcessStartInfo> command, TextWriter errors)
@@ -110,11 +113,17 @@ public sealed class StudioSupervisor : IAsyncDisposable
                                                         CancellationToken cancel = default)
   {
     ArgumentNullException.ThrowIfNull(options);
+    // The address is taken first, in microseconds, so the studio process (which must know the port) starts while this
+    // server is built, not after: the two start-ups overlap. Kestrel then listens on that socket. Where it cannot take a
+    // socket (Windows) or the name is localhost (two addresses), it binds by itself and the studio process starts after.
+    Socket? taken = OperatingSystem.IsWindows() || options.Host == "localhost" ? null : Take(options);
     WebApplicationBuilder builder = WebApplication.CreateSlimBuilder();
     builder.Logging.ClearProviders();
     builder.WebHost.ConfigureKestrel(k =>
     {
-      if (options.Host == "localhost")
+      if (taken != null)
+        k.ListenHandle((ulong)taken.SafeHandle.DangerousGetHandle());
+      else if (options.Host == "localhost")
         k.ListenLocalhost(options.Port);
       else
         k.Listen(IPAddress.Parse(options.Host.Trim('[', ']')), options.Port);
@@ -122,7 +131,13 @@ public sealed class StudioSupervisor : IAsyncDisposable
     builder.Services.AddProblemDetails();
     builder.Services.AddHttpForwarder();
     WebApplication app = builder.Build();
-    var supervisor = new StudioSupervisor(app, command, errors) { token = options.Token ?? AccessGuard.NewToken() };
+    var supervisor = new StudioSupervisor(app, command, errors) { token = options.Token ?? AccessGuard.NewToken(), taken = taken };
+    Task<StudioWorker>? starting = null;
+    if (taken != null)
+    {
+      supervisor.Port = ((IPEndPoint)taken.LocalEndPoint!).Port;
+      starting = StudioWorker.StartAsync(supervisor.StartInfo(0, null), errors, StartTimeout, cancel);
+    }
 
     // The supervisor's own answers (while the studio process restarts) obey the studio's rules too; the studio process
     // checks every forwarded request again, so its port is no way round them.
@@ -138,12 +153,14 @@ public sealed class StudioSupervisor : IAsyncDisposable
     try
     {
       await app.StartAsync(cancel).ConfigureAwait(false);
-      int port = new Uri(app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses.First()).Port;
+      int port = taken != null ? supervisor.Port
+        : new Uri(app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses.First()).Port;
       supervisor.Port = port;
       supervisor.hostHeader = AccessGuard.HostsFor(options.Host, port, options.IsLoopback).First();
       Volatile.Write(ref guard, new AccessGuard(supervisor.token, AccessGuard.HostsFor(options.Host, port, options.IsLoopback),
                                                 options.IsAnyAddress ? port : 0, port));
-      StudioWorker first = await StudioWorker.StartAsync(supervisor.StartInfo(0, null), errors, StartTimeout, cancel).ConfigureAwait(false);
+      starting ??= StudioWorker.StartAsync(supervisor.StartInfo(0, null), errors, StartTimeout, cancel);
+      StudioWorker first = await starting.ConfigureAwait(false);
       lock (supervisor.sync)
         supervisor.worker = first;
       supervisor.supervising = supervisor.SuperviseAsync(first);
@@ -153,8 +170,29 @@ public sealed class StudioSupervisor : IAsyncDisposable
     }
     catch
     {
+      if (starting != null)
+        (await starting.ContinueWith(t => t.IsCompletedSuccessfully ? t.Result : null, TaskScheduler.Default).ConfigureAwait(false))?.Dispose();
       await supervisor.DisposeAsync().ConfigureAwait(false);
       throw;
+    }
+  }
+
+  /// <summary>A socket bound and listening on the studio's address.</summary>
+  /// <exception cref="IOException">The address is in use (or not this machine's).</exception>
+  static Socket Take(StudioOptions options)
+  {
+    IPAddress address = IPAddress.Parse(options.Host.Trim('[', ']'));
+    var socket = new Socket(address.AddressFamily, SocketType.Stream, ProtocolType.Tcp);
+    try
+    {
+      socket.Bind(new IPEndPoint(address, options.Port));
+      socket.Listen(512);
+      return socket;
+    }
+    catch (SocketException e)
+    {
+      socket.Dispose();
+      throw new IOException(e.Message, e);
     }
   }
 
@@ -410,5 +448,6 @@ public sealed class StudioSupervisor : IAsyncDisposable
     await app.DisposeAsync().ConfigureAwait(false);
     client.Dispose();
     closing.Dispose();
+    taken?.Dispose();
   }
 }
