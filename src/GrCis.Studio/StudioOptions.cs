@@ -29,6 +29,20 @@ public sealed record StudioOptions
   /// <summary>Where compiled scene scripts are kept between runs (null: compiled afresh in each studio).</summary>
   public GrCis.Scripting.Caching.ScriptCache? ScriptCache { get; init; }
 
+  /// <summary>
+  /// The port the user reaches the studio on when a <see cref="StudioSupervisor"/> forwards to this studio (0: none does,
+  /// it is <see cref="Port"/>). Such a studio listens on 127.0.0.1 whatever <see cref="Host"/> says, and its access rules
+  /// (the Host and Origin it accepts, the token's cookie) are those of <see cref="Host"/> and this port: the supervisor
+  /// passes the user's Host and Origin on unchanged.
+  /// </summary>
+  public int PublicPort { get; init; }
+
+  /// <summary>What the page says first (the supervisor's sentence on why it restarted this studio); null = nothing.</summary>
+  public string? Notice { get; init; }
+
+  /// <summary>How many studios the supervisor started before this one (0 = the first): a page that sees it change starts afresh.</summary>
+  public int Generation { get; init; }
+
   /// <summary>True when <see cref="Host"/> is a loopback address (or <c>localhost</c>).</summary>
   public bool IsLoopback => Host is "127.0.0.1" or "localhost" or "::1" or "[::1]";
 

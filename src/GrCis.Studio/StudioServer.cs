@@ -63,14 +63,17 @@ public sealed class StudioServer : IAsyncDisposable
     var scripts = new GrCis.Scripting.ScriptHost(diskCache: options.ScriptCache);
     var files = new AllowedFiles(options.Paths);
     var controller = DemoController.FromCommandLine(args, scripts, problems, files.Allows);
-    var session = new StudioSession(controller) { Scripts = scripts };
+    var session = new StudioSession(controller) { Scripts = scripts, Notice = options.Notice, Generation = options.Generation };
     string token = options.Token ?? AccessGuard.NewToken();
 
     WebApplicationBuilder builder = WebApplication.CreateSlimBuilder();
     builder.Logging.ClearProviders();
     builder.WebHost.ConfigureKestrel(k =>
     {
-      if (options.Host == "localhost")
+      // Behind a supervisor, only the supervisor forwards here: this machine's loopback is enough.
+      if (options.PublicPort != 0)
+        k.Listen(IPAddress.Loopback, options.Port);
+      else if (options.Host == "localhost")
         k.ListenLocalhost(options.Port);
       else
         k.Listen(IPAddress.Parse(options.Host.Trim('[', ']')), options.Port);
@@ -131,7 +134,9 @@ public sealed class StudioServer : IAsyncDisposable
 
     // Kestrel listens on the one endpoint configured above, so its one address names the port.
     int port = new Uri(app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses.First()).Port;
-    Volatile.Write(ref guard, new AccessGuard(token, AccessGuard.HostsFor(options.Host, port, options.IsLoopback), options.IsAnyAddress ? port : 0, port));
+    // The rules name the address the user reaches: a supervisor's port when one forwards here (it passes Host and Origin on).
+    int reached = options.PublicPort != 0 ? options.PublicPort : port;
+    Volatile.Write(ref guard, new AccessGuard(token, AccessGuard.HostsFor(options.Host, reached, options.IsLoopback), options.IsAnyAddress ? reached : 0, reached));
     // The editor's language services load while the user opens the page, not on its first completion.
     if (options.WarmEditor)
       _ = app.Services.GetRequiredService<EditorAssistance>().WarmAsync(app.Lifetime.ApplicationStopping);

@@ -107,6 +107,19 @@ public sealed class StudioSession : IDisposable
     };
   }
 
+  /// <summary>The error the page shows until the first render (the supervisor's sentence on why this studio was restarted).</summary>
+  public string? Notice
+  {
+    init
+    {
+      error = value;
+      errorSequence++;
+    }
+  }
+
+  /// <summary>Which studio process this is (<see cref="StudioOptions.Generation"/>), in every status.</summary>
+  public int Generation { get; init; }
+
   public DemoController Controller { get; }
 
   /// <summary>Starts rendering <paramref name="entry"/> with <paramref name="param"/> and <paramref name="settings"/>, stopping any render in progress.</summary>
@@ -278,6 +291,7 @@ public sealed class StudioSession : IDisposable
         CompletedRenderId = completedId,
         Cancelled = cancelled,
         CheckedId = checkedId,
+        Generation = Generation,
       };
   }
 

@@ -41,6 +41,9 @@ public sealed record StudioStatus(bool Rendering, int Version, double Fraction, 
   /// <summary>The estimated RMSE of the image on show (<see cref="Rendering.Execution.NoiseImage"/>); null = no estimate.</summary>
   public double? Noise { get; init; }
 
+  /// <summary>Which studio process answers (<see cref="StudioOptions.Generation"/>): its render numbers start again at 0.</summary>
+  public int Generation { get; init; }
+
   // For the event stream (StudioEvents), not the page: what tells one change from another where values alone may not.
 
   /// <summary>Counts the changes of <see cref="Error"/> and <see cref="Diagnostics"/> (set or cleared), so the same error twice is news.</summary>

@@ -15,6 +15,9 @@ public sealed class MemoryLimitOption
 
   public void AddTo(Command cmd) => cmd.Options.Add(option);
 
+  /// <summary>The value as given on the command line; null when not given (the default applies).</summary>
+  public string? Given(ParseResult parse) => parse.GetValue(option);
+
   /// <summary>Checks the value; sets the limit when grcis owns the process (<see cref="CliEnvironment.OwnsProcess"/>).</summary>
   /// <exception cref="UsageException">A malformed value, or one below what grcis already uses.</exception>
   public void Apply(ParseResult parse, CliEnvironment env)

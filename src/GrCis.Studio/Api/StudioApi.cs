@@ -62,6 +62,7 @@ internal static class StudioApi
     api.MapAnimationApi();
     api.MapEditorApi();
     api.MapFilesApi();
+    api.MapSupervisionApi();
     return api;
   }
 

@@ -27,7 +27,12 @@ function finished(version) {
 const handlers = {
   // The whole status: on connecting, and again after each reconnection.
   status(s) {
-    if (s.renderId < studio.renderId) return;
+    if (s.generation !== studio.generation) {
+      // Another studio process answers (its supervisor restarted it, or says it is restarting it): its renders and images
+      // are numbered afresh, so what the page knew of the old one's numbers is forgotten. The page's fields stay.
+      Object.assign(studio, freshRender(), { renderId: s.renderId });
+      Object.assign(state, { shownVersion: -1, wantedVersion: -1, historyFor: -1, viewsFor: -1, staleRender: -1 });
+    } else if (s.renderId < studio.renderId) return;
     Object.assign(studio, s);
     if (s.version > 0) wantImage(s.version);
     if (!s.rendering) finished(s.version);

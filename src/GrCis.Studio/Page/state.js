@@ -20,7 +20,7 @@ function tabId() {
 export const state = {
   tab: tabId(),
   // The studio's status as /api/status answers it; renderId is the newest render the page knows of (older ones' events are ignored).
-  studio: { renderId: 0, phase: "idle", rendering: false, version: 0, notes: [], tab: null, ...freshRender() },
+  studio: { generation: 0, renderId: 0, phase: "idle", rendering: false, version: 0, notes: [], tab: null, ...freshRender() },
   // The event stream is open (false while the browser reconnects); the events applied so far.
   connected: false,
   events: 0,

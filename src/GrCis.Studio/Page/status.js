@@ -3,7 +3,7 @@ import { $, state, freshRender } from "./state.js";
 import { showMessages } from "./messages.js";
 import { showDiagnostics } from "./diagnostics.js";
 
-const phaseText = { compiling: "compiling the script…", rendering: "rendering…", stopping: "stopping…", idle: "" };
+const phaseText = { compiling: "compiling the script…", rendering: "rendering…", stopping: "stopping…", restarting: "restarting the render process…", idle: "" };
 const ownsRender = s => { if (s.tab === state.tab) state.ownedRender = true; };
 
 export function showStatus() {
@@ -24,7 +24,7 @@ export function showStatus() {
   noteCheck();
   showMessages();
   showDiagnostics(s.diagnostics, s.diagnosticsScene);
-  $("stop").disabled = s.phase === "idle";
+  $("stop").disabled = s.phase === "idle" || s.phase === "restarting";
   // The downloads are links: without an image (version 0, before the first preview) they lead nowhere, so they have no href.
   for (const id of ["png", "pfm"]) {
     const link = $(id);
