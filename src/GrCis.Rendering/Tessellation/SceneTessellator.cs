@@ -64,6 +64,8 @@ public static class SceneTessellator
   sealed class Walk(TessellationOptions options)
   {
     readonly List<Func<Aabb, TessellatedPart>> parts = new();
+    // Equal shapes share their arrays (a sphere flake's thousands of unit spheres are one mesh in a glTF file).
+    readonly Dictionary<string, (Vector3d[] Positions, int[] Indices, double Tolerance)> shapes = new();
     public readonly List<string> Notes = new();
     public Aabb FiniteBounds = Aabb.Empty;
 
@@ -98,7 +100,20 @@ public static class SceneTessellator
       Vector3d color = ColorOf(node);
       string name = $"{node.GetType().Name} {index.ToString(CultureInfo.InvariantCulture)}";
 
-      TessellatedPart Part(TriangleBuilder b, PartKind kind, double tolerance = 0.0, string? note = null) => new()
+      TessellatedPart Shared(string key, Func<(TriangleBuilder, double)> make, PartKind kind = PartKind.Surface)
+      {
+        if (!shapes.TryGetValue(key, out var shape))
+        {
+          (TriangleBuilder b, double tolerance) = make();
+          shapes[key] = shape = (b.Positions, b.Indices, tolerance);
+        }
+        return PartOf(shape.Positions, shape.Indices, kind, shape.Tolerance);
+      }
+
+      TessellatedPart Part(TriangleBuilder b, PartKind kind, double tolerance = 0.0, string? note = null) =>
+        PartOf(b.Positions, b.Indices, kind, tolerance, note);
+
+      TessellatedPart PartOf(Vector3d[] positions, int[] indices, PartKind kind, double tolerance = 0.0, string? note = null) => new()
       {
         Name = name,
         Node = node,
@@ -106,8 +121,8 @@ public static class SceneTessellator
         CsgOperation = operation,
         BaseColor = color,
         LocalToWorld = toWorld,
-        Positions = b.Positions,
-        Indices = b.Indices,
+        Positions = positions,
+        Indices = indices,
         Tolerance = tolerance,
         Note = note,
       };
@@ -123,10 +138,10 @@ public static class SceneTessellator
       {
         case SphereFront s when SubclassCheck.KeepsGeometry(s, typeof(SphereFront)):
         case Sphere s2 when SubclassCheck.KeepsGeometry(s2, typeof(Sphere)):
-          Finite(Part(SolidMeshes.Sphere(options.SphereSegments, options.SphereRings, out double st), PartKind.Surface, st));
+          Finite(Shared("sphere", () => (SolidMeshes.Sphere(options.SphereSegments, options.SphereRings, out double st), st)));
           return;
         case Cube c when SubclassCheck.KeepsGeometry(c, typeof(Cube)):
-          Finite(Part(SolidMeshes.Cube(), PartKind.Surface));
+          Finite(Shared("cube", () => (SolidMeshes.Cube(), 0.0)));
           return;
         case CylinderFront cf when SubclassCheck.KeepsGeometry(cf, typeof(CylinderFront)):
           Cylinder(cf, caps: false);
@@ -135,7 +150,8 @@ public static class SceneTessellator
           Cylinder(cy, caps: true);
           return;
         case Torus t when SubclassCheck.KeepsGeometry(t, typeof(Torus)):
-          Finite(Part(SolidMeshes.Torus(t.bigRadius, t.smallRadius, options.TorusSegments, options.TorusTubeSegments, out double tt), PartKind.Surface, tt));
+          Finite(Shared(FormattableString.Invariant($"torus {t.bigRadius} {t.smallRadius}"),
+                        () => (SolidMeshes.Torus(t.bigRadius, t.smallRadius, options.TorusSegments, options.TorusTubeSegments, out double tt), tt)));
           return;
         case Plane p when SubclassCheck.KeepsGeometry(p, typeof(Plane)):
           Plane(p);
@@ -166,7 +182,8 @@ public static class SceneTessellator
       {
         if (double.IsFinite(cy.ZMin) && double.IsFinite(cy.ZMax))
         {
-          Finite(Part(SolidMeshes.Cylinder(cy.ZMin, cy.ZMax, caps, options.CylinderSegments, out double ct), PartKind.Surface, ct));
+          Finite(Shared(FormattableString.Invariant($"cylinder {cy.ZMin} {cy.ZMax} {caps}"),
+                        () => (SolidMeshes.Cylinder(cy.ZMin, cy.ZMax, caps, options.CylinderSegments, out double ct), ct)));
           return;
         }
         parts.Add(around =>
