@@ -284,13 +284,13 @@ public static class SceneTessellator
       case RectangleLightSource r:
         return new TessellatedLight
         {
-          Kind = LightKind.Rectangle, Source = light, Intensity = Rgb(bands, 1.0),
+          Kind = TessellatedLightKind.Rectangle, Source = light, Intensity = Rgb(bands, 1.0),
           Position = (r.position ?? Vector3d.Zero) + 0.5 * (r.width + r.height), EdgeU = r.width, EdgeV = r.height,
         };
       case SphereLightSource s:
         return new TessellatedLight
         {
-          Kind = LightKind.Sphere, Source = light, Intensity = Rgb(bands, 1.0),
+          Kind = TessellatedLightKind.Sphere, Source = light, Intensity = Rgb(bands, 1.0),
           Position = s.position ?? Vector3d.Zero, Radius = s.radius,
         };
       default:
@@ -300,7 +300,7 @@ public static class SceneTessellator
             notes.Add($"a {light.GetType().Name} without a position is not shown");
           return null;
         }
-        return new TessellatedLight { Kind = LightKind.Point, Source = light, Intensity = Rgb(bands, 1.0), Position = p };
+        return new TessellatedLight { Kind = TessellatedLightKind.Point, Source = light, Intensity = Rgb(bands, 1.0), Position = p };
     }
   }
 

@@ -11,7 +11,8 @@ internal static class SolidMeshes
   public static TriangleBuilder Sphere(int segments, int rings, out double tolerance)
   {
     var b = new TriangleBuilder();
-    b.Grid(rings, segments, (v, u) => Polar(Math.PI * v, 2.0 * Math.PI * u), p => p);
+    // The poles exactly (sin π is not 0 in doubles), so the cells around them lose their degenerate halves.
+    b.Grid(rings, segments, (v, u) => v == 0.0 ? Vector3d.UnitZ : v == 1.0 ? -Vector3d.UnitZ : Polar(Math.PI * v, 2.0 * Math.PI * u), p => p);
     tolerance = ChordError(Math.Max(Math.PI / rings, 2.0 * Math.PI / segments));
     return b;
   }

@@ -6,7 +6,7 @@ namespace Rendering.Tessellation;
 public sealed class TessellatedLight
 {
   /// <summary>Point, rectangle or sphere.</summary>
-  public required LightKind Kind { get; init; }
+  public required TessellatedLightKind Kind { get; init; }
 
   /// <summary>The light's source object in the scene.</summary>
   public required ILightSource Source { get; init; }

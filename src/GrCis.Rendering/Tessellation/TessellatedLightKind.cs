@@ -1,7 +1,7 @@
 namespace Rendering.Tessellation;
 
 /// <summary>The kind of a light in a <see cref="SceneTessellation"/>.</summary>
-public enum LightKind
+public enum TessellatedLightKind
 {
   /// <summary>A point light (<see cref="PointLightSource"/>, or a script's light with a position).</summary>
   Point,
