@@ -39,6 +39,7 @@ public static class GltfWriter
     var materials = new Dictionary<Vector3d, Material>();
     // Parts that share their vertex arrays (equal shapes) and colour share one glTF mesh.
     var meshes = new Dictionary<(Vector3d[], Material), Mesh>();
+    var buffers = new Dictionary<Vector3d[], (Accessor Vertices, Accessor Indices)>();
 
     foreach (TessellatedPart part in scene.Parts)
     {
@@ -49,9 +50,13 @@ public static class GltfWriter
       bool asNode = IsTrs(local);
       Material material = MaterialOf(model, materials, part.BaseColor);
       if (!asNode)
-        node.Mesh = MeshOf(model, part, part.LocalToWorld, material);
+        node.Mesh = MeshOf(model, part.Name, Accessors(model, part, part.LocalToWorld), material);
       else if (!meshes.TryGetValue((part.Positions, material), out Mesh? shared))
-        node.Mesh = meshes[(part.Positions, material)] = MeshOf(model, part, null, material);
+      {
+        if (!buffers.TryGetValue(part.Positions, out var accessors))
+          buffers[part.Positions] = accessors = Accessors(model, part, null);
+        node.Mesh = meshes[(part.Positions, material)] = MeshOf(model, part.TypeName, accessors, material);
+      }
       else
         node.Mesh = shared;
       if (asNode)
@@ -147,7 +152,19 @@ public static class GltfWriter
     }
   }
 
-  static Mesh MeshOf(ModelRoot model, TessellatedPart part, Matrix4d? bake, Material material)
+  static Mesh MeshOf(ModelRoot model, string name, (Accessor Vertices, Accessor Indices) accessors, Material material)
+  {
+    Mesh mesh = model.CreateMesh(name);
+    MeshPrimitive primitive = mesh.CreatePrimitive();
+    primitive.SetVertexAccessor("POSITION", accessors.Vertices);
+    primitive.SetIndexAccessor(accessors.Indices);
+    primitive.DrawPrimitiveType = PrimitiveType.TRIANGLES;
+    primitive.Material = material;
+    return mesh;
+  }
+
+  /// <summary>The part's vertices (z mirrored; in world coordinates when <paramref name="bake"/> is given) and triangles.</summary>
+  static (Accessor Vertices, Accessor Indices) Accessors(ModelRoot model, TessellatedPart part, Matrix4d? bake)
   {
     var positions = new Vector3[part.Positions.Length];
     for (int i = 0; i < positions.Length; i++)
@@ -176,14 +193,7 @@ public static class GltfWriter
     BufferView indexView = model.UseBufferView(indexBytes, 0, null, 0, BufferMode.ELEMENT_ARRAY_BUFFER);
     Accessor indexAccessor = model.CreateAccessor();
     indexAccessor.SetIndexData(indexView, 0, indices.Length, IndexEncodingType.UNSIGNED_INT);
-
-    Mesh mesh = model.CreateMesh(part.Name);
-    MeshPrimitive primitive = mesh.CreatePrimitive();
-    primitive.SetVertexAccessor("POSITION", vertexAccessor);
-    primitive.SetIndexAccessor(indexAccessor);
-    primitive.DrawPrimitiveType = PrimitiveType.TRIANGLES;
-    primitive.Material = material;
-    return mesh;
+    return (vertexAccessor, indexAccessor);
   }
 
   static Material MaterialOf(ModelRoot model, Dictionary<Vector3d, Material> materials, Vector3d color)
