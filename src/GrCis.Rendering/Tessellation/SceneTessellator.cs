@@ -307,8 +307,11 @@ public static class SceneTessellator
   /// <summary>The camera after setting its image size; a <see cref="StaticCamera"/> read from its fields, any other measured from its rays.</summary>
   static TessellatedCamera? CameraOf(ICamera camera, TessellationOptions options, List<string> notes)
   {
-    camera.Width = options.Width;
-    camera.Height = options.Height;
+    // Only when it differs: a scene on show (the studio's) was set to its render's size already, perhaps by a render running now.
+    if (camera.Width != options.Width)
+      camera.Width = options.Width;
+    if (camera.Height != options.Height)
+      camera.Height = options.Height;
     double aspect = options.Width / (double)options.Height;
     if (camera is StaticCamera s)
     {
