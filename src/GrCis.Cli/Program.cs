@@ -102,6 +102,7 @@ public static class Program
       new MergeCommand().Build(env),
       ListCommand.Build(env),
       new InfoCommand().Build(env),
+      new ExportCommand().Build(env),
       BenchCommand.Build(env),
       new StudioCommand().Build(env),
       InitCommand.Build(env),

@@ -24,11 +24,15 @@ public sealed class StudioAnimation
   string? error;
   bool running = true;
 
-  StudioAnimation(string? folder, double fps)
+  StudioAnimation(string? folder, double fps, AnimationRun? run = null)
   {
     Folder = folder;
     Fps = fps;
+    Run = run;
   }
+
+  /// <summary>The run (its job's scene and its timeline), for the scene of a frame as glTF (<see cref="StudioSceneFiles"/>).</summary>
+  internal AnimationRun? Run { get; }
 
   /// <summary>Where the frames are written, or null (kept in memory only).</summary>
   public string? Folder { get; }
@@ -40,7 +44,7 @@ public sealed class StudioAnimation
   /// <param name="changed">Called after each frame and at the end of the run (the page is told of them).</param>
   public static StudioAnimation Start(AnimationRun run, string? folder, Action? changed = null)
   {
-    var animation = new StudioAnimation(folder, run.Timeline.Fps) { total = run.Timeline.FrameCount };
+    var animation = new StudioAnimation(folder, run.Timeline.Fps, run) { total = run.Timeline.FrameCount };
     run.FrameRendered += (_, e) =>
     {
       byte[]? png = e.File != null ? null : PngEncoder.Default.Encode(Rendering.Execution.RenderSetup.ToDisplayImage(e.Image, run.Job.Renderer.Gamma));

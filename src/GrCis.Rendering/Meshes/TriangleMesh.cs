@@ -40,6 +40,9 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
     Smooth = true;
   }
 
+  /// <summary>The mesh as given (the tessellation copies its triangles).</summary>
+  internal SceneBrep Mesh => mesh;
+
   /// <summary>Distance behind a shell-mode crossing where the shell is left (ray parameter units, as GrCis).</summary>
   public const double SHELL_OFFSET = 1.0e-4;
 

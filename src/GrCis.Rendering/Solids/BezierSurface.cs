@@ -166,8 +166,8 @@ public partial class BezierSurface : DefaultSceneNode, ISolid, IRecordSolid
     return max;
   }
 
-  /// <summary>Point and partial derivatives of patch <paramref name="patch"/> at (u, v).</summary>
-  void Evaluate(int patch, double u, double v, out Vector3d s, out Vector3d su, out Vector3d sv)
+  /// <summary>Point and partial derivatives of patch <paramref name="patch"/> at (u, v) (also the tessellation's points).</summary>
+  internal void Evaluate(int patch, double u, double v, out Vector3d s, out Vector3d su, out Vector3d sv)
   {
     Vector3d[] p = control[patch];
     Span<double> bu = stackalloc double[4];

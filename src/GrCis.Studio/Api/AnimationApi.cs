@@ -30,6 +30,8 @@ internal static class AnimationApi
     });
     api.MapGet("/animation/frame/{k:int}.png", Results<FileContentHttpResult, NotFound> (int k, StudioSession s) =>
       s.Animation?.Frame(k) is byte[] png ? TypedResults.File(png, "image/png") : TypedResults.NotFound());
+    api.MapGet("/animation/frame/{k:int}.glb", Results<FileContentHttpResult, NotFound> (int k, StudioSession s) =>
+      StudioSceneFiles.FrameGlb(s, k) is byte[] glb ? TypedResults.File(glb, "model/gltf-binary", $"frame{k:0000}.glb") : TypedResults.NotFound());
   }
 
   static Results<Accepted, ProblemHttpResult> Start(AnimationBody body, StudioSession s, AllowedFiles files, HttpRequest request)

@@ -50,6 +50,9 @@ internal static class StudioApi
     api.MapGet("/image.png", Image);
     api.MapGet("/image.pfm", Results<FileContentHttpResult, NotFound> (StudioSession s) =>
       s.FinalImage() is FloatImage f ? TypedResults.File(PfmWriter.Encode(f), "application/octet-stream", "render.pfm") : TypedResults.NotFound());
+    // The scene on show for Blender or any 3D viewer: what grcis export writes (docs/export.md).
+    api.MapGet("/scene.glb", Results<FileContentHttpResult, ProblemHttpResult> (StudioSession s) =>
+      StudioSceneFiles.StillGlb(s) is byte[] glb ? TypedResults.File(glb, "model/gltf-binary", "scene.glb") : Problems.NotFound("render something first"));
     api.MapGet("/probe", Probe);
     api.MapGet("/source", Source);
     api.MapPut("/source", SaveSource);

@@ -65,6 +65,9 @@ async function showFrame(k) {
   $("framePng").href = `api/animation/frame/${k}.png`;
   $("framePng").download = `out${String(k).padStart(4, "0")}.png`;
   $("framePng").hidden = false;
+  $("frameGlb").href = `api/animation/frame/${k}.glb`;
+  $("frameGlb").download = `out${String(k).padStart(4, "0")}.glb`;
+  $("frameGlb").hidden = false;
 }
 
 function togglePlay() {

@@ -26,7 +26,7 @@ export function showStatus() {
   showDiagnostics(s.diagnostics, s.diagnosticsScene);
   $("stop").disabled = s.phase === "idle" || s.phase === "restarting";
   // The downloads are links: without an image (version 0, before the first preview) they lead nowhere, so they have no href.
-  for (const id of ["png", "pfm"]) {
+  for (const id of ["png", "pfm", "glb"]) {
     const link = $(id);
     if (s.version > 0) link.setAttribute("href", link.dataset.href);
     else link.removeAttribute("href");
