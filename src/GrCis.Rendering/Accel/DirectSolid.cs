@@ -16,6 +16,6 @@ internal enum DirectSolid : byte
   /// <summary>Exactly the library's <see cref="Rendering.Plane"/>.</summary>
   Plane,
 
-  /// <summary>Exactly the library's <see cref="Rendering.TriangleMesh"/>: shadow queries use its any-hit walk (<see cref="TriangleMesh.IntersectAny"/>).</summary>
-  Mesh,
+  /// <summary>A solid whose shadow queries use its any-hit walk (<see cref="IAnyHitSolid"/>, the library's mesh); its records through its interface.</summary>
+  AnyHit,
 }

@@ -59,12 +59,18 @@ internal static class LibraryTypes
   }
 
   /// <summary>
-  /// The library solid the prepared scene may call directly: exactly <see cref="Sphere"/>, <see cref="Plane"/> or <see cref="TriangleMesh"/> (a
-  /// subclass may change the kernel or the hit set-up, so it is called through its interface).
+  /// The library solid the prepared scene may call directly: exactly <see cref="Sphere"/> or <see cref="Plane"/> (a
+  /// subclass may change the kernel or the hit set-up, so it is called through its interface); or a solid whose shadow
+  /// queries may take its any-hit walk (<see cref="IAnyHitSolid"/>: the library's mesh, or a subclass that changes
+  /// nothing of it; one that changes anything might change its records, so it is asked for them).
   /// </summary>
   public static DirectSolid DirectKernel(IRecordSolid solid) =>
     solid.GetType() == typeof(Sphere) ? DirectSolid.Sphere : solid.GetType() == typeof(Plane) ? DirectSolid.Plane :
-    solid.GetType() == typeof(TriangleMesh) ? DirectSolid.Mesh : DirectSolid.None;
+    solid is IAnyHitSolid && SubclassCheck.OverridesNothing(solid, ImplementingClass(solid, typeof(IAnyHitSolid))) ? DirectSolid.AnyHit :
+    DirectSolid.None;
+
+  // The class whose methods implement the interface for this object (the library class, unless a subclass re-implements it).
+  static Type ImplementingClass(object o, Type contract) => o.GetType().GetInterfaceMap(contract).TargetMethods[0].DeclaringType!;
 
   /// <summary>A sphere whose records are the library sphere's (an emitter the light model may sample as a sphere).</summary>
   public static bool HasSphereGeometry(Sphere sphere) => SubclassCheck.KeepsGeometry(sphere, typeof(Sphere));

@@ -218,11 +218,11 @@ public sealed partial class PreparedScene
           DirectSolid.Sphere => Unsafe.As<Sphere>(solid).First(lp0, lp1, q.Len2, out h, out inside),
           DirectSolid.Plane => Unsafe.As<Plane>(solid).First(lp0, lp1, q.Len2, out h, out inside),
           // A shadow query asks the mesh for any blocker up to the bound, not the first record (see Occluded).
-          DirectSolid.Mesh when q.Any => Unsafe.As<TriangleMesh>(solid).IntersectAny(lp0, lp1, q.Len2, q.BestT, out h, out inside),
+          DirectSolid.AnyHit when q.Any => Unsafe.As<IAnyHitSolid>(solid).IntersectAny(lp0, lp1, q.Len2, q.BestT, out h, out inside),
           _ => solid.IntersectFirst(lp0, lp1, q.Len2, out h, out inside),
         };
         // An any-hit entry in the bound's slack beyond "not far" need not be the first: the list decides (rare).
-        if (has && q.Any && m.Direct == DirectSolid.Mesh && h.Enter && !inside && !NotFar(h.T, q.Len2))
+        if (has && q.Any && m.Direct == DirectSolid.AnyHit && h.Enter && !inside && !NotFar(h.T, q.Len2))
           return false;
       }
       else

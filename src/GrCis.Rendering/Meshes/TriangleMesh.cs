@@ -15,7 +15,7 @@ namespace Rendering;
 /// coordinates are interpolated when the mesh has them (GrCis leaves them zero). The search
 /// structure (<see cref="MeshBvh"/>) is built on first use; change the mesh before rendering.
 /// </summary>
-public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
+public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
 {
   /// <summary>The mesh (GrCis keeps it reachable for subclasses).</summary>
   protected SceneBrep mesh;
@@ -151,14 +151,14 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid
   }
 
   /// <summary>
-  /// The shadow query's form of <see cref="IntersectFirst"/> (for the library's own class only; the prepared scene decides):
+  /// The shadow query's form of <see cref="IntersectFirst"/> (the prepared scene decides when to ask it):
   /// when the list is outside just before the first accepted record (the last rejected hit is a back face), any accepted
   /// front-face hit with T ≤ <paramref name="tMax"/> may answer instead of the first one, and the walk stops there; with
   /// none, there is no record up to <paramref name="tMax"/> that changes the list's state, and none is reported (an
   /// accepted back-face hit is reported as the first record, an exit, so the caller falls back to the list). Otherwise
   /// the answer is <see cref="IntersectFirst"/>'s.
   /// </summary>
-  internal bool IntersectAny(in Vector3d p0, in Vector3d p1, double len2, double tMax, out SolidRecord hit, out bool insideBefore)
+  bool IAnyHitSolid.IntersectAny(in Vector3d p0, in Vector3d p1, double len2, double tMax, out SolidRecord hit, out bool insideBefore)
   {
     MeshBvh b = Bvh;
     bool hasLast = b.Nearest(p0, p1, len2, false, out MeshHit last);

@@ -8,11 +8,32 @@ namespace GrCis.Rendering.Tests.Accel;
 
 /// <summary>
 /// Shadow queries that stop at the first blocker and never look past the segment's end (the mesh's any-hit walk,
-/// <see cref="TriangleMesh.IntersectAny"/>): on many seeded random segments against each solid kind the prepared scene
+/// <see cref="IAnyHitSolid.IntersectAny"/>): on many seeded random segments against each solid kind the prepared scene
 /// handles, and against closed, open and inward-facing meshes, the answer is the closest hit's within the segment.
 /// </summary>
 public class AnyHitTests
 {
+  /// <summary>A student's mesh that only names itself: it changes nothing of the library's.</summary>
+  sealed class NamedMesh(SceneBrep m) : TriangleMesh(m);
+
+  /// <summary>A student's mesh with records of its own: its shadow queries must ask them, not the library's walk.</summary>
+  sealed class OwnRecordsMesh(SceneBrep m) : TriangleMesh(m)
+  {
+    public override bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore) =>
+      base.IntersectFirst(p0, p1, len2, out hit, out insideBefore);
+  }
+
+  [Fact]
+  public void The_any_hit_walk_is_taken_for_the_library_mesh_and_subclasses_that_change_nothing_of_it()
+  {
+    SceneBrep torus = ProceduralMesh.Torus(12, 6);
+    Assert.Equal(DirectSolid.AnyHit, LibraryTypes.DirectKernel(new TriangleMesh(torus)));
+    Assert.Equal(DirectSolid.AnyHit, LibraryTypes.DirectKernel(new NamedMesh(torus)));
+    Assert.Equal(DirectSolid.None, LibraryTypes.DirectKernel(new OwnRecordsMesh(torus)));
+    Assert.Equal(DirectSolid.Sphere, LibraryTypes.DirectKernel(new Sphere()));
+    Assert.Equal(DirectSolid.None, LibraryTypes.DirectKernel(new Cube()));
+  }
+
   /// <summary>A torus mesh with every third triangle left out (open: lists that start inside, exits while outside).</summary>
   static SceneBrep OpenTorus(bool flipped = false)
   {
@@ -125,7 +146,7 @@ public class AnyHitTests
       double len2 = p1.LengthSquared;
       double tMax = r.NextDouble() < 0.2 ? 0.3 + r.NextDouble() : 1.0;
       bool first = mesh.IntersectFirst(p0, p1, len2, out SolidRecord f, out bool insideFirst);
-      bool any = mesh.IntersectAny(p0, p1, len2, tMax, out SolidRecord h, out bool insideAny);
+      bool any = ((IAnyHitSolid)mesh).IntersectAny(p0, p1, len2, tMax, out SolidRecord h, out bool insideAny);
       Assert.Equal(insideFirst, insideAny);
       bool firstBlocks = first && f.Enter && !insideFirst && f.T <= tMax;
       bool anyBlocks = any && h.Enter && !insideAny && h.T <= tMax;
