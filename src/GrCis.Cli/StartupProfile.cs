@@ -14,7 +14,8 @@ namespace GrCis.Cli;
 /// build, the newest <see cref="Kept"/> kept. Off when the cache is (<c>GRCIS_NO_CACHE=1</c>, <c>--no-cache</c>, no
 /// cache folder), for <c>studio</c> and <c>init</c>, and for scene scripts: a run that compiles a script would record
 /// the compiler, and replaying that would load it in a later run that finds the script compiled in the cache.
-/// A profile that is missing, another build's or unreadable only costs its speed-up.
+/// A profile that is missing, another build's or unreadable only costs its speed-up; a folder another user could write
+/// (as the cache's trust rule says) is not used.
 /// </summary>
 static class StartupProfile
 {
@@ -35,6 +36,10 @@ static class StartupProfile
       string folder = Path.Combine(cache.Directory, "startup");
       CreatePrivate(cache.Directory);
       CreatePrivate(folder);
+      // A profile steers what the JIT compiles: none from a folder another user could have written (the cache itself
+      // says so when a script asks it).
+      if (ScriptCache.WhyUntrusted(cache.Directory) != null || ScriptCache.WhyUntrusted(folder) != null)
+        return;
       Prune(folder, Kept);
       ProfileOptimization.SetProfileRoot(folder);
       ProfileOptimization.StartProfile(FileName(args[0], BuildId()));

@@ -141,4 +141,23 @@ public class StartupProfileTests
     Assert.Equal(owner, File.GetUnixFileMode(cache));
     Assert.Equal(owner, File.GetUnixFileMode(Path.Combine(cache, "startup")));
   }
+
+  [UnixFact]
+  public void No_profile_is_read_or_written_in_a_cache_folder_others_may_write()
+  {
+    using var dir = new TempDirectory();
+    string cache = Directory.CreateDirectory(dir.File("cache")).FullName;
+    string startup = Directory.CreateDirectory(Path.Combine(cache, "startup")).FullName;
+    var open = (UnixFileMode)Convert.ToInt32("777", 8);
+    File.SetUnixFileMode(cache, open);
+    File.SetUnixFileMode(startup, open);
+    // A profile planted by someone else is left alone, and no new one is written.
+    string planted = Path.Combine(startup, StartupProfile.FileName("render", StartupProfile.BuildId()));
+    File.WriteAllText(planted, "planted");
+    var r = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, new Dictionary<string, string> { [ScriptCache.DirectoryVariable] = cache },
+                                                   "render", "fiveballs", "--size", "16x12", "-q", "-o", "a.png"));
+    Assert.True(r.Code == 0, r.Error);
+    Assert.Equal("planted", File.ReadAllText(planted));
+    Assert.Equal([planted], Directory.GetFiles(startup));
+  }
 }

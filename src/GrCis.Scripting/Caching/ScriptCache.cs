@@ -96,6 +96,12 @@ public sealed class ScriptCache
   public int Stores => Volatile.Read(ref stores);
 
   /// <summary>
+  /// Why the folder <paramref name="directory"/> of (or in) a cache may not be trusted with what steers grcis (another
+  /// user owns it, or others may write it), or null when it is the user's alone; nothing is checked on Windows.
+  /// </summary>
+  public static string? WhyUntrusted(string directory) => CacheFolderTrust.Untrusted(directory);
+
+  /// <summary>
   /// The cache the environment asks for: null when <see cref="DisableVariable"/> is set, else one in
   /// <see cref="DefaultDirectory"/> (null too when no folder can be named: no home folder).
   /// </summary>
