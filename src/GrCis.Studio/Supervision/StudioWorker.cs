@@ -21,6 +21,7 @@ internal sealed class StudioWorker : IDisposable
   readonly Task errorsRead;
   readonly TaskCompletionSource exited = new(TaskCreationOptions.RunContinuationsAsynchronously);
   string? endedBecause;
+  bool overflowed;
 
   StudioWorker(Process process, TextWriter errors)
   {
@@ -31,6 +32,9 @@ internal sealed class StudioWorker : IDisposable
       {
         lock (lastErrors)
         {
+          // The runtime's "Stack overflow." comes before a long stack trace: kept apart, it outlives the kept tail.
+          if (line.StartsWith("Stack overflow", StringComparison.Ordinal))
+            overflowed = true;
           lastErrors.Enqueue(line);
           if (lastErrors.Count > KeptLines)
             lastErrors.Dequeue();
@@ -121,7 +125,7 @@ internal sealed class StudioWorker : IDisposable
     errorsRead.Wait(TimeSpan.FromSeconds(2));
     string tail;
     lock (lastErrors)
-      tail = string.Join('\n', lastErrors);
+      tail = (overflowed ? "Stack overflow.\n" : "") + string.Join('\n', lastErrors);
     int code = process.HasExited ? process.ExitCode : 0;
     return WorkerEndings.Sentence(endedBecause, code, tail);
   }
