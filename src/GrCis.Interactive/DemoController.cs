@@ -20,9 +20,6 @@ public sealed partial class DemoController : IDisposable
   CancellationTokenSource? build;
   CancellationTokenSource? inspecting;
   Task? buildTask;
-  // What the last Stop stopped, which a script that ignores the stop keeps running (StoppedWorkRunning).
-  Task? stoppedBuild;
-  RenderSession? stoppedSession;
   ScriptWatcher? watcher;
   SceneEntry? selected;
   bool watch;
@@ -98,20 +95,6 @@ public sealed partial class DemoController : IDisposable
     {
       lock (sync)
         return building || (session?.IsRunning == true && finishedId != renderId);
-    }
-  }
-
-  /// <summary>
-  /// True while what the last <see cref="Stop"/> stopped (the script being built, the render) still runs: a script that
-  /// ignores the stop (a loop in code the script host does not instrument) keeps it true, however many renders start
-  /// after it. A supervisor (the studio's) ends the process when it stays true after a grace time.
-  /// </summary>
-  public bool StoppedWorkRunning
-  {
-    get
-    {
-      lock (sync)
-        return stoppedBuild is { IsCompleted: false } || stoppedSession?.IsRunning == true;
     }
   }
 

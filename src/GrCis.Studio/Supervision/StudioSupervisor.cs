@@ -294,14 +294,9 @@ public sealed class StudioSupervisor : IAsyncDisposable
     }
     if (!answering.IsCompleted && why != null)
     {
-      if (path == "/api/status")
+      if (path is "/api/status" or "/api/events")
       {
-        await context.Response.WriteAsJsonAsync(Restarting(why), Json, context.RequestAborted).ConfigureAwait(false);
-        return;
-      }
-      if (path == "/api/events")
-      {
-        await RestartingEventsAsync(context, why, answering).ConfigureAwait(false);
+        await RestartingAnswers.AnswerAsync(context, why, answering, Json).ConfigureAwait(false);
         return;
       }
     }
@@ -357,29 +352,6 @@ public sealed class StudioSupervisor : IAsyncDisposable
       }
     }
     return null;
-  }
-
-  /// <summary>What <c>/api/status</c> says while the studio process restarts: nothing runs, and why it restarts.</summary>
-  static StudioStatus Restarting(string why) =>
-    new(false, 0, 0, 0, "", why, [], []) { Phase = "restarting", Generation = -1 };
-
-  // One status event, then the end of the stream once the new studio process answers: the browser reconnects by
-  // itself (after the half second asked for) and so reaches the new one.
-  static async Task RestartingEventsAsync(HttpContext context, string why, Task<StudioWorker> answering)
-  {
-    context.Response.ContentType = "text/event-stream";
-    context.Response.Headers.CacheControl = "no-cache";
-    string data = JsonSerializer.Serialize(Restarting(why), Json);
-    try
-    {
-      await context.Response.WriteAsync($"retry: 500\nevent: status\ndata: {data}\n\n", context.RequestAborted).ConfigureAwait(false);
-      await context.Response.Body.FlushAsync(context.RequestAborted).ConfigureAwait(false);
-      await answering.WaitAsync(TimeSpan.FromSeconds(15), context.RequestAborted).ConfigureAwait(false);
-    }
-    catch (Exception e) when (e is OperationCanceledException or TimeoutException)
-    {
-      // The page went, or the restart takes long: the browser asks again.
-    }
   }
 
   // Stop always stops: what it stopped still running after the grace time (a loop that never looks at the stop) ends
