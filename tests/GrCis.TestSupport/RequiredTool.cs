@@ -23,12 +23,8 @@ public static class RequiredTool
   /// <summary>The same rule for a shared library (found by the caller, e.g. with NativeLibrary.TryLoad): skips or fails when absent.</summary>
   public static void Library(string library, bool present, string debianPackage)
   {
-    if (present)
-      return;
-    string message = $"'{library}' is not installed: install the Debian package '{debianPackage}' (apt-get install -y {debianPackage}; .ci/run does)";
-    if (Required)
-      throw new Xunit.Sdk.XunitException(message + $"; {RequireVariable}=1, so this fails instead of skipping");
-    throw new SkipException(message);
+    if (!present)
+      throw Missing(library, debianPackage, Required);
   }
 
   /// <summary>True when <c>GRCIS_REQUIRE_TOOLS=1</c>: a missing tool fails the test.</summary>
@@ -37,13 +33,14 @@ public static class RequiredTool
   /// <summary>The rule itself, with PATH and the require switch passed in (so it can be tested).</summary>
   public static string Find(string command, string debianPackage, string? path, bool required)
   {
-    string? found = OnPath(command, path);
-    if (found != null)
-      return found;
-    string message = $"'{command}' is not installed: install the Debian package '{debianPackage}' (apt-get install -y {debianPackage}; .ci/run does)";
-    if (required)
-      throw new Xunit.Sdk.XunitException(message + $"; {RequireVariable}=1, so this fails instead of skipping");
-    throw new SkipException(message);
+    return OnPath(command, path) ?? throw Missing(command, debianPackage, required);
+  }
+
+  // What a missing tool or library gives: a skip naming its Debian package, or a failure when the tools are required.
+  static Exception Missing(string what, string debianPackage, bool required)
+  {
+    string message = $"'{what}' is not installed: install the Debian package '{debianPackage}' (apt-get install -y {debianPackage}; .ci/run does)";
+    return required ? new Xunit.Sdk.XunitException(message + $"; {RequireVariable}=1, so this fails instead of skipping") : new SkipException(message);
   }
 
   /// <summary>The first executable file named <paramref name="command"/> in the PATH list, or null.</summary>
