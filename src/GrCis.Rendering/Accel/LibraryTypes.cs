@@ -10,9 +10,9 @@ namespace Rendering.Accel;
 /// predicate here, answered by <see cref="SubclassCheck"/> (reflection once per class, cached). The scene
 /// preparation records its answers in the prepared scene's <see cref="SceneCapabilities"/>; the shading and the
 /// front ends ask the rest once per function, renderer or render, and the per-hit shading only the inline
-/// exact-type tests.
+/// exact-type tests. The library's solids the prepared scene calls by name are in <c>LibraryTypes.Solids.cs</c>.
 /// </summary>
-internal static class LibraryTypes
+internal static partial class LibraryTypes
 {
   // ---------------------------------------------------------------- the scene graph (decided when a scene is prepared)
 
@@ -41,42 +41,6 @@ internal static class LibraryTypes
   /// <summary>A texture that reads only a hit's texture coordinate and surface colour (the library's checker and image textures).</summary>
   public static bool ReadsOnlyTextureCoord(ITexture texture) =>
     SubclassCheck.OverridesNothing(texture, typeof(CheckerTexture)) || SubclassCheck.OverridesNothing(texture, typeof(ImageTexture));
-
-  /// <summary>
-  /// The surface-only completion of a solid's hit: <see cref="HitCompletion.Sphere"/> (or
-  /// <see cref="HitCompletion.SphereTextured"/>), <see cref="HitCompletion.Plane"/> or <see cref="HitCompletion.Cube"/>
-  /// for the library's own solids and subclasses that override nothing; <see cref="HitCompletion.Full"/> otherwise.
-  /// </summary>
-  public static HitCompletion SurfaceShape(IRecordSolid solid, bool textured)
-  {
-    if (SubclassCheck.OverridesNothing(solid, typeof(Sphere)))
-      return textured ? HitCompletion.SphereTextured : HitCompletion.Sphere;
-    if (SubclassCheck.OverridesNothing(solid, typeof(Plane)))
-      return HitCompletion.Plane;
-    if (SubclassCheck.OverridesNothing(solid, typeof(Cube)))
-      return HitCompletion.Cube;
-    return HitCompletion.Full;
-  }
-
-  /// <summary>
-  /// The library solid the prepared scene may call directly: exactly <see cref="Sphere"/> or <see cref="Plane"/> (a
-  /// subclass may change the kernel or the hit set-up, so it is called through its interface); or a solid whose shadow
-  /// queries may take its any-hit walk (<see cref="IAnyHitSolid"/>: the library's mesh, or a subclass that changes
-  /// nothing of it; one that changes anything might change its records, so it is asked for them).
-  /// </summary>
-  public static DirectSolid DirectKernel(IRecordSolid solid) =>
-    solid.GetType() == typeof(Sphere) ? DirectSolid.Sphere : solid.GetType() == typeof(Plane) ? DirectSolid.Plane :
-    solid is IAnyHitSolid && SubclassCheck.OverridesNothing(solid, ImplementingClass(solid, typeof(IAnyHitSolid))) ? DirectSolid.AnyHit :
-    DirectSolid.None;
-
-  // The class whose methods implement the interface for this object (the library class, unless a subclass re-implements it).
-  static Type ImplementingClass(object o, Type contract) => o.GetType().GetInterfaceMap(contract).TargetMethods[0].DeclaringType!;
-
-  /// <summary>A sphere whose records are the library sphere's (an emitter the light model may sample as a sphere).</summary>
-  public static bool HasSphereGeometry(Sphere sphere) => SubclassCheck.KeepsGeometry(sphere, typeof(Sphere));
-
-  /// <summary>A plane whose records are the library plane's (an emitter the light model may sample as a rectangle).</summary>
-  public static bool HasPlaneGeometry(Plane plane) => SubclassCheck.KeepsGeometry(plane, typeof(Plane));
 
   // ---------------------------------------------------------------- shading
 

@@ -92,27 +92,8 @@ public sealed partial class PreparedScene
         m.NoShadow |= leaf.NoShadow;
     }
 
-    if (node is Sphere && m.RecordSolid != null && TrySimilarity(path, out Vector3d center, out double radius))
-    {
-      // 1e-6 relative slack covers the rounding of the chain and of this estimate by a wide margin.
-      double r = radius * (1.0 + 1.0e-6) + 1.0e-12;
-      m.CullCenter = center;
-      m.CullRadius2 = r * r;
-    }
-
-    if (node is Plane plane && m.RecordSolid != null)
-    {
-      PlaneCull.Build(ref m, path);
-      if (BoundedPlaneBox(plane, out Aabb flat))
-      {
-        Aabb world = flat.Transformed(LocalToWorldOf(path));
-        if (!world.IsEmpty && world.IsFinite)
-        {
-          m.LineBox = world.Padded();
-          m.HasLineBox = true;
-        }
-      }
-    }
+    if (m.RecordSolid != null)
+      LibraryTypes.BindShapeCulls(ref m, m.RecordSolid, path);
 
     if (node is ISceneNode sn && TryClosedBox(sn, out Aabb local))
     {
@@ -128,31 +109,12 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>The member's local-to-world matrix: the inverse of the chain the ray goes through.</summary>
-  static Matrix4d LocalToWorldOf(List<Matrix4d> path)
+  internal static Matrix4d LocalToWorldOf(List<Matrix4d> path)
   {
     Matrix4d worldToLocal = Matrix4d.Identity;
     for (int k = 0; k < path.Count; k++)
       worldToLocal *= path[k];
     return worldToLocal.Inverted();
-  }
-
-  /// <summary>Local box of a finite rectangle or triangle of the z = 0 plane (where <see cref="Plane"/> can have its record).</summary>
-  static bool BoundedPlaneBox(Plane plane, out Aabb box)
-  {
-    box = Aabb.Empty;
-    double x0 = plane.XMin, x1 = plane.XMax, y0 = plane.YMin, y1 = plane.YMax;
-    if (plane.Triangle)
-    {
-      // x ≥ XMin, y ≥ YMin, x·XMax + y·YMax ≤ 1: bounded only for positive XMax and YMax.
-      if (!(plane.XMax > 0.0 && plane.YMax > 0.0))
-        return false;
-      x1 = (1.0 - y0 * plane.YMax) / plane.XMax;
-      y1 = (1.0 - x0 * plane.XMax) / plane.YMax;
-    }
-    if (!double.IsFinite(x0) || !double.IsFinite(x1) || !double.IsFinite(y0) || !double.IsFinite(y1))
-      return false;
-    box = new Aabb(new Vector3d(x0, y0, 0.0), new Vector3d(x1, y1, 0.0));
-    return true;
   }
 
   /// <summary>Binds a known solid: its kernel, completion matrices and the attributes resolved once.</summary>
@@ -182,7 +144,7 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>World centre and radius of the unit sphere under the chain, when the chain is a similarity (<see cref="EmitterSet.Similarity"/>).</summary>
-  static bool TrySimilarity(List<Matrix4d> path, out Vector3d center, out double radius)
+  internal static bool TrySimilarity(List<Matrix4d> path, out Vector3d center, out double radius)
   {
     Matrix4d l2w = LocalToWorldOf(path);
     center = Vector3d.TransformPosition(Vector3d.Zero, l2w);

@@ -211,16 +211,9 @@ public sealed partial class PreparedScene
       ref SolidRecord h = ref q.Free;
       if (m.RecordSolid is IRecordSolid solid)
       {
-        // The library's sphere and plane called directly (decided when the member was bound): no interface call in
-        // code compiled without a profile (ReadyToRun, a render's first moments).
-        has = m.Direct switch
-        {
-          DirectSolid.Sphere => Unsafe.As<Sphere>(solid).First(lp0, lp1, q.Len2, out h, out inside),
-          DirectSolid.Plane => Unsafe.As<Plane>(solid).First(lp0, lp1, q.Len2, out h, out inside),
-          // A shadow query asks the mesh for any blocker up to the bound, not the first record (see Occluded).
-          DirectSolid.AnyHit when q.Any => Unsafe.As<IAnyHitSolid>(solid).IntersectAny(lp0, lp1, q.Len2, q.BestT, out h, out inside),
-          _ => solid.IntersectFirst(lp0, lp1, q.Len2, out h, out inside),
-        };
+        // The library's sphere, plane and mesh called by name (decided when the member was bound); a shadow query asks
+        // the mesh for any blocker up to the bound, not the first record (see Occluded).
+        has = LibraryTypes.First(m.Direct, solid, lp0, lp1, q.Len2, q.Any, q.BestT, out h, out inside);
         // An any-hit entry in the bound's slack beyond "not far" need not be the first: the list decides (rare).
         if (has && q.Any && m.Direct == DirectSolid.AnyHit && h.Enter && !inside && !NotFar(h.T, q.Len2))
           return false;

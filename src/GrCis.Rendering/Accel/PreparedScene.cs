@@ -214,15 +214,15 @@ public sealed partial class PreparedScene : ISceneQuery
     }
     else
       i = new Intersection(f);
-    // The library's sphere and plane directly (see TestMember).
-    switch (m.Direct)
-    {
-      case DirectSolid.Sphere: Sphere.Init(hit, i); break;
-      case DirectSolid.Plane: Plane.Init(hit, i); break;
-      default: f.InitIntersection(hit, i); break;
-    }
+    LibraryTypes.Init(m.Direct, f, hit, i);
     if (surfaceOnly && m.Completion != HitCompletion.Full)
-      i.CompleteSurface(m.LocalToWorld, m.WorldToLocal, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion, m.Completion);
+    {
+      if (i.BeginSurface(m.LocalToWorld, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion))
+      {
+        LibraryTypes.CompleteSurface(m.Completion, i, m.WorldToLocal);
+        i.EndSurface();
+      }
+    }
     else if (m.AttributesCached)
       i.CompleteCached(m.LocalToWorld, m.WorldToLocal, m.LocalToObject, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion);
     else

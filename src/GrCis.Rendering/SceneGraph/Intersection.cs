@@ -298,29 +298,29 @@ public class Intersection : IComparable<Intersection>
   }
 
   /// <summary>
-  /// <see cref="CompleteCached"/> for a hit only the library's own shading reads (see <see cref="Accel.HitCompletion"/>):
-  /// the world point, normal, attributes and (when a checker or image texture reads them) texture coordinates, computed as the full
-  /// completion computes them; tangents, object coordinates and the three matrices are left as they are.
+  /// The start of <see cref="CompleteCached"/> for a hit only the library's own shading reads (see <see cref="Accel.HitCompletion"/>):
+  /// the world point and the attributes. The solid then sets the normal and, when a checker or image texture reads them, the
+  /// texture coordinates, as its full completion computes them (tangents, object coordinates and the three matrices are left
+  /// as they are), and <see cref="EndSurface"/> finishes. False when this hit is already complete.
   /// </summary>
-  internal void CompleteSurface(in Matrix4d localToWorld, in Matrix4d worldToLocal, IReflectanceModel model, IMaterial material,
-                             double[]? color, LinkedList<ITexture>? textures, object? recursion, Accel.HitCompletion completion)
+  internal bool BeginSurface(in Matrix4d localToWorld, IReflectanceModel model, IMaterial material, double[]? color,
+                             LinkedList<ITexture>? textures, object? recursion)
   {
     CachedRecursion = recursion;
     RecursionCached = true;
     if (completed)
-      return;
+      return false;
     CoordWorld = Vector3d.TransformPosition(CoordLocal, localToWorld);
     ReflectanceModel = model;
     Material = material;
     CopyCachedColor(color);
     Textures = textures;
+    return true;
+  }
 
-    if (completion == Accel.HitCompletion.Plane)
-      ((Plane)Solid!).CompleteSurface(this, worldToLocal);
-    else if (completion == Accel.HitCompletion.Cube)
-      Cube.CompleteSurface(this, worldToLocal);
-    else
-      Sphere.CompleteSurface(this, worldToLocal, completion == Accel.HitCompletion.SphereTextured);
+  /// <summary>The end of a surface-only completion (<see cref="BeginSurface"/>): the normal unit length and facing the ray.</summary>
+  internal void EndSurface()
+  {
     Normal.Normalize();
     if (Enter != Front)
       Normal = -Normal;
