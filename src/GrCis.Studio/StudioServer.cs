@@ -65,6 +65,11 @@ public sealed class StudioServer : IAsyncDisposable
     var controller = DemoController.FromCommandLine(args, scripts, problems, files.Allows);
     var session = new StudioSession(controller) { Scripts = scripts, Notice = options.Notice, Generation = options.Generation };
     string token = options.Token ?? AccessGuard.NewToken();
+    // The editor's language services load (Roslyn's metadata and its first completion: seconds) while the server starts
+    // and the user opens the page, on the second core, not on the page's first completion.
+    var editor = new EditorAssistance(session);
+    if (options.WarmEditor)
+      _ = editor.WarmAsync();
 
     WebApplicationBuilder builder = WebApplication.CreateSlimBuilder();
     builder.Logging.ClearProviders();
@@ -94,7 +99,8 @@ public sealed class StudioServer : IAsyncDisposable
     });
     builder.Services.AddSingleton(session);
     builder.Services.AddSingleton(files);
-    builder.Services.AddSingleton<EditorAssistance>();
+    // Made by a factory, so the container disposes it with the server (which ends a warm-up still running).
+    builder.Services.AddSingleton(_ => editor);
     WebApplication app = builder.Build();
 
     // A failure inside an endpoint, and an answer with a status and no body (a 404 of an image not rendered yet), are
@@ -137,9 +143,6 @@ public sealed class StudioServer : IAsyncDisposable
     // The rules name the address the user reaches: a supervisor's port when one forwards here (it passes Host and Origin on).
     int reached = options.PublicPort != 0 ? options.PublicPort : port;
     Volatile.Write(ref guard, new AccessGuard(token, AccessGuard.HostsFor(options.Host, reached, options.IsLoopback), options.IsAnyAddress ? reached : 0, reached));
-    // The editor's language services load while the user opens the page, not on its first completion.
-    if (options.WarmEditor)
-      _ = app.Services.GetRequiredService<EditorAssistance>().WarmAsync(app.Lifetime.ApplicationStopping);
     string shown = options.IsLoopback ? "127.0.0.1" : StudioOptions.UrlHost(options.Host);
     return new StudioServer(app, session, token, $"http://{shown}:{port}/?token={token}");
   }

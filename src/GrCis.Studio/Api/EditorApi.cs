@@ -40,9 +40,9 @@ internal static class EditorApi
       : await e.Assistant.HoverAsync(r.Text!, r.Position, cancel) is { } hover ? TypedResults.Ok(hover) : TypedResults.NoContent());
     editor.MapPost("/check", Check);
     // Answers once the language services are loaded: until then the page says that completion is loading.
-    editor.MapGet("/ready", async (EditorAssistance e, IHostApplicationLifetime lifetime, CancellationToken cancel) =>
+    editor.MapGet("/ready", async (EditorAssistance e, CancellationToken cancel) =>
     {
-      await e.ReadyAsync(lifetime.ApplicationStopping, cancel);
+      await e.ReadyAsync(cancel);
       return TypedResults.NoContent();
     });
   }

@@ -26,19 +26,22 @@ public sealed class EditorAssistance(StudioSession session) : IDisposable
   // A short script whose completion walks the paths a page's first request takes (symbols, member lists, docs).
   const string WarmText = "var m = new PhongMaterial(new double[] { 1.0, 0.5, 0.2 }, 0.1, 0.8, 0.2, 16);\nscene.";
 
+  // Ends the warm-up when the studio stops (Dispose).
+  readonly CancellationTokenSource stopped = new();
+
   /// <summary>
   /// Loads the language services and runs one completion in the background, so that the page's first completion
-  /// finds them ready instead of paying their few seconds of loading (started when the studio starts, or by the first
-  /// <see cref="ReadyAsync"/>); started once, later calls return the same warm-up.
+  /// finds them ready instead of paying their few seconds of loading (started before the studio's server starts, or by
+  /// the first <see cref="ReadyAsync"/>); started once, later calls return the same warm-up.
   /// </summary>
-  internal Task WarmAsync(CancellationToken cancel)
+  internal Task WarmAsync()
   {
     lock (warming)
       return Warmed ??= Task.Run(async () =>
       {
         try
         {
-          await Assistant.CompleteAsync(WarmText, WarmText.Length, cancel: cancel).ConfigureAwait(false);
+          await Assistant.CompleteAsync(WarmText, WarmText.Length, cancel: stopped.Token).ConfigureAwait(false);
         }
         catch (Exception e) when (e is OperationCanceledException or ObjectDisposedException)
         {
@@ -53,10 +56,10 @@ public sealed class EditorAssistance(StudioSession session) : IDisposable
   internal Task? Warmed { get; private set; }
 
   /// <summary>
-  /// Completes when the language services answer at their warm speed (starting the warm-up if the studio did not):
-  /// the page shows that they are loading until then. <paramref name="cancel"/> ends only the wait.
+  /// Completes when the language services answer at their warm speed (starting the warm-up if the studio did not),
+  /// or when the studio stops: the page shows that they are loading until then. <paramref name="cancel"/> ends only the wait.
   /// </summary>
-  public Task ReadyAsync(CancellationToken stopping, CancellationToken cancel) => WarmAsync(stopping).WaitAsync(cancel);
+  public Task ReadyAsync(CancellationToken cancel) => WarmAsync().WaitAsync(cancel);
 
   /// <summary>True once the language services are loaded.</summary>
   internal bool Loaded => assistant.IsValueCreated;
@@ -79,6 +82,8 @@ public sealed class EditorAssistance(StudioSession session) : IDisposable
 
   public void Dispose()
   {
+    lock (warming)
+      stopped.Cancel();
     if (assistant.IsValueCreated)
       assistant.Value.Dispose();
     checking.Dispose();
