@@ -84,6 +84,25 @@ public sealed class BrowserScene3dTests(ScriptsStudioFixture studio, ITestOutput
   }
 
   [SkippableFact]
+  public void A_probed_pixels_rays_are_drawn_among_the_scene_and_the_view_from_the_camera_is_the_renders()
+  {
+    ChromeDriver browser = Load();
+    Js(browser, "localStorage.removeItem('grcis-3d-layers');");
+    Render(browser, "TwoSpheres.cs", 320, 240);
+    ClickPixel(browser, 150, 130);
+    Until(browser, () => browser.FindElement(By.Id("rays")).Text.Contains("Primary Sphere", StringComparison.Ordinal), "the glass ball's ray tree");
+    Dictionary<string, int> shown = Open3d(browser);
+    Assert.True(shown["raySegments"] >= 3, $"{shown["raySegments"]} ray segments");
+    System.Threading.Thread.Sleep(200);
+    Shot(browser, "studio-3d.png", docs: true);
+    browser.FindElement(By.Id("fromCamera")).Click();
+    Assert.Equal("true", browser.FindElement(By.Id("fromCamera")).GetAttribute("aria-pressed"));
+    System.Threading.Thread.Sleep(200);
+    Shot(browser, "studio-3d-camera.png", docs: true);
+    browser.FindElement(By.Id("show3d")).Click();
+  }
+
+  [SkippableFact]
   public void The_layers_checkboxes_hide_layers_and_are_remembered_across_a_reload()
   {
     ChromeDriver browser = Load();

@@ -131,7 +131,7 @@ export function camera(json, depth) {
 }
 
 // The size of what the view should frame: the solids other than planes (an infinite plane is a patch far larger than the
-// scene), the camera and the given points; null when there is nothing.
+// scene), the camera, the lights and the given points; null when there is nothing.
 export function bounds(surfaceGroup, json, points = []) {
   const all = new THREE.Box3(), planes = new THREE.Box3();
   surfaceGroup?.updateMatrixWorld(true);
@@ -142,6 +142,7 @@ export function bounds(surfaceGroup, json, points = []) {
   }
   if (all.isEmpty()) all.union(planes);
   if (json?.camera) all.expandByPoint(unit(json.camera.position));
+  for (const l of json?.lights ?? []) all.expandByPoint(unit(l.position));
   for (const p of points) all.expandByPoint(unit(p));
   return all.isEmpty() ? null : all;
 }

@@ -82,11 +82,14 @@ export class View3d {
     const centre = box ? box.getCenter(new THREE.Vector3()) : new THREE.Vector3();
     const o = this.orbit;
     o.target = mirror(centre.toArray());
-    o.radius = Math.max(1e-3, size * 1.2);
+    // Far enough that a ball of the box's diagonal fits the narrower of the view's two angles.
+    const aspect = this.canvas.clientWidth / Math.max(1, this.canvas.clientHeight), half = Math.PI / 8;
+    const narrower = Math.min(half, Math.atan(Math.tan(half) * aspect));
+    o.radius = Math.max(1e-3, size / 2 / Math.sin(narrower));
     if (this.sceneCamera) {
       const offset = mirror(this.sceneCamera.position).sub(o.target);
       if (offset.lengthSq() > 0) {
-        o.theta = Math.atan2(offset.x, offset.z) + 0.6;
+        o.theta = Math.atan2(offset.x, offset.z) + 0.5;
         o.phi = Math.min(Math.PI - 0.01, Math.max(0.01, Math.acos(offset.y / offset.length()) - 0.35));
       }
     }
