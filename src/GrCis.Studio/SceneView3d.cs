@@ -64,8 +64,13 @@ internal static class SceneView3d
   }
 
   // An emissive surface is a light of the scene (the Cornell box's only one), drawn glowing.
-  static double[]? EmissionOf(Rendering.ISceneNode node) =>
-    node.GetAttribute(Rendering.PropertyName.MATERIAL) is Rendering.PhongMaterial { Emission: { Length: > 0 } e } ? [e[0], e[Math.Min(1, e.Length - 1)], e[Math.Min(2, e.Length - 1)]] : null;
+  static double[]? EmissionOf(Rendering.ISceneNode node)
+  {
+    if (node.GetAttribute(Rendering.PropertyName.MATERIAL) is not Rendering.PhongMaterial { Emission: { Length: > 0 } e })
+      return null;
+    // One band is grey, as the renderer reads it.
+    return [e[0], e[Math.Min(1, e.Length - 1)], e[Math.Min(2, e.Length - 1)]];
+  }
 
   static double[] V(Vector3d v) => [v.X, v.Y, v.Z];
 

@@ -24,7 +24,8 @@ public sealed class Scene3dApiTests(StudioFixture studio) : IClassFixture<Studio
     Assert.Equal((40, 30), (scene.GetProperty("width").GetInt32(), scene.GetProperty("height").GetInt32()));
     JsonElement[] parts = scene.GetProperty("parts").EnumerateArray().ToArray();
     Assert.Equal(5, parts.Length);
-    Assert.All(parts, p => Assert.Equal(("Sphere", "Surface", 0), (p.GetProperty("type").GetString(), p.GetProperty("kind").GetString(), p.GetProperty("shape").GetInt32())));
+    Assert.All(parts, p => Assert.Equal(("Sphere", "Surface", 0),
+                                        (p.GetProperty("type").GetString(), p.GetProperty("kind").GetString(), p.GetProperty("shape").GetInt32())));
     // The five balls share one UV sphere: 49 × 25 vertices, 2 × 48 × 23 triangles (the poles' rows are single triangles).
     JsonElement sphere = Assert.Single(scene.GetProperty("shapes").EnumerateArray());
     Assert.Equal(0, sphere.GetProperty("positions").GetArrayLength() % 3);
@@ -61,6 +62,43 @@ public sealed class Scene3dApiTests(StudioFixture studio) : IClassFixture<Studio
     using HttpResponseMessage beyond = await studio.Client.GetAsync($"/api/scene/tessellation?frame={total}");
     Assert.Equal(HttpStatusCode.NotFound, beyond.StatusCode);
     Assert.Contains($"no frame {total}", await beyond.Content.ReadAsStringAsync());
+  }
+
+  [Fact]
+  public async Task CSG_operands_are_named_by_their_operation_a_scripts_own_solid_is_its_box_and_a_sphere_light_has_its_radius()
+  {
+    string path = System.IO.Path.Combine(studio.ScriptsFolder, "Hole.cs");
+    System.IO.File.WriteAllText(path, """
+      CSGInnerNode root = new CSGInnerNode(SetOperation.Union);
+      root.SetAttribute(PropertyName.REFLECTANCE_MODEL, new PhongModel());
+      root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new double[] { 0.5, 0.5, 0.5 }, 0.1, 0.6, 0.3, 16));
+      scene.Intersectable = root;
+      scene.BackgroundColor = new double[] { 0.0, 0.0, 0.0 };
+      scene.Camera = new StaticCamera(new Vector3d(0.0, 0.0, -10.0), new Vector3d(0.0, 0.0, 1.0), 60.0);
+      scene.Sources = new System.Collections.Generic.LinkedList<ILightSource>();
+      scene.Sources.Add(new SphereLightSource(new Vector3d(-2.0, 4.0, -1.0), 0.5, 1.0));
+      CSGInnerNode hole = new CSGInnerNode(SetOperation.Difference);
+      hole.InsertChild(new Cube(), Matrix4d.Identity);
+      hole.InsertChild(new Sphere(), Matrix4d.Scale(0.6));
+      root.InsertChild(hole, Matrix4d.Identity);
+      root.InsertChild(new Blob(), Matrix4d.CreateTranslation(3.0, 0.0, 0.0));
+
+      class Blob : DefaultSceneNode, ISolid
+      {
+        public void GetBoundingBox(out Vector3d c1, out Vector3d c2) { c1 = new Vector3d(-1.0, -1.0, -1.0); c2 = new Vector3d(1.0, 1.0, 1.0); }
+      }
+      """);
+    using (HttpResponseMessage added = await studio.Client.PostAsJsonAsync("/api/scenes/add", new { path }))
+      await studio.RenderAndWait(new { scene = (await added.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("name").GetString(),
+                                       settings = new { width = 32, height = 24 } });
+    JsonElement scene = await studio.Client.GetFromJsonAsync<JsonElement>("/api/scene/tessellation");
+
+    var parts = scene.GetProperty("parts").EnumerateArray()
+      .Select(p => (Type: p.GetProperty("type").GetString(), Kind: p.GetProperty("kind").GetString(), Csg: p.GetProperty("csg").GetString())).ToArray();
+    Assert.Equal([("Cube", "Surface", "Difference"), ("Sphere", "Surface", "Difference"), ("Blob", "BoundingBox", null)], parts);
+    JsonElement light = Assert.Single(scene.GetProperty("lights").EnumerateArray());
+    Assert.Equal(("Sphere", 0.5), (light.GetProperty("kind").GetString(), light.GetProperty("radius").GetDouble()));
+    Assert.Contains(scene.GetProperty("notes").EnumerateArray(), n => n.GetString()!.Contains("Blob", StringComparison.Ordinal));
   }
 
   [Fact]
