@@ -103,6 +103,33 @@ public sealed class BrowserScene3dTests(ScriptsStudioFixture studio, ITestOutput
   }
 
   [SkippableFact]
+  public void A_new_render_replaces_the_scene_in_the_open_pane_and_gives_the_old_ones_gpu_memory_back()
+  {
+    ChromeDriver browser = Load();
+    Js(browser, "localStorage.removeItem('grcis-3d-layers');");
+    string Scene() => (string)Js(browser, "return document.getElementById('rays3dPane').dataset.scene;")!;
+    JsonElement Memory() => JsonDocument.Parse((string)((IJavaScriptExecutor)browser).ExecuteAsyncScript("""
+      const done = arguments[arguments.length - 1];
+      import('./pane3d.js').then(m => done(JSON.stringify(m.memory())));
+      """)!).RootElement;
+    Render(browser, "FiveBalls.cs", 64, 48);
+    Open3d(browser);
+    int first = Memory().GetProperty("geometries").GetInt32();
+    foreach (string file in new[] { "CornellBox.cs", "TwoSpheres.cs", "FiveBalls.cs" })
+    {
+      string before = Scene();
+      Render(browser, file, 64, 48);
+      Until(browser, () => Scene() != before, $"{file}'s scene in the open pane");
+    }
+    System.Threading.Thread.Sleep(200);
+    // Five balls again: as many geometries on the GPU as the first time, not those of the scenes in between too.
+    Assert.Equal(5, Convert.ToInt32(Js(browser, "return document.getElementById('rays3dPane').dataset.surfaces;")));
+    Assert.Equal(first, Memory().GetProperty("geometries").GetInt32());
+    browser.FindElement(By.Id("show3d")).Click();
+    Assert.Equal(0, Memory().GetProperty("geometries").GetInt32());
+  }
+
+  [SkippableFact]
   public void The_layers_checkboxes_hide_layers_and_are_remembered_across_a_reload()
   {
     ChromeDriver browser = Load();

@@ -88,9 +88,10 @@ public sealed class Scene3dApiTests(StudioFixture studio) : IClassFixture<Studio
         public void GetBoundingBox(out Vector3d c1, out Vector3d c2) { c1 = new Vector3d(-1.0, -1.0, -1.0); c2 = new Vector3d(1.0, 1.0, 1.0); }
       }
       """);
+    string name;
     using (HttpResponseMessage added = await studio.Client.PostAsJsonAsync("/api/scenes/add", new { path }))
-      await studio.RenderAndWait(new { scene = (await added.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("name").GetString(),
-                                       settings = new { width = 32, height = 24 } });
+      name = (await added.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("name").GetString()!;
+    await studio.RenderAndWait(new { scene = name, settings = new { width = 32, height = 24 } });
     JsonElement scene = await studio.Client.GetFromJsonAsync<JsonElement>("/api/scene/tessellation");
 
     var parts = scene.GetProperty("parts").EnumerateArray()
