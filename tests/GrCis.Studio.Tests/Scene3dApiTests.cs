@@ -45,6 +45,9 @@ public sealed class Scene3dApiTests(StudioFixture studio) : IClassFixture<Studio
     // GrCis's 60° is the horizontal angle: vertically, 2 atan(tan 30° · 30/40).
     Assert.Equal(2 * Math.Atan(Math.Tan(Math.PI / 6) * 30 / 40), camera.GetProperty("verticalFov").GetDouble(), 6);
     Assert.True(camera.GetProperty("exact").GetBoolean());
+    // Behind the token, as every other endpoint.
+    using HttpResponseMessage stranger = await studio.Stranger.GetAsync("/api/scene/tessellation");
+    Assert.Equal(HttpStatusCode.Unauthorized, stranger.StatusCode);
   }
 
   [Fact]
