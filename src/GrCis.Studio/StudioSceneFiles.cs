@@ -8,22 +8,31 @@ using Rendering.Tessellation;
 namespace GrCis.Studio;
 
 /// <summary>
-/// The scene on show as a glTF binary (<c>.glb</c>), as <c>grcis export</c> writes it: the last still render's scene at
-/// the time it was rendered, or an animation frame's scene at the frame's time.
+/// The scene on show as triangles: the last still render's scene at the time it was rendered, or an animation frame's
+/// scene at the frame's time; as a glTF binary (<c>.glb</c>, what <c>grcis export</c> writes) or as the page's 3D view
+/// reads it (<see cref="SceneView3d"/>).
 /// </summary>
 internal static class StudioSceneFiles
 {
-  /// <summary>The last still render's scene, or null before the first render.</summary>
-  public static byte[]? StillGlb(StudioSession s)
+  /// <summary>The last still render's scene as glTF, or null before the first render.</summary>
+  public static byte[]? StillGlb(StudioSession s) =>
+    Still(s) is var (tessellation, _, name) ? GltfWriter.ToGlb(tessellation, name) : null;
+
+  /// <summary>Frame <paramref name="k"/>'s scene of the animation on show as glTF, or null when there is none or no such frame.</summary>
+  public static byte[]? FrameGlb(StudioSession s, int k) =>
+    Frame(s, k) is var (tessellation, _, name) ? GltfWriter.ToGlb(tessellation, name) : null;
+
+  /// <summary>The last still render's scene, its render's settings and a name; null before the first render.</summary>
+  public static (SceneTessellation Tessellation, RenderSettings Settings, string Name)? Still(StudioSession s)
   {
     RenderJob? job = s.Controller.LastJob;
     if (job == null)
       return null;
-    return Glb(job.Scene, job, job.SceneName ?? "scene");
+    return (Tessellate(job.Scene, job), job.Settings, job.SceneName ?? "scene");
   }
 
-  /// <summary>Frame <paramref name="k"/>'s scene of the animation on show, or null when there is none or no such frame.</summary>
-  public static byte[]? FrameGlb(StudioSession s, int k)
+  /// <summary>Frame <paramref name="k"/>'s scene of the animation on show, its run's settings and a name; null when there is none or no such frame.</summary>
+  public static (SceneTessellation Tessellation, RenderSettings Settings, string Name)? Frame(StudioSession s, int k)
   {
     if (s.Animation?.Run is not AnimationRun run || k < 0 || k >= run.Timeline.FrameCount)
       return null;
@@ -31,12 +40,9 @@ internal static class StudioSceneFiles
     IRayScene scene = SceneCloner.CloneForWorker(run.Job.Scene);
     if (SceneCloner.IsTimeDependent(scene))
       SceneTime.Set(scene, run.Timeline.FrameTime(k));
-    return Glb(scene, run.Job, $"{run.Job.SceneName ?? "scene"} frame {k}");
+    return (Tessellate(scene, run.Job), run.Job.Settings, $"{run.Job.SceneName ?? "scene"} frame {k}");
   }
 
-  static byte[] Glb(IRayScene scene, RenderJob job, string name)
-  {
-    var options = new TessellationOptions { Width = job.Settings.Width, Height = job.Settings.Height };
-    return GltfWriter.ToGlb(SceneTessellator.Tessellate(scene, options), name);
-  }
+  static SceneTessellation Tessellate(IRayScene scene, RenderJob job) =>
+    SceneTessellator.Tessellate(scene, new TessellationOptions { Width = job.Settings.Width, Height = job.Settings.Height });
 }

@@ -53,7 +53,8 @@ public sealed class RenderTests(StudioFixture studio) : IClassFixture<StudioFixt
     foreach (JsonElement b in boxes.EnumerateArray())
       for (int i = 0; i < 3; i++)
         Assert.True(b.GetProperty("min")[i].GetDouble() <= b.GetProperty("max")[i].GetDouble());
-    Assert.Contains("export function show(", await studio.Client.GetStringAsync("/rays3d.js"));
+    Assert.Contains("export function rays(", await studio.Client.GetStringAsync("/rays3d.js"));
+    Assert.Contains("export class View3d", await studio.Client.GetStringAsync("/view3d.js"));
     Assert.Contains("WebGLRenderer", await studio.Client.GetStringAsync("/vendor/three.min.js"));
   }
 

@@ -53,6 +53,8 @@ internal static class StudioApi
     // The scene on show for Blender or any 3D viewer: what grcis export writes (docs/export.md).
     api.MapGet("/scene.glb", Results<FileContentHttpResult, ProblemHttpResult> (StudioSession s) =>
       StudioSceneFiles.StillGlb(s) is byte[] glb ? TypedResults.File(glb, "model/gltf-binary", "scene.glb") : Problems.NotFound("render something first"));
+    // The same scene for the page's 3D view: triangles, lights and camera as JSON (SceneView3d); ?frame=k an animation frame's.
+    api.MapGet("/scene/tessellation", Tessellation);
     api.MapGet("/probe", Probe);
     api.MapGet("/source", Source);
     api.MapPut("/source", SaveSource);
@@ -93,6 +95,17 @@ internal static class StudioApi
     s.SceneBoxes() is { } boxes
       ? TypedResults.Ok(boxes.Select(b => new BoxJson([b.Min.X, b.Min.Y, b.Min.Z], [b.Max.X, b.Max.Y, b.Max.Z])).ToArray())
       : Problems.NotFound("render something first");
+
+  static Results<Ok<SceneView3d.SceneJson>, ProblemHttpResult> Tessellation(StudioSession s, int? frame)
+  {
+    if (frame is int k)
+      return StudioSceneFiles.Frame(s, k) is var (t, settings, name)
+        ? TypedResults.Ok(SceneView3d.Of(t, settings, name))
+        : Problems.NotFound($"no frame {k} in the animation on show");
+    return StudioSceneFiles.Still(s) is var (still, stillSettings, stillName)
+      ? TypedResults.Ok(SceneView3d.Of(still, stillSettings, stillName))
+      : Problems.NotFound("nothing rendered yet: render a scene, and its scene shows in 3D");
+  }
 
   static Results<FileContentHttpResult, NotFound> Image(StudioSession s, HttpResponse response)
   {

@@ -1,6 +1,7 @@
 // Animation: render a time range's frames, follow them as they come (the studio announces each), scrub through
 // them, play them in a loop at the run's rate; the frame on show as PNG.
 import { $, state } from "./state.js";
+import { refresh as refresh3d } from "./pane3d.js";
 import { api } from "./api.js";
 import { showError } from "./messages.js";
 import { draw } from "./view.js";
@@ -68,6 +69,7 @@ async function showFrame(k) {
   $("frameGlb").href = `api/animation/frame/${k}.glb`;
   $("frameGlb").download = `out${String(k).padStart(4, "0")}.glb`;
   $("frameGlb").hidden = false;
+  refresh3d();
 }
 
 function togglePlay() {

@@ -1,5 +1,5 @@
 // GrCis studio page: the layout (theme, panels, keys), scene list, settings, render/stop with previews, zoom/pan, pixel
-// read-out and probe, history and A/B, the script editor, animation. ES modules, one concern each, over one state object (state.js); the studio's state
+// read-out and probe, the scene in 3D, history and A/B, the script editor, animation. ES modules, one concern each, over one state object (state.js); the studio's state
 // comes as pushed events (events.js). Every request carries the studio's cookie (set by the first load).
 import { $, state } from "./state.js";
 import { api } from "./api.js";
@@ -11,7 +11,8 @@ import { initView } from "./view.js";
 import { initHistory } from "./history.js";
 import { initSettings, loadScenes, showChoices } from "./settings.js";
 import { initEditor } from "./editor.js";
-import { initProbe, probe } from "./probe.js";
+import { probe } from "./probe.js";
+import { initPane3d } from "./pane3d.js";
 import { initAnimation } from "./animation.js";
 
 initLayout();
@@ -20,7 +21,7 @@ initView(probe);
 initHistory();
 initSettings();
 initEditor();
-initProbe();
+initPane3d();
 initAnimation();
 $("stop").addEventListener("click", () => {
   // A save being compiled ends too: it will not say that it compiles.

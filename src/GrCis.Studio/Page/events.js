@@ -7,6 +7,7 @@ import { wantImage } from "./view.js";
 import { loadHistory } from "./history.js";
 import { showAnimation } from "./animation.js";
 import { showError } from "./messages.js";
+import { refresh as refresh3d } from "./pane3d.js";
 
 const studio = state.studio;
 
@@ -22,6 +23,7 @@ function finished(version) {
   if (version <= 0 || version === state.historyFor) return;
   state.historyFor = version;
   loadHistory().catch(e => showError(e.message));
+  refresh3d();
 }
 
 const handlers = {

@@ -1,8 +1,8 @@
-// The pixel probe: a clicked pixel's colour, hash and ray tree as text, and the rays among the scene's boxes in 3D.
+// The pixel probe: a clicked pixel's colour, hash and ray tree as text, and its rays in the 3D view (pane3d.js).
 import { $, state } from "./state.js";
 import { api } from "./api.js";
 import { showError } from "./messages.js";
-import * as RayView from "./rays3d.js";
+import { probed } from "./pane3d.js";
 
 export async function probe(p) {
   try {
@@ -16,28 +16,8 @@ export async function probe(p) {
     if (r.rays) walk(r.rays, "");
     $("rays").textContent = lines.join("\n");
     state.probe = r;
-    $("show3d").hidden = !r.rays;
-    if (!$("rays3dPane").hidden) await show3d();
+    await probed();
   } catch (e) {
     showError(e.message);
   }
-}
-
-async function show3d() {
-  try {
-    const boxes = await (await api("scene/boxes")).json();
-    RayView.show($("rays3d"), boxes, state.probe?.rays);
-  } catch (e) {
-    showError(e.message);
-  }
-}
-
-export function initProbe() {
-  $("show3d").addEventListener("click", async () => {
-    const pane = $("rays3dPane");
-    pane.hidden = !pane.hidden;
-    $("show3d").setAttribute("aria-pressed", String(!pane.hidden));
-    if (pane.hidden) RayView.close();
-    else await show3d();
-  });
 }

@@ -25,6 +25,8 @@ export function showStatus() {
   showMessages();
   showDiagnostics(s.diagnostics, s.diagnosticsScene);
   $("stop").disabled = s.phase === "idle" || s.phase === "restarting";
+  // The 3D view shows the scene of a render: from the first image on.
+  $("show3d").hidden = !(s.version > 0);
   // The downloads are links: without an image (version 0, before the first preview) they lead nowhere, so they have no href.
   for (const id of ["png", "pfm", "glb"]) {
     const link = $(id);
