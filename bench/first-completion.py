@@ -2,10 +2,12 @@
 """The editor's first completion in a studio just started: what a student meets after `grcis studio scripts`.
 
 For each build and round: start `grcis studio scripts --port 0 --no-open` (it warms the editor's language services in
-the background), then, as a page that asks at once: the time from the start until /api/status answers, until
+the background), then, as a page that asks at once: the time from the start until the URL is printed, until
+/api/status answers, until
 /api/editor/ready answers (the services loaded: the editor bar stops saying "Loading code completion"), and the time
 of the first and the second completion asked right after the status answered (a member of scripts/TwoSpheres.cs cut
-after its first letter, the rest of the file after the caret). Builds alternate round by round, so a changing load
+after its first letter, the rest of the file after the caret), and when the first one's answer came after the URL was
+printed (issue 39's measure: at most 1 s). Builds alternate round by round, so a changing load
 touches them alike. Prints medians (and min, max) per build, the load average and the machine.
 
   bench/first-completion.py [ROUNDS] [LABEL=COMMAND ...]
@@ -36,6 +38,7 @@ def once(command):
     p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
     try:
         url = p.stdout.readline().strip()
+        printed = time.perf_counter() - t0
         base, token = url.split("/?token=")
 
         def call(method, path, body=None):
@@ -61,11 +64,12 @@ def once(command):
         t1 = time.perf_counter()
         call("POST", "/api/editor/complete", {"text": probe, "position": caret, "scene": "TwoSpheres"})
         first = time.perf_counter() - t1
+        after_url = time.perf_counter() - t0 - printed
         t2 = time.perf_counter()
         call("POST", "/api/editor/complete", {"text": probe, "position": caret, "scene": "TwoSpheres"})
         second = time.perf_counter() - t2
         waiter.join()
-        return answered, ready[0], first, second
+        return printed, answered, ready[0], first, after_url, second
     finally:
         p.terminate()
         p.wait()
@@ -78,10 +82,10 @@ results = {label: [] for label, _ in builds}
 for _ in range(rounds):
     for label, command in builds:
         results[label].append(once(command))
-names = ["status answered", "services ready", "first completion", "second completion"]
+names = ["URL printed", "status answered", "services ready", "first completion", "first answer - URL", "second completion"]
 for label, runs in results.items():
     for i, name in enumerate(names):
         values = [r[i] for r in runs]
-        print(f"{label:<10} {name:<18} median {statistics.median(values):6.3f} s  (min {min(values):.3f}, max {max(values):.3f}, "
+        print(f"{label:<10} {name:<20} median {statistics.median(values):6.3f} s  (min {min(values):.3f}, max {max(values):.3f}, "
               f"{len(values)} runs; times from the start except the completions' own)")
 print(f"load average after: {open('/proc/loadavg').read().split()[:3]}")

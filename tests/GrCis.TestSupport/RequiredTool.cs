@@ -27,6 +27,13 @@ public static class RequiredTool
       throw Missing(library, debianPackage, Required);
   }
 
+  /// <summary>
+  /// The same rule for something else a test needs from outside the machine (a package fetched from a registry):
+  /// the exception to throw, a skip with <paramref name="message"/>, or a failure when the tools are required.
+  /// </summary>
+  public static Exception Unavailable(string message) =>
+    Required ? new Xunit.Sdk.XunitException(message + $"; {RequireVariable}=1, so this fails instead of skipping") : new SkipException(message);
+
   /// <summary>True when <c>GRCIS_REQUIRE_TOOLS=1</c>: a missing tool fails the test.</summary>
   public static bool Required => Environment.GetEnvironmentVariable(RequireVariable) == "1";
 
