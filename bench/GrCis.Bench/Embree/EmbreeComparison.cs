@@ -65,13 +65,16 @@ public static class EmbreeComparison
     report.LibraryBuild = Median(options.Repeats, () =>
     {
       var fresh = new TriangleMesh(mesh);
+      long allocated = GC.GetTotalAllocatedBytes(true);
       var clock = Stopwatch.StartNew();
       fresh.IntersectFirst(new Vector3d(0, 0, -10), Vector3d.UnitZ, 1.0, out _, out _);   // builds the BVH on first use
-      return clock.Elapsed.TotalSeconds;
+      double seconds = clock.Elapsed.TotalSeconds;
+      report.LibraryBuildBytes = GC.GetTotalAllocatedBytes(true) - allocated;   // the last round's: pools are warm by then
+      return seconds;
     });
     report.EmbreeBuild1 = Median(options.Repeats, () => { using var s = new EmbreeScene(positions, indices, EmbreeNative.BuildQualityMedium, "threads=1"); return s.BuildSeconds; });
     report.EmbreeBuildAll = Median(options.Repeats, () => { using var s = new EmbreeScene(positions, indices, EmbreeNative.BuildQualityMedium, null); return s.BuildSeconds; });
-    output.WriteLine($"build: mesh BVH {report.LibraryBuild * 1e3:F1} ms (all cores); Embree MEDIUM {report.EmbreeBuild1 * 1e3:F1} ms (1 thread), {report.EmbreeBuildAll * 1e3:F1} ms (all threads)");
+    output.WriteLine($"build: mesh BVH {report.LibraryBuild * 1e3:F1} ms (all cores), {report.LibraryBuildBytes / 1e6:F1} MB allocated; Embree MEDIUM {report.EmbreeBuild1 * 1e3:F1} ms (1 thread), {report.EmbreeBuildAll * 1e3:F1} ms (all threads)");
 
     using var embree = new EmbreeScene(positions, indices, EmbreeNative.BuildQualityMedium, null);
     var solid = new TriangleMesh(mesh);

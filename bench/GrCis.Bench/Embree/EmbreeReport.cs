@@ -14,6 +14,9 @@ public sealed class EmbreeReport
   public double EmbreeBuild1 { get; set; }
   public double EmbreeBuildAll { get; set; }
 
+  /// <summary>Bytes the library's last build round allocated (all threads; what the mesh keeps included).</summary>
+  public long LibraryBuildBytes { get; set; }
+
   public List<EmbreeRow> Rows { get; } = new();
 
   /// <summary>Rays, over all rows' first thread count, whose hit or miss differed from Embree's.</summary>
