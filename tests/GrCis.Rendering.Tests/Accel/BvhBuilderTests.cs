@@ -17,7 +17,7 @@ public class BvhBuilderTests
 {
   public static TheoryData<string> Inputs() => new()
   {
-    "vase", "torus-20k", "cube", "random-members", "same-centres", "flat", "one", "two",
+    "vase", "torus-20k", "cube", "random-members", "same-centres", "flat", "signed-zeros", "one", "two",
   };
 
   [Theory]
@@ -138,6 +138,8 @@ public class BvhBuilderTests
         return Members(300, i => new Vector3d(1, 2, 3), rnd);
       case "flat":           // all centres on a plane, boxes without depth: zero areas
         return Members(500, i => new Vector3d(rnd.Next(20), rnd.Next(20), 0), rnd, flat: true);
+      case "signed-zeros":   // ties of −0 and +0 in every union: the sign must come out as Math.Min's
+        return SignedZeros(rnd);
       case "one":
         return Members(1, i => Vector3d.One, rnd);
       default:
@@ -157,6 +159,20 @@ public class BvhBuilderTests
     var centers = new Vector3d[n];
     for (int i = 0; i < n; i++)
       centers[i] = boxes[i].Center;
+    return (boxes, centers, BvhShape.SceneMembers);
+  }
+
+  static (Aabb[], Vector3d[], BvhShape) SignedZeros(Random rnd)
+  {
+    double Pick() => rnd.Next(4) switch { 0 => -0.0, 1 => 0.0, 2 => -1.0, _ => 1.0 };
+    var boxes = new Aabb[600];
+    var centers = new Vector3d[boxes.Length];
+    for (int i = 0; i < boxes.Length; i++)
+    {
+      Vector3d a = new(Pick(), Pick(), Pick()), b = new(Pick(), Pick(), Pick());
+      boxes[i] = new Aabb(Vector3d.ComponentMin(a, b), Vector3d.ComponentMax(a, b));
+      centers[i] = new Vector3d(Pick(), Pick(), Pick());
+    }
     return (boxes, centers, BvhShape.SceneMembers);
   }
 
