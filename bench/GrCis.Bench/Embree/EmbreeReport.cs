@@ -9,10 +9,13 @@ public sealed class EmbreeReport
   /// <summary>Triangles of the mesh.</summary>
   public int Triangles { get; init; }
 
-  /// <summary>Median seconds of the library's mesh BVH build (one thread), and of Embree's MEDIUM build on one thread and on all.</summary>
+  /// <summary>Median seconds of the library's mesh BVH build (all cores), and of Embree's MEDIUM build on one thread and on all.</summary>
   public double LibraryBuild { get; set; }
   public double EmbreeBuild1 { get; set; }
   public double EmbreeBuildAll { get; set; }
+
+  /// <summary>Bytes the library's last build round allocated (all threads; what the mesh keeps included).</summary>
+  public long LibraryBuildBytes { get; set; }
 
   public List<EmbreeRow> Rows { get; } = new();
 

@@ -1,20 +1,15 @@
-using System;
-using System.Collections.Generic;
 using OpenTK.Mathematics;
 
 namespace Rendering.Accel;
 
 /// <summary>
 /// The one bounding volume hierarchy, over scene members and over mesh triangles alike: built with
-/// binned SAH on all three axes, stored as a flat node array (depth-first, left child adjacent, right
+/// binned SAH on all three axes (<see cref="BvhBuilder"/>), stored as a flat node array (depth-first, left child adjacent, right
 /// child at <see cref="BvhNode.Index"/>) so traversal is a loop over an index stack. What an item is
 /// stays with the caller: leaves name item ids, in <see cref="Items"/>.
 /// </summary>
 internal sealed class Bvh
 {
-  const int Bins = 16;
-  const double TraversalCost = 1.0;
-
   public readonly BvhNode[] Nodes;
 
   /// <summary>Item ids in leaf order.</summary>
@@ -33,16 +28,14 @@ internal sealed class Bvh
   /// <summary>
   /// Builds over <paramref name="boxes"/>[ids[k]], split by <paramref name="centers"/>; <paramref name="ids"/>
   /// is reordered into leaf order and kept as <see cref="Items"/>. Traversals run on its <see cref="WideBvh"/>.
+  /// <paramref name="threads"/> = 1 builds on the calling thread only; the tree is the same either way (<see cref="BvhBuilder"/>).
   /// </summary>
-  public static Bvh Build(Aabb[] boxes, Vector3d[] centers, int[] ids, BvhShape shape)
+  public static Bvh Build(Aabb[] boxes, Vector3d[] centers, int[] ids, BvhShape shape, int threads = 0)
   {
-    var nodes = new List<BvhNode>(Math.Max(1, 2 * ids.Length));
-    int depth = 0;
-    if (ids.Length > 0)
-      new Builder(boxes, centers, ids, shape, nodes).Node(0, ids.Length, 1, ref depth);
-    else
-      nodes.Add(Leaf(new Aabb(Vector3d.Zero, Vector3d.Zero), 0, 0));
-    return new Bvh(nodes.ToArray(), ids, depth);
+    if (ids.Length == 0)
+      return new Bvh([Leaf(new Aabb(Vector3d.Zero, Vector3d.Zero), 0, 0)], ids, 0);
+    BvhNode[] nodes = BvhBuilder.Build(boxes, centers, ids, shape, threads, out int depth);
+    return new Bvh(nodes, ids, depth);
   }
 
   /// <summary>Builds over boxes split by their centres.</summary>
@@ -61,118 +54,4 @@ internal sealed class Bvh
     Index = first,
     Count = count,
   };
-
-  readonly struct Builder(Aabb[] boxes, Vector3d[] centers, int[] ids, BvhShape shape, List<BvhNode> nodes)
-  {
-    public int Node(int start, int end, int level, ref int depth)
-    {
-      depth = Math.Max(depth, level);
-      Aabb bounds = Aabb.Empty, cbounds = Aabb.Empty;
-      for (int k = start; k < end; k++)
-      {
-        bounds.Add(boxes[ids[k]]);
-        cbounds.Add(centers[ids[k]]);
-      }
-
-      int self = nodes.Count;
-      nodes.Add(Leaf(bounds, start, end - start));
-      int count = end - start;
-      if (count <= shape.SmallLeaf)
-        return self;
-
-      Split split = BestSplit(start, end, cbounds);
-      double leafCost = shape.ItemCost * count;
-      double parentArea = bounds.HalfArea;
-      double splitCost = split.Axis >= 0 && parentArea > 0.0
-        ? TraversalCost + shape.ItemCost * split.Cost / parentArea
-        : double.PositiveInfinity;
-      int mid;
-      if (splitCost < leafCost || (count > shape.LargeLeaf && split.Axis >= 0))
-        mid = Partition(start, end, cbounds, split);
-      else if (count > shape.LargeLeaf)
-        mid = (start + end) / 2;   // inseparable centres: halves in the current order
-      else
-        return self;
-      if (mid == start || mid == end)
-        mid = (start + end) / 2;
-
-      Node(start, mid, level + 1, ref depth);
-      int right = Node(mid, end, level + 1, ref depth);
-      BvhNode node = nodes[self];
-      node.Index = right;
-      node.Count = 0;
-      node.Axis = split.Axis >= 0 ? split.Axis : 0;
-      nodes[self] = node;
-      return self;
-    }
-
-    /// <summary>The cheapest of the bin planes on the three axes (SAH, unnormalised); Axis −1 when none separates.</summary>
-    Split BestSplit(int start, int end, in Aabb cbounds)
-    {
-      Span<int> binCount = stackalloc int[Bins];
-      Span<Aabb> binBox = stackalloc Aabb[Bins];
-      Span<double> rightArea = stackalloc double[Bins];
-      Span<int> rightCount = stackalloc int[Bins];
-      var best = new Split(-1, 0, double.PositiveInfinity);
-      for (int axis = 0; axis < 3; axis++)
-      {
-        double cmin = cbounds.Min[axis], extent = cbounds.Max[axis] - cmin;
-        if (!(extent > 0.0))
-          continue;
-        double scale = Bins / extent;
-        binCount.Clear();
-        binBox.Fill(Aabb.Empty);
-        for (int k = start; k < end; k++)
-        {
-          int b = Bin(centers[ids[k]][axis], cmin, scale);
-          binCount[b]++;
-          binBox[b].Add(boxes[ids[k]]);
-        }
-        Aabb acc = Aabb.Empty;
-        int n = 0;
-        for (int b = Bins - 1; b > 0; b--)
-        {
-          acc.Add(binBox[b]);
-          n += binCount[b];
-          rightCount[b] = n;
-          rightArea[b] = acc.HalfArea;
-        }
-        acc = Aabb.Empty;
-        n = 0;
-        for (int b = 1; b < Bins; b++)
-        {
-          acc.Add(binBox[b - 1]);
-          n += binCount[b - 1];
-          if (n == 0 || rightCount[b] == 0)
-            continue;
-          double cost = n * acc.HalfArea + rightCount[b] * rightArea[b];
-          if (cost < best.Cost)
-            best = new Split(axis, b, cost);
-        }
-      }
-      return best;
-    }
-
-    /// <summary>Items whose centre falls in a bin below the split plane first; returns the first of the rest.</summary>
-    int Partition(int start, int end, in Aabb cbounds, Split split)
-    {
-      double cmin = cbounds.Min[split.Axis], scale = Bins / (cbounds.Max[split.Axis] - cmin);
-      int i = start, j = end - 1;
-      while (i <= j)
-      {
-        if (Bin(centers[ids[i]][split.Axis], cmin, scale) < split.Bin)
-          i++;
-        else
-        {
-          (ids[i], ids[j]) = (ids[j], ids[i]);
-          j--;
-        }
-      }
-      return i;
-    }
-
-    static int Bin(double c, double cmin, double scale) => Math.Min(Bins - 1, (int)((c - cmin) * scale));
-  }
-
-  readonly record struct Split(int Axis, int Bin, double Cost);
 }

@@ -1,5 +1,4 @@
 using System;
-using System.Collections.Generic;
 
 namespace Rendering.Accel;
 
@@ -38,18 +37,28 @@ internal sealed class WideBvh
   /// </summary>
   public static WideBvh Collapse(Bvh tree, double pad = 0.0)
   {
-    var nodes = new List<WideNode>();
+    WideNode[] nodes;
     if (tree.Items.Length == 0)
-      nodes.Add(default);   // a tree over nothing: one node without lanes
+      nodes = new WideNode[1];   // a tree over nothing: one node without lanes
     else
-      new Collapser(tree, pad, nodes).Node(0);
-    return new WideBvh(nodes.ToArray(), tree.Nodes[0], tree.Items, (WideNode.Width - 1) * tree.Depth + 2);
+    {
+      // Counted first, so the nodes are written straight into their final array (no list to grow and copy).
+      int count = 0;
+      new Collapser(tree, pad, null).Node(0, ref count);
+      nodes = new WideNode[count];
+      count = 0;
+      new Collapser(tree, pad, nodes).Node(0, ref count);
+    }
+    return new WideBvh(nodes, tree.Nodes[0], tree.Items, (WideNode.Width - 1) * tree.Depth + 2);
   }
 
-  readonly struct Collapser(Bvh tree, double pad, List<WideNode> nodes)
+  readonly struct Collapser(Bvh tree, double pad, WideNode[]? nodes)
   {
-    /// <summary>Adds the wide node whose children are those of binary node <paramref name="binary"/> (or the node itself, a leaf root).</summary>
-    public int Node(int binary)
+    /// <summary>
+    /// Adds the wide node whose children are those of binary node <paramref name="binary"/> (or the node itself, a leaf
+    /// root) at <paramref name="used"/>, its subtree after it; without an array, only counts.
+    /// </summary>
+    public int Node(int binary, ref int used)
     {
       BvhNode[] b = tree.Nodes;
       Span<int> picks = stackalloc int[WideNode.Width];
@@ -87,9 +96,15 @@ internal sealed class WideBvh
         count++;
       }
 
-      int self = nodes.Count;
-      nodes.Add(default);
-      var node = new WideNode();
+      int self = used++;
+      if (nodes == null)
+      {
+        for (int lane = 0; lane < count; lane++)
+          if (b[picks[lane]].Count == 0)
+            Node(picks[lane], ref used);
+        return self;
+      }
+      ref WideNode node = ref nodes[self];
       for (int lane = 0; lane < count; lane++)
       {
         ref BvhNode child = ref b[picks[lane]];
@@ -100,9 +115,8 @@ internal sealed class WideBvh
           node.Count[lane] = child.Count;
         }
         else
-          node.Index[lane] = Node(picks[lane]);
+          node.Index[lane] = Node(picks[lane], ref used);
       }
-      nodes[self] = node;
       return self;
     }
 

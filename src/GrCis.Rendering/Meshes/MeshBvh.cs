@@ -1,5 +1,6 @@
 using Scene3D;
 using System;
+using System.Buffers;
 using System.Collections.Generic;
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
@@ -35,43 +36,60 @@ internal sealed class MeshBvh
   public MeshBvh(SceneBrep mesh)
   {
     int n = mesh.Triangles;
-    var a = new Vector3d[n];
-    var b = new Vector3d[n];
-    var c = new Vector3d[n];
-    var boxes = new Aabb[n];
-    var centroids = new Vector3d[n];
+    // Only the build reads boxes and centroids: lent by the pool (each is a large-object-heap array otherwise).
+    Aabb[] boxes = ArrayPool<Aabb>.Shared.Rent(n);
+    Vector3d[] centroids = ArrayPool<Vector3d>.Shared.Rent(n);
     var order = new int[n];
-    for (int i = 0; i < n; i++)
+    // Per triangle, independent: in parallel chunks (the results do not depend on how they are cut).
+    InChunks(n, (start, end) =>
     {
-      mesh.GetTriangleVertices(i, out Vector3 pa, out Vector3 pb, out Vector3 pc);
-      a[i] = pa;
-      b[i] = pb;
-      c[i] = pc;
-      boxes[i] = new Aabb(Vector3d.ComponentMin(a[i], Vector3d.ComponentMin(b[i], c[i])),
-                          Vector3d.ComponentMax(a[i], Vector3d.ComponentMax(b[i], c[i])));
-      centroids[i] = (a[i] + b[i] + c[i]) / 3.0;
-      order[i] = i;
-    }
+      for (int i = start; i < end; i++)
+      {
+        mesh.GetTriangleVertices(i, out Vector3 pa, out Vector3 pb, out Vector3 pc);
+        Vector3d a = pa, b = pb, c = pc;
+        boxes[i] = new Aabb(Vector3d.ComponentMin(a, Vector3d.ComponentMin(b, c)), Vector3d.ComponentMax(a, Vector3d.ComponentMax(b, c)));
+        centroids[i] = (a + b + c) / 3.0;
+        order[i] = i;
+      }
+    });
 
+    tree = Bvh.Build(boxes, centroids, order, BvhShape.Triangles);
+    ArrayPool<Aabb>.Shared.Return(boxes);
+    ArrayPool<Vector3d>.Shared.Return(centroids);
     // The child-box padding lies far above rounding (of box and triangle arithmetic, also far from the
     // origin) and far below any feature: the two-box test may then only keep more boxes, never fewer.
-    Aabb root = Aabb.Empty;
-    foreach (Aabb box in boxes)
-      root.Add(box);
+    // The root box is the union of every triangle's box.
+    Aabb root = n > 0 ? new Aabb(new Vector3d(tree.Nodes[0].MinX, tree.Nodes[0].MinY, tree.Nodes[0].MinZ),
+                                 new Vector3d(tree.Nodes[0].MaxX, tree.Nodes[0].MaxY, tree.Nodes[0].MaxZ)) : Aabb.Empty;
     Extent = n > 0 ? (root.Max - root.Min).Length : 0.0;
     double magnitude = 0.0;
     for (int axis = 0; axis < 3 && n > 0; axis++)
       magnitude = Math.Max(magnitude, Math.Max(Math.Abs(root.Min[axis]), Math.Abs(root.Max[axis])));
-    tree = Bvh.Build(boxes, centroids, order, BvhShape.Triangles);
     wide = WideBvh.Collapse(tree, 1e-9 * (Extent + magnitude));
 
-    tri = new double[9 * n];
+    double[] stored = tri = new double[9 * n];
     triId = order;
-    for (int k = 0; k < n; k++)
+    InChunks(n, (start, end) =>
     {
-      int i = order[k];
-      MeshTriangles.Store(tri, 9 * k, a[i], b[i], c[i]);
+      for (int k = start; k < end; k++)
+      {
+        // The vertices again from the mesh (cheap) rather than three more large arrays for the collector.
+        mesh.GetTriangleVertices(order[k], out Vector3 pa, out Vector3 pb, out Vector3 pc);
+        MeshTriangles.Store(stored, 9 * k, pa, pb, pc);
+      }
+    });
+  }
+
+  /// <summary>body(start, end) over [0, n) cut in chunks, in parallel when there are enough.</summary>
+  static void InChunks(int n, Action<int, int> body)
+  {
+    const int Chunk = 8192;
+    if (n <= Chunk)
+    {
+      body(0, n);
+      return;
     }
+    System.Threading.Tasks.Parallel.For(0, (n + Chunk - 1) / Chunk, k => body(k * Chunk, Math.Min(n, (k + 1) * Chunk)));
   }
 
   /// <summary>Original triangle handle of the k-th triangle in leaf order.</summary>
