@@ -39,8 +39,28 @@ internal static class SceneView3d
   /// <summary>The camera as a pinhole: position, unit direction and up, vertical field of view (radians), width / height; exact = the camera's own values.</summary>
   internal sealed record CameraJson(double[] Position, double[] Direction, double[] Up, double VerticalFov, double Aspect, bool Exact);
 
-  public static SceneJson Of(SceneTessellation scene, RenderSettings settings, string name)
+  /// <summary>
+  /// The most triangles the view is sent (about 20 MB of JSON, which a page parses and draws in a few seconds): the
+  /// largest shapes beyond it are sent as their boxes, with a note, so a million-triangle mesh never freezes the page.
+  /// </summary>
+  public const int TriangleBudget = 500_000;
+
+  public static SceneJson Of(SceneTessellation scene, RenderSettings settings, string name, int triangleBudget = TriangleBudget)
   {
+    // The shapes, each once, and which of them fit in the budget (the smallest first, so one huge mesh, not the many
+    // small solids around it, becomes a box).
+    var unique = new List<TessellatedPart>();
+    var seen = new HashSet<Vector3d[]>(ReferenceEqualityComparer.Instance);
+    foreach (TessellatedPart part in scene.Parts)
+      if (part.TriangleCount > 0 && seen.Add(part.Positions))
+        unique.Add(part);
+    var boxed = new HashSet<Vector3d[]>(ReferenceEqualityComparer.Instance);
+    long sent = 0;
+    foreach (TessellatedPart part in unique.OrderBy(p => p.TriangleCount))
+      if ((sent += part.TriangleCount) > triangleBudget)
+        boxed.Add(part.Positions);
+
+    var notes = new List<string>(scene.Notes);
     var shapes = new List<ShapeJson>();
     var shapeOf = new Dictionary<Vector3d[], int>(ReferenceEqualityComparer.Instance);
     var parts = new List<PartJson>();
@@ -48,19 +68,43 @@ internal static class SceneView3d
     {
       if (part.TriangleCount == 0)
         continue;
+      bool box = boxed.Contains(part.Positions);
       if (!shapeOf.TryGetValue(part.Positions, out int shape))
       {
         shapeOf[part.Positions] = shape = shapes.Count;
-        shapes.Add(new ShapeJson(part.Positions.SelectMany(p => new[] { (float)p.X, (float)p.Y, (float)p.Z }).ToArray(), part.Indices));
+        shapes.Add(box ? BoxOf(part.Positions) : new ShapeJson(part.Positions.SelectMany(p => new[] { (float)p.X, (float)p.Y, (float)p.Z }).ToArray(), part.Indices));
+        if (box)
+          notes.Add($"{part.Name}: {part.TriangleCount:N0} triangles, shown as its box (the 3D view draws at most {triangleBudget:N0})");
       }
-      parts.Add(new PartJson(part.Name, part.TypeName, part.Kind.ToString(), part.CsgOperation?.ToString(), V(part.BaseColor),
-                             Rows(part.LocalToWorld), shape, EmissionOf(part.Node)));
+      parts.Add(new PartJson(part.Name, part.TypeName, box ? nameof(PartKind.BoundingBox) : part.Kind.ToString(), part.CsgOperation?.ToString(),
+                             V(part.BaseColor), Rows(part.LocalToWorld), shape, EmissionOf(part.Node)));
     }
     LightJson[] lights = scene.Lights.Select(l => new LightJson(l.Kind.ToString(), V(l.Position), V(l.Intensity), V(l.EdgeU), V(l.EdgeV), l.Radius)).ToArray();
     CameraJson? camera = scene.Camera is TessellatedCamera c
       ? new CameraJson(V(c.Position), V(c.Direction), V(c.Up), c.VerticalFov, c.AspectRatio, c.Exact)
       : null;
-    return new SceneJson(name, settings.Width, settings.Height, shapes.ToArray(), parts.ToArray(), lights, camera, scene.Notes);
+    return new SceneJson(name, settings.Width, settings.Height, shapes.ToArray(), parts.ToArray(), lights, camera, notes);
+  }
+
+  // The box around a shape's vertices (in its local space), as 12 triangles.
+  static ShapeJson BoxOf(Vector3d[] positions)
+  {
+    Vector3d lo = positions[0], hi = positions[0];
+    foreach (Vector3d p in positions)
+    {
+      lo = Vector3d.ComponentMin(lo, p);
+      hi = Vector3d.ComponentMax(hi, p);
+    }
+    var corners = new float[24];
+    for (int k = 0; k < 8; k++)
+    {
+      corners[3 * k] = (float)((k & 1) == 0 ? lo.X : hi.X);
+      corners[3 * k + 1] = (float)((k & 2) == 0 ? lo.Y : hi.Y);
+      corners[3 * k + 2] = (float)((k & 4) == 0 ? lo.Z : hi.Z);
+    }
+    // Two triangles per face of the cube whose corner k has bits (x, y, z).
+    int[] faces = [0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5];
+    return new ShapeJson(corners, faces);
   }
 
   // An emissive surface is a light of the scene (the Cornell box's only one), drawn glowing.

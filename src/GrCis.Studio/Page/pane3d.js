@@ -79,6 +79,10 @@ export async function refresh() {
       v.setLayer("camera", Scene3d.camera(json, pane.size * 0.12));
       v.sceneCamera = json.camera;
       Object.assign(pane, { key: want.key, json });
+      // What is not drawn as it is (a mesh beyond the triangle budget as its box, a script's own solid as its box).
+      const notes = $("notes3d");
+      notes.textContent = (json.notes ?? []).join(" · ");
+      notes.hidden = !notes.textContent;
       if (!v.fromCamera) v.frame(box);
       $("fromCamera").disabled = !json.camera;
     }
