@@ -31,8 +31,7 @@ public static class RequiredTool
   /// The same rule for something else a test needs from outside the machine (a package fetched from a registry):
   /// the exception to throw, a skip with <paramref name="message"/>, or a failure when the tools are required.
   /// </summary>
-  public static Exception Unavailable(string message) =>
-    Required ? new Xunit.Sdk.XunitException(message + $"; {RequireVariable}=1, so this fails instead of skipping") : new SkipException(message);
+  public static Exception Unavailable(string message) => Unavailable(message, Required);
 
   /// <summary>True when <c>GRCIS_REQUIRE_TOOLS=1</c>: a missing tool fails the test.</summary>
   public static bool Required => Environment.GetEnvironmentVariable(RequireVariable) == "1";
@@ -47,8 +46,11 @@ public static class RequiredTool
   static Exception Missing(string what, string debianPackage, bool required)
   {
     string message = $"'{what}' is not installed: install the Debian package '{debianPackage}' (apt-get install -y {debianPackage}; .ci/run does)";
-    return required ? new Xunit.Sdk.XunitException(message + $"; {RequireVariable}=1, so this fails instead of skipping") : new SkipException(message);
+    return Unavailable(message, required);
   }
+
+  static Exception Unavailable(string message, bool required) =>
+    required ? new Xunit.Sdk.XunitException(message + $"; {RequireVariable}=1, so this fails instead of skipping") : new SkipException(message);
 
   /// <summary>The first executable file named <paramref name="command"/> in the PATH list, or null.</summary>
   public static string? OnPath(string command, string? path)
