@@ -1,6 +1,4 @@
-using System;
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.IO;
 using System.Linq;
 using System.Text.Json;
@@ -20,29 +18,8 @@ public class BlenderImportTests
   {
     string blender = RequiredTool.Find("blender", "blender python3-numpy");
     using var dir = new TempDirectory();
-    var files = new List<string>();
-    foreach (string script in Directory.GetFiles(RepoPaths.Scripts, "*.cs").Order())
-    {
-      string name = Path.GetFileNameWithoutExtension(script) + ".glb";
-      CliRun run = CliRun.Of(dir.Path, "export", script, "-o", name, "-q");
-      Assert.True(run.ExitCode == 0, $"{Path.GetFileName(script)}: {run.Error}");
-      files.Add(dir.File(name));
-    }
-
-    var start = new ProcessStartInfo(blender) { RedirectStandardOutput = true, RedirectStandardError = true };
-    foreach (string a in new[] { "-b", "--factory-startup", "--python", Path.Combine(RepoPaths.Root, "tests", "GrCis.Cli.Tests", "Data", "import-gltf.py"), "--" })
-      start.ArgumentList.Add(a);
-    foreach (string f in files)
-      start.ArgumentList.Add(f);
-    using Process p = Process.Start(start)!;
-    var error = p.StandardError.ReadToEndAsync();
-    string output = p.StandardOutput.ReadToEnd();
-    Assert.True(p.WaitForExit(TimeSpan.FromMinutes(5)), "Blender did not finish within 5 minutes");
-    string? line = output.Split('\n').FirstOrDefault(l => l.StartsWith("GRCIS-RESULT ", StringComparison.Ordinal));
-    Assert.True(line != null, $"Blender printed no result (exit {p.ExitCode}):\n{output}\n{error.Result}");
-
-    JsonElement[] reports = JsonDocument.Parse(line!["GRCIS-RESULT ".Length..]).RootElement.EnumerateArray().ToArray();
-    Assert.Equal(files.Select(Path.GetFileName), reports.Select(r => r.GetProperty("file").GetString()));
+    List<string> files = ExportedScripts.Glb(dir);
+    JsonElement[] reports = ExportedScripts.Reports(blender, ["-b", "--factory-startup", "--python", ExportedScripts.Data("import-gltf.py"), "--"], files);
     foreach ((string file, JsonElement report) in files.Zip(reports))
     {
       ModelRoot model = ModelRoot.Load(file);

@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.Formats.Tar;
 using System.IO;
 using System.IO.Compression;
@@ -31,31 +30,12 @@ public class GltfValidatorTests
     string node = RequiredTool.Find("node", "nodejs");
     string validator = Validator();
     using var dir = new TempDirectory();
-    var files = new List<string>();
-    foreach (string script in Directory.GetFiles(RepoPaths.Scripts, "*.cs").Order())
-    {
-      string name = Path.GetFileNameWithoutExtension(script) + ".glb";
-      CliRun run = CliRun.Of(dir.Path, "export", script, "-o", name, "-q");
-      Assert.True(run.ExitCode == 0, $"{Path.GetFileName(script)}: {run.Error}");
-      files.Add(dir.File(name));
-    }
+    List<string> files = ExportedScripts.Glb(dir);
     CliRun json = CliRun.Of(dir.Path, "export", RepoPaths.Script("TwoSpheres.cs"), "-o", "two-spheres.gltf", "-q");
     Assert.True(json.ExitCode == 0, json.Error);
     files.Add(dir.File("two-spheres.gltf"));
 
-    var start = new ProcessStartInfo(node) { RedirectStandardOutput = true, RedirectStandardError = true };
-    start.ArgumentList.Add(Path.Combine(RepoPaths.Root, "tests", "GrCis.Cli.Tests", "Data", "validate-gltf.js"));
-    start.ArgumentList.Add(validator);
-    foreach (string f in files)
-      start.ArgumentList.Add(f);
-    using Process p = Process.Start(start)!;
-    var error = p.StandardError.ReadToEndAsync();
-    string output = p.StandardOutput.ReadToEnd();
-    Assert.True(p.WaitForExit(TimeSpan.FromMinutes(5)), "the validator did not finish within 5 minutes");
-    Assert.True(p.ExitCode == 0, $"the validator failed (exit {p.ExitCode}): {error.Result}");
-
-    JsonElement[] reports = JsonDocument.Parse(output).RootElement.EnumerateArray().ToArray();
-    Assert.Equal(files.Select(Path.GetFileName), reports.Select(r => r.GetProperty("file").GetString()));
+    JsonElement[] reports = ExportedScripts.Reports(node, [ExportedScripts.Data("validate-gltf.js"), validator], files);
     string[] failing = reports.Where(r => r.GetProperty("errors").GetInt32() > 0)
       .Select(r => $"{r.GetProperty("file").GetString()}: {string.Join("; ", r.GetProperty("messages").EnumerateArray().Select(m => m.GetString()))}")
       .ToArray();

@@ -1,5 +1,5 @@
-// Validates glTF files with the Khronos glTF validator (the npm package gltf-validator) and prints one JSON line: per
-// file its error and warning counts and the errors' messages. Used by GltfValidatorTests.
+// Validates glTF files with the Khronos glTF validator (the npm package gltf-validator) and prints one line,
+// "GRCIS-RESULT <json>": per file its error and warning counts and the errors' messages. Used by GltfValidatorTests.
 //   node validate-gltf.js <folder of the gltf-validator package> <file.glb|file.gltf>...
 const validator = require(process.argv[2]);
 const fs = require("fs");
@@ -22,7 +22,7 @@ const path = require("path");
       messages: report.issues.messages.filter(m => m.severity === 0).map(m => `${m.code} ${m.pointer ?? ""}: ${m.message}`),
     });
   }
-  console.log(JSON.stringify(reports));
+  console.log("GRCIS-RESULT " + JSON.stringify(reports));
 })().catch(e => {
   console.error(String(e));
   process.exit(1);
