@@ -53,10 +53,7 @@ public sealed class Scene3dApiTests(StudioFixture studio) : IClassFixture<Studio
   [Fact]
   public async Task An_animation_frames_scene_comes_at_the_frames_time_and_a_frame_beyond_the_range_is_a_sentence()
   {
-    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation",
-             new { scene = "Balls", settings = new { width = 24, height = 18 }, start = 0.0, end = 0.2, fps = 10.0 }))
-      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
-    JsonElement done = await studio.PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the end of the animation");
+    JsonElement done = await studio.AnimateAndWait(new { scene = "Balls", settings = new { width = 24, height = 18 }, start = 0.0, end = 0.2, fps = 10.0 });
     int total = done.GetProperty("framesTotal").GetInt32();
 
     JsonElement frame = await studio.Client.GetFromJsonAsync<JsonElement>("/api/scene/tessellation?frame=1");

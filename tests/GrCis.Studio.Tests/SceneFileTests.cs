@@ -52,10 +52,7 @@ public sealed class SceneFileTests(StudioFixture studio) : IClassFixture<StudioF
   [Fact]
   public async Task An_animation_frames_scene_downloads_as_glb_and_a_frame_beyond_the_range_is_not_found()
   {
-    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation",
-             new { scene = "Balls", settings = new { width = 24, height = 18 }, start = 0.0, end = 0.2, fps = 10.0 }))
-      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
-    JsonElement done = await studio.PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the end of the animation");
+    JsonElement done = await studio.AnimateAndWait(new { scene = "Balls", settings = new { width = 24, height = 18 }, start = 0.0, end = 0.2, fps = 10.0 });
     int total = done.GetProperty("framesTotal").GetInt32();
 
     ModelRoot frame = ModelRoot.ParseGLB(await studio.Client.GetByteArrayAsync("/api/animation/frame/1.glb"));

@@ -79,6 +79,14 @@ public sealed class StudioFixture : IAsyncLifetime
       s => !s.GetProperty("rendering").GetBoolean() && s.GetProperty("statistics").GetString() is { Length: > 0 }, "the end of the render");
   }
 
+  /// <summary>Asks for an animation and waits until it has finished; returns the animation's status then.</summary>
+  public async Task<JsonElement> AnimateAndWait(object body)
+  {
+    using (HttpResponseMessage started = await Client.PostAsJsonAsync("/api/animation", body))
+      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    return await PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the end of the animation");
+  }
+
   public async Task DisposeAsync()
   {
     Client.Dispose();
