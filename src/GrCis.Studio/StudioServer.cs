@@ -163,6 +163,24 @@ public sealed class StudioServer : IAsyncDisposable
     }
   }
 
+  /// <summary>
+  /// Waits until the editor's language services answer at their warm speed, at most <paramref name="within"/>: false when
+  /// they are still loading then (the page then says so until they are). <c>grcis studio</c> tells its address after this,
+  /// so a page opened at once finds completion ready.
+  /// </summary>
+  public async Task<bool> EditorReadyAsync(TimeSpan within, CancellationToken cancel)
+  {
+    try
+    {
+      await Editor.ReadyAsync(cancel).WaitAsync(within, cancel).ConfigureAwait(false);
+      return true;
+    }
+    catch (TimeoutException)
+    {
+      return false;
+    }
+  }
+
   /// <summary>The studio's editor services (tests look at their warm-up).</summary>
   internal EditorAssistance Editor => app.Services.GetRequiredService<EditorAssistance>();
 

@@ -50,6 +50,21 @@ public sealed class EditorWarmUpTests
   }
 
   [Fact]
+  public async Task Asked_not_to_wait_a_cold_studio_answers_503_at_once_and_starts_loading()
+  {
+    await using StudioServer server = await StudioServer.StartAsync(new StudioOptions { NoDefault = true }, new List<string>());
+    using HttpClient client = StudioFixture.ClientOf(server);
+    using HttpResponseMessage loading = await client.GetAsync("/api/editor/ready?wait=false");
+    Assert.Equal(System.Net.HttpStatusCode.ServiceUnavailable, loading.StatusCode);
+    Assert.NotNull(loading.Headers.RetryAfter);
+    Task warmed = Assert.IsAssignableFrom<Task>(server.Editor.Warmed);
+    Assert.True(await server.EditorReadyAsync(TimeSpan.FromMinutes(3), default));
+    Assert.True(warmed.IsCompletedSuccessfully);
+    using HttpResponseMessage loaded = await client.GetAsync("/api/editor/ready?wait=false");
+    Assert.Equal(System.Net.HttpStatusCode.NoContent, loaded.StatusCode);
+  }
+
+  [Fact]
   public async Task The_ready_request_loads_the_services_of_a_cold_studio_and_answers_once_they_are_loaded()
   {
     await using StudioServer server = await StudioServer.StartAsync(new StudioOptions { NoDefault = true }, new List<string>());

@@ -11,7 +11,7 @@ namespace GrCis.Studio.Tests;
 /// <summary><c>grcis studio</c>: one line with the URL on stdout, serves until Ctrl+C, then exits 130.</summary>
 public class StudioCommandTests
 {
-  /// <summary>Runs <c>grcis studio</c> with <paramref name="options"/> in the background until its URL line is out (15 s at most).</summary>
+  /// <summary>Runs <c>grcis studio</c> with <paramref name="options"/> in the background until its URL line is out (60 s at most: it comes once the editor is warm).</summary>
   static async Task<(Task<int> Run, string Url, StringWriter Error)> Start(CancellationTokenSource cancel, params string[] options)
   {
     var output = new StringWriter();
@@ -19,7 +19,7 @@ public class StudioCommandTests
     var env = new CliEnvironment(TextWriter.Synchronized(output), TextWriter.Synchronized(error)) { Cancel = cancel.Token };
     Task<int> run = Task.Run(() => Program.Run(["studio", .. options], env));
     string url = "";
-    for (int i = 0; i < 300 && url.Length == 0 && !run.IsCompleted; i++)
+    for (int i = 0; i < 1200 && url.Length == 0 && !run.IsCompleted; i++)
     {
       await Task.Delay(50);
       url = output.ToString().Trim();

@@ -143,6 +143,9 @@ public sealed class StudioCommand
     return start;
   }
 
+  /// <summary>The longest a new studio waits for the editor's language services before it tells its address.</summary>
+  static readonly TimeSpan EditorWait = TimeSpan.FromSeconds(30);
+
   /// <summary>The studio process under a supervisor: serves on a free loopback port until its supervisor goes.</summary>
   int Serve(ParseResult parse, CliEnvironment env, StudioOptions given)
   {
@@ -179,6 +182,15 @@ public sealed class StudioCommand
     {
       foreach (string problem in problems)
         env.Error.WriteLine("grcis: note: " + problem);
+      // The address is told (and the browser opened) once the editor's completion answers, so that a page opened at once
+      // finds it ready rather than seconds from ready (Roslyn's loading); a pathologically slow machine waits at most
+      // EditorWait, and the page says "loading" after that. A restart after a crash answers at once: a page is waiting.
+      if (options.Generation == 0 && !server.EditorReadyAsync(TimeSpan.Zero, env.Cancel).GetAwaiter().GetResult())
+      {
+        env.Error.WriteLine("grcis: starting the studio (loading the editor's code completion)...");
+        env.Error.Flush();
+        server.EditorReadyAsync(EditorWait, env.Cancel).GetAwaiter().GetResult();
+      }
       env.Out.WriteLine(server.Url);
       env.Out.Flush();
       server.WaitAsync(env.Cancel).GetAwaiter().GetResult();

@@ -39,9 +39,16 @@ internal static class EditorApi
       Invalid(r) is { } problem ? problem
       : await e.Assistant.HoverAsync(r.Text!, r.Position, cancel) is { } hover ? TypedResults.Ok(hover) : TypedResults.NoContent());
     editor.MapPost("/check", Check);
-    // Answers once the language services are loaded: until then the page says that completion is loading.
-    editor.MapGet("/ready", async (EditorAssistance e, CancellationToken cancel) =>
+    // Answers once the language services are loaded: until then the page says that completion is loading. With
+    // ?wait=false it answers at once: 204 when loaded, 503 with Retry-After while they load.
+    editor.MapGet("/ready", async Task<Results<NoContent, ProblemHttpResult>> (EditorAssistance e, HttpResponse response, CancellationToken cancel, bool wait = true) =>
     {
+      if (!wait && e.Warmed is not { IsCompletedSuccessfully: true })
+      {
+        _ = e.WarmAsync();
+        response.Headers.RetryAfter = "1";
+        return TypedResults.Problem("the editor's language services are loading", statusCode: StatusCodes.Status503ServiceUnavailable);
+      }
       await e.ReadyAsync(cancel);
       return TypedResults.NoContent();
     });
