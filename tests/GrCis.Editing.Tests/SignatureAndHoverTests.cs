@@ -83,6 +83,23 @@ public sealed class SignatureAndHoverTests(AssistantFixture fixture) : IClassFix
     Assert.Contains("3D vector of doubles", hover.Documentation);
   }
 
+  /// <summary>
+  /// The framework's own members are documented from the SDK's reference pack; System.Private.CoreLib's types from the
+  /// files of the contracts that expose them (System.Runtime, System.Collections, System.Console).
+  /// </summary>
+  [Theory]
+  [InlineData("double r = Math.Sqrt(2.0);", "Sqrt", "Returns the square root of a specified number.")]
+  [InlineData("var l = new List<int>(); l.Add(1);", "Add", "Adds an object to the end of the")]
+  [InlineData("Console.WriteLine(\"x\");", "WriteLine", "followed by the current line terminator, to the standard output stream.")]
+  public async Task Hovering_a_framework_member_shows_its_doc_comment_from_the_reference_pack(string source, string member, string expected)
+  {
+    HoverInfo? hover = await assistant.HoverAsync(source, source.IndexOf(member, System.StringComparison.Ordinal) + 1);
+    Assert.NotNull(hover);
+    Assert.Contains(member, hover.Text);
+    Assert.NotNull(hover.Documentation);
+    Assert.Contains(expected, hover.Documentation);
+  }
+
   [Fact]
   public async Task Hovering_a_constructor_call_shows_the_constructors_doc_comment()
   {
