@@ -164,6 +164,7 @@ public sealed class StudioSupervisor : IAsyncDisposable
       lock (supervisor.sync)
         supervisor.worker = first;
       supervisor.supervising = supervisor.SuperviseAsync(first);
+      await FirstPageRequests.MakeAsync(options, port, supervisor.hostHeader, supervisor.token, cancel).ConfigureAwait(false);
       string shown = options.IsLoopback ? "127.0.0.1" : StudioOptions.UrlHost(options.Host);
       supervisor.Url = $"http://{shown}:{port}/?token={supervisor.token}";
       return supervisor;
