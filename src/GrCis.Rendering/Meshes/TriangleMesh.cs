@@ -138,7 +138,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
   public virtual bool IsClosed => false;
 
   /// <summary>
-  /// Two allocation-free BVH queries: the first accepted hit in list order, and the last rejected one
+  /// One allocation-free BVH walk for two answers: the first accepted hit in list order, and the last rejected one
   /// (its Enter is the CSG state before the first accepted record; duplicates dropped by
   /// <see cref="Intersect"/> share their predecessor's Enter). In the rare case that the list would drop
   /// the first accepted hit as a duplicate of a rejected one, the list itself answers.
@@ -146,8 +146,8 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
   public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     MeshBvh b = Bvh;
-    bool hasLast = b.Nearest(p0, p1, len2, false, out MeshHit last);
-    return First(b, p0, p1, len2, hasLast, last, out hit, out insideBefore);
+    b.NearestBoth(p0, p1, len2, out bool hasFirst, out MeshHit first, out bool hasLast, out MeshHit last);
+    return First(b, p0, p1, len2, hasLast, last, hasFirst, first, out hit, out insideBefore);
   }
 
   /// <summary>
@@ -163,7 +163,10 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
     MeshBvh b = Bvh;
     bool hasLast = b.Nearest(p0, p1, len2, false, out MeshHit last);
     if (!hasLast || last.Front)
-      return First(b, p0, p1, len2, hasLast, last, out hit, out insideBefore);
+    {
+      bool hasFirst = b.Nearest(p0, p1, len2, true, out MeshHit first);
+      return First(b, p0, p1, len2, hasLast, last, hasFirst, first, out hit, out insideBefore);
+    }
     insideBefore = false;
     hit = default;
     if (!b.AnyFront(p0, p1, len2, tMax, out MeshHit any, out bool onlyBack))
@@ -181,10 +184,11 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
     return true;
   }
 
-  bool First(MeshBvh b, in Vector3d p0, in Vector3d p1, double len2, bool hasLast, in MeshHit last, out SolidRecord hit, out bool insideBefore)
+  /// <summary>The record of the first accepted hit and the state before it, from the last rejected hit.</summary>
+  bool First(MeshBvh b, in Vector3d p0, in Vector3d p1, double len2, bool hasLast, in MeshHit last, bool hasFirst, in MeshHit first,
+             out SolidRecord hit, out bool insideBefore)
   {
     hit = default;
-    bool hasFirst = b.Nearest(p0, p1, len2, true, out MeshHit first);
     insideBefore = hasLast ? last.Front : hasFirst && !first.Front;
     if (!hasFirst)
       return false;
