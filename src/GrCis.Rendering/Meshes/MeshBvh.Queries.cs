@@ -11,12 +11,23 @@ namespace Rendering;
 internal sealed partial class MeshBvh
 {
   /// <summary>
+  /// An upper bound on the T of every hit <see cref="Intersection.FirstIntersection"/> rejects: those have
+  /// T ≤ sqrt(RAY_EPSILON2 / len2) up to rounding (the exact test decides which they are).
+  /// </summary>
+  public static double RejectLimit(double len2)
+  {
+    double limit = Math.Sqrt(Intersection.RAY_EPSILON2 / len2);
+    return limit + (1e-9 * limit + 1e-300);
+  }
+
+  /// <summary>
   /// The first hit in the list's order (T, then triangle) among hits <see cref="Intersection.FirstIntersection"/>
-  /// accepts (<c>T &gt; 0</c>, <c>T² len2 &gt; RAY_EPSILON2</c>) when <paramref name="accepted"/>; otherwise the
-  /// last hit in that order among those it rejects. Allocation-free, nearest boxes first, pruned by the best so far.
+  /// accepts (<c>T &gt; 0</c>, <c>T² len2 &gt; RAY_EPSILON2</c>) when <paramref name="accepted"/>, among those with
+  /// T ≤ <paramref name="tMax"/>; otherwise the last hit in that order among those it rejects. Allocation-free, nearest
+  /// boxes first, pruned by the best so far.
   /// </summary>
   [SkipLocalsInit]   // the stack is written before it is read: no zeroing of it per query
-  public bool Nearest(in Vector3d p0, in Vector3d p1, double len2, bool accepted, out MeshHit best)
+  public bool Nearest(in Vector3d p0, in Vector3d p1, double len2, bool accepted, out MeshHit best, double tMax = double.PositiveInfinity)
   {
     best = default;
     if (triangles == 0)
@@ -24,18 +35,17 @@ internal sealed partial class MeshBvh
     double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
     double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
 
-    // Rejected hits have T ≤ sqrt(RAY_EPSILON2 / len2) (up to rounding; the exact test decides).
-    double limit = Math.Sqrt(Intersection.RAY_EPSILON2 / len2);
-    limit += 1e-9 * limit + 1e-300;
+    double limit = RejectLimit(len2);
     bool found = false;
-    double bestT = accepted ? double.PositiveInfinity : double.NegativeInfinity;
+    // Accepted: boxes beyond tMax are never opened, hits beyond it never taken.
+    double bestT = accepted ? tMax : double.NegativeInfinity;
     int bestTri = 0;
     if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar))
       return false;
     Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
     Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
     Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
-    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2);
+    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
     WideNode[] nodes = wide.Nodes;
 
     // Each entry: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)) and the line's parameter interval in its box,
@@ -79,6 +89,8 @@ internal sealed partial class MeshBvh
           continue;
         // Intersection.FirstIntersection's rule, per lane: (t > 0) and (t · t) · len2 > RAY_EPSILON2.
         int valid = (int)(Vector256.GreaterThan(t, Vector256<double>.Zero) & Vector256.GreaterThan(t * t * vlen2, eps2)).ExtractMostSignificantBits();
+        if (accepted)
+          valid &= (int)Vector256.LessThanOrEqual(t, vtMax).ExtractMostSignificantBits();
         for (mask &= accepted ? valid : ~valid; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
@@ -116,9 +128,7 @@ internal sealed partial class MeshBvh
     double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
     if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar))
       return;
-    // Rejected hits have T ≤ sqrt(RAY_EPSILON2 / len2) (up to rounding; the exact test decides).
-    double limit = Math.Sqrt(Intersection.RAY_EPSILON2 / len2);
-    limit += 1e-9 * limit + 1e-300;
+    double limit = RejectLimit(len2);
     double bestF = double.PositiveInfinity, bestB = double.NegativeInfinity;
     int triF = 0, triB = 0;
     Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);

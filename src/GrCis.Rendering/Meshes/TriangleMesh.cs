@@ -184,6 +184,36 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
     return true;
   }
 
+  /// <summary>
+  /// The first accepted hit alone (one walk, ahead of the origin only, pruned at <paramref name="tMax"/>): the state before
+  /// it is not asked for, and the last rejected hit can change the record only when it is the first accepted hit's
+  /// duplicate (<see cref="First"/>), which needs the first accepted hit within the duplicate tolerance of the rejected
+  /// hits' limit. Only then does the full query answer.
+  /// </summary>
+  bool IAnyHitSolid.FirstRecord(in Vector3d p0, in Vector3d p1, double len2, double tMax, out SolidRecord hit)
+  {
+    MeshBvh b = Bvh;
+    hit = default;
+    if (!b.Nearest(p0, p1, len2, true, out MeshHit first, tMax))
+      return false;
+    // The margin covers the rounding of First's difference first.T − last.T (any last.T ≤ the limit).
+    if (!(first.T > (MeshBvh.RejectLimit(len2) + DuplicateTolerance(b.Extent, p1)) * (1.0 + 1e-9)))
+      return IntersectFirst(p0, p1, len2, out hit, out _) && hit.T <= tMax;
+    Record(first, p0, p1, out hit);
+    return true;
+  }
+
+  /// <summary>The record of an accepted hit, as the list lists it.</summary>
+  static void Record(in MeshHit h, in Vector3d p0, in Vector3d p1, out SolidRecord hit)
+  {
+    hit = default;
+    hit.T = h.T;
+    hit.CoordLocal = p0 + h.T * p1;
+    hit.Data = h.Triangle;
+    hit.Aux = new Vector3d(h.U, h.V, 0.0);
+    hit.Enter = hit.Front = h.Front;
+  }
+
   /// <summary>The record of the first accepted hit and the state before it, from the last rejected hit.</summary>
   bool First(MeshBvh b, in Vector3d p0, in Vector3d p1, double len2, bool hasLast, in MeshHit last, bool hasFirst, in MeshHit first,
              out SolidRecord hit, out bool insideBefore)
@@ -194,11 +224,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
       return false;
     if (hasLast && last.Front == first.Front && first.T - last.T <= DuplicateTolerance(b.Extent, p1))
       return FirstFromList(p0, p1, len2, out hit, out insideBefore);
-    hit.T = first.T;
-    hit.CoordLocal = p0 + first.T * p1;
-    hit.Data = first.Triangle;
-    hit.Aux = new Vector3d(first.U, first.V, 0.0);
-    hit.Enter = hit.Front = first.Front;
+    Record(first, p0, p1, out hit);
     return true;
   }
 

@@ -98,7 +98,7 @@ public class MeshQueryAgreementTests
 
   [Theory]
   [MemberData(nameof(Meshes))]
-  public void IntersectFirst_answers_as_the_mesh_list(string name, int rays)
+  public void IntersectFirst_and_FirstRecord_answer_as_the_mesh_list(string name, int rays)
   {
     SceneBrep mesh = Make(name);
     var solid = new TriangleMesh(mesh);
@@ -124,6 +124,14 @@ public class MeshQueryAgreementTests
         found++;
       }
       inside += wantInside ? 1 : 0;
+
+      // The record alone (a scene of this one mesh): the same, up to a bound.
+      double tMax = rnd.Next(2) == 0 ? double.PositiveInfinity : 3.0 * rnd.NextDouble();
+      bool alone = ((IAnyHitSolid)solid).FirstRecord(o, d, len2, tMax, out SolidRecord r);
+      Assert.True((want && w.T <= tMax) == alone, $"{ray}, tMax {tMax}: list {want} (T {w.T:R}), FirstRecord {alone}");
+      if (alone)
+        Assert.True(r.T.Equals(w.T) && r.Data == w.Data && r.Aux == w.Aux && r.CoordLocal == w.CoordLocal && r.Enter == w.Enter && r.Front == w.Front,
+                    $"{ray}: FirstRecord T {r.T:R} #{r.Data}, list T {w.T:R} #{w.Data}");
     }
     Assert.True(found > rays / 4 && inside > rays / 50, $"{found} hits, {inside} rays starting inside: the cases are not exercised");
   }
