@@ -15,4 +15,11 @@ internal interface IAnyHitSolid
   /// when there is none, or the first record where only the full search can tell (the caller then decides by the list).
   /// </summary>
   bool IntersectAny(in Vector3d p0, in Vector3d p1, double len2, double tMax, out SolidRecord hit, out bool insideBefore);
+
+  /// <summary>
+  /// <see cref="IRecordSolid.IntersectFirst"/>'s record without the state before it, for a caller that does not need
+  /// that state (a scene of this one solid): the same record when its T ≤ <paramref name="tMax"/>, else none. The solid
+  /// may then skip the search behind the origin that only the state needs.
+  /// </summary>
+  bool FirstRecord(in Vector3d p0, in Vector3d p1, double len2, double tMax, out SolidRecord hit);
 }

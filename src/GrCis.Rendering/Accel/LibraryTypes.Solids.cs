@@ -113,6 +113,17 @@ internal static partial class LibraryTypes
       _ => solid.IntersectFirst(p0, p1, len2, out hit, out inside),
     };
 
+  /// <summary>
+  /// The first record of a member's solid when the state before it is not needed (a scene of this one member): an any-hit
+  /// solid's <see cref="IAnyHitSolid.FirstRecord"/>, which may return none when the record lies beyond <paramref name="tMax"/>;
+  /// any other solid's <see cref="IRecordSolid.IntersectFirst"/>.
+  /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  public static bool FirstRecord(DirectSolid kind, IRecordSolid solid, in Vector3d p0, in Vector3d p1, double len2, double tMax, out SolidRecord hit) =>
+    kind == DirectSolid.AnyHit
+      ? Unsafe.As<IAnyHitSolid>(solid).FirstRecord(p0, p1, len2, tMax, out hit)
+      : solid.IntersectFirst(p0, p1, len2, out hit, out _);
+
   /// <summary>The hit set-up of a member's solid (<see cref="IRecordSolid.InitIntersection"/>), by name for <paramref name="kind"/>.</summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static void Init(DirectSolid kind, IRecordSolid solid, in SolidRecord hit, Intersection target)

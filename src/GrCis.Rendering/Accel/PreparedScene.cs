@@ -246,11 +246,8 @@ public sealed partial class PreparedScene : ISceneQuery
     if (!union)
       return OccludedSingle(p0, dir, len2);
 
-    // Hits beyond 1 + RAY_EPSILON/|dir| are Far(1): prune them (with a little slack, tested exactly below).
-    // Both bounds from an upper bound on 1/|dir| (they may only be larger: more is tested exactly, nothing is lost).
+    double bound = FarBound(len2);
     double invLength = CullBounds.UpperInverseLength(len2);
-    double bound = 1.0 + Intersection.RAY_EPSILON * invLength;
-    bound += bound * 1.0e-12;
     Unsafe.SkipInit(out Query q);
     q.Start(len2, bound);
     Intersection? list = null;
@@ -295,6 +292,16 @@ public sealed partial class PreparedScene : ISceneQuery
     return NotFar(q.EntryT, len2);
   }
 
+  /// <summary>
+  /// Hits beyond 1 + RAY_EPSILON/|dir| are Far(1): a bound to prune them with a little slack (tested exactly by
+  /// <see cref="NotFar"/>), from an upper bound on 1/|dir| (it may only be larger: more is tested exactly, nothing is lost).
+  /// </summary>
+  static double FarBound(double len2)
+  {
+    double bound = 1.0 + Intersection.RAY_EPSILON * CullBounds.UpperInverseLength(len2);
+    return bound + bound * 1.0e-12;
+  }
+
   static bool NotFar(double t, double len2)
   {
     if (t <= 1.0)
@@ -333,7 +340,8 @@ public sealed partial class PreparedScene : ISceneQuery
     ToLocal(m, ref lp0, ref lp1);
     if (m.RecordSolid != null)
     {
-      if (!m.RecordSolid.IntersectFirst(lp0, lp1, len2, out SolidRecord h, out _))
+      // The raw list's first record: the state before it is not needed.
+      if (!LibraryTypes.FirstRecord(m.Direct, m.RecordSolid, lp0, lp1, len2, double.PositiveInfinity, out SolidRecord h))
         return null;
       return Complete(ref m, h, reuse, surfaceOnly);
     }
@@ -355,8 +363,9 @@ public sealed partial class PreparedScene : ISceneQuery
     ToLocal(m, ref lp0, ref lp1);
     if (m.RecordSolid != null)
     {
-      // Every record belongs to this solid, so NO_SHADOW hides them all.
-      if (m.NoShadow || !m.RecordSolid.IntersectFirst(lp0, lp1, len2, out SolidRecord h, out _))
+      // Every record belongs to this solid, so NO_SHADOW hides them all. A record beyond the bound is far (Occluded's
+      // bound), so the search stops there.
+      if (m.NoShadow || !LibraryTypes.FirstRecord(m.Direct, m.RecordSolid, lp0, lp1, len2, FarBound(len2), out SolidRecord h))
         return false;
       return NotFar(h.T, len2);
     }

@@ -10,22 +10,24 @@ using Rendering.Accel;
 namespace Rendering;
 
 /// <summary>
-/// A mesh's triangles under the generic <see cref="Bvh"/>, with the two allocation-free traversals a
-/// mesh needs: every hit along the whole line (negative t included, because CSG needs the complete
-/// list) and the nearest accepted or last rejected hit (on the tree collapsed to four children per node,
-/// <see cref="WideBvh"/>). Triangles are stored in leaf order and tested
-/// with Möller–Trumbore (<see cref="MeshTriangles"/>).
+/// A mesh's triangles under the generic <see cref="Bvh"/>, collapsed to four children per node (<see cref="WideBvh"/>),
+/// with the allocation-free traversals a mesh needs: every hit along the whole line (negative t included, because CSG
+/// needs the complete list), the nearest accepted and last rejected hit (<c>MeshBvh.Queries.cs</c>) and an any-hit
+/// walk. A leaf's triangles are stored four at a time in leaf order (<see cref="TriangleBlock"/>) and tested with
+/// Möller–Trumbore in exactly <see cref="MeshTriangles"/>' arithmetic, so every query finds the hits, to the bit, that
+/// testing every triangle finds.
 /// </summary>
-internal sealed class MeshBvh
+internal sealed partial class MeshBvh
 {
-  readonly Bvh tree;
-  readonly WideBvh wide;
-  readonly double[] tri;      // 9 doubles per triangle in leaf order: a, b − a, c − a
-  readonly int[] triId;       // leaf order → original triangle handle
+  readonly WideBvh wide;      // leaf lanes: Index = first block of the leaf, Count = its triangles
+  readonly BvhNode root;      // the box around every triangle
+  readonly TriangleBlock[] blocks;
+  readonly int[] ids;         // block·4 + lane → original triangle handle (−1 in unused lanes)
+  readonly int triangles, binaryNodes;
 
-  public int TriangleCount => triId.Length;
+  public int TriangleCount => triangles;
 
-  public int NodeCount => tree.Nodes.Length;
+  public int NodeCount => binaryNodes;
 
   /// <summary>Nodes of the four-wide tree the fast queries walk.</summary>
   public int WideNodeCount => wide.Nodes.Length;
@@ -35,7 +37,7 @@ internal sealed class MeshBvh
 
   public MeshBvh(SceneBrep mesh)
   {
-    int n = mesh.Triangles;
+    int n = triangles = mesh.Triangles;
     // Only the build reads boxes and centroids: lent by the pool (each is a large-object-heap array otherwise).
     Aabb[] boxes = ArrayPool<Aabb>.Shared.Rent(n);
     Vector3d[] centroids = ArrayPool<Vector3d>.Shared.Rent(n);
@@ -53,31 +55,71 @@ internal sealed class MeshBvh
       }
     });
 
-    tree = Bvh.Build(boxes, centroids, order, BvhShape.Triangles);
+    Bvh tree = Bvh.Build(boxes, centroids, order, BvhShape.Triangles);
     ArrayPool<Aabb>.Shared.Return(boxes);
     ArrayPool<Vector3d>.Shared.Return(centroids);
+    binaryNodes = tree.Nodes.Length;
+    root = tree.Nodes[0];
     // The child-box padding lies far above rounding (of box and triangle arithmetic, also far from the
     // origin) and far below any feature: the two-box test may then only keep more boxes, never fewer.
     // The root box is the union of every triangle's box.
-    Aabb root = n > 0 ? new Aabb(new Vector3d(tree.Nodes[0].MinX, tree.Nodes[0].MinY, tree.Nodes[0].MinZ),
-                                 new Vector3d(tree.Nodes[0].MaxX, tree.Nodes[0].MaxY, tree.Nodes[0].MaxZ)) : Aabb.Empty;
-    Extent = n > 0 ? (root.Max - root.Min).Length : 0.0;
+    Aabb rootBox = n > 0 ? new Aabb(new Vector3d(root.MinX, root.MinY, root.MinZ), new Vector3d(root.MaxX, root.MaxY, root.MaxZ)) : Aabb.Empty;
+    Extent = n > 0 ? (rootBox.Max - rootBox.Min).Length : 0.0;
     double magnitude = 0.0;
     for (int axis = 0; axis < 3 && n > 0; axis++)
-      magnitude = Math.Max(magnitude, Math.Max(Math.Abs(root.Min[axis]), Math.Abs(root.Max[axis])));
+      magnitude = Math.Max(magnitude, Math.Max(Math.Abs(rootBox.Min[axis]), Math.Abs(rootBox.Max[axis])));
     wide = WideBvh.Collapse(tree, 1e-9 * (Extent + magnitude));
+    (blocks, ids) = Store(mesh, wide.Nodes, order);
+  }
 
-    double[] stored = tri = new double[9 * n];
-    triId = order;
+  /// <summary>
+  /// The triangles in blocks of four, each leaf's from a new block in leaf order; the wide leaf lanes are pointed at
+  /// their first block.
+  /// </summary>
+  static (TriangleBlock[] Blocks, int[] Ids) Store(SceneBrep mesh, WideNode[] nodes, int[] order)
+  {
+    int n = order.Length;
+    // Leaves cover [0, n) in leaf order without overlap: a leaf is known by its first item.
+    int[] countAt = ArrayPool<int>.Shared.Rent(n + 1);
+    Array.Clear(countAt, 0, n + 1);
+    foreach (ref readonly WideNode node in nodes.AsSpan())
+      for (int lane = 0; lane < WideNode.Width; lane++)
+        if ((node.Valid >> lane & 1) != 0 && node.Count[lane] > 0)
+          countAt[node.Index[lane]] = node.Count[lane];
+    // Each item's place (block · 4 + lane); countAt becomes each leaf's first block.
+    int[] place = ArrayPool<int>.Shared.Rent(n);
+    int used = 0;
+    for (int i = 0; i < n;)
+    {
+      int count = countAt[i];
+      for (int j = 0; j < count; j++)
+        place[i + j] = TriangleBlock.Width * used + j;
+      countAt[i] = used;
+      used += (count + TriangleBlock.Width - 1) / TriangleBlock.Width;
+      i += Math.Max(count, 1);
+    }
+    foreach (ref WideNode node in nodes.AsSpan())
+      for (int lane = 0; lane < WideNode.Width; lane++)
+        if ((node.Valid >> lane & 1) != 0 && node.Count[lane] > 0)
+          node.Index[lane] = countAt[node.Index[lane]];
+
+    var blocks = new TriangleBlock[used];
+    var ids = new int[TriangleBlock.Width * used];
+    ids.AsSpan().Fill(-1);
     InChunks(n, (start, end) =>
     {
       for (int k = start; k < end; k++)
       {
         // The vertices again from the mesh (cheap) rather than three more large arrays for the collector.
         mesh.GetTriangleVertices(order[k], out Vector3 pa, out Vector3 pb, out Vector3 pc);
-        MeshTriangles.Store(stored, 9 * k, pa, pb, pc);
+        int p = place[k];
+        blocks[p / TriangleBlock.Width].Set(p % TriangleBlock.Width, pa, pb, pc);
+        ids[p] = order[k];
       }
     });
+    ArrayPool<int>.Shared.Return(countAt);
+    ArrayPool<int>.Shared.Return(place);
+    return (blocks, ids);
   }
 
   /// <summary>body(start, end) over [0, n) cut in chunks, in parallel when there are enough.</summary>
@@ -92,43 +134,68 @@ internal sealed class MeshBvh
     System.Threading.Tasks.Parallel.For(0, (n + Chunk - 1) / Chunk, k => body(k * Chunk, Math.Min(n, (k + 1) * Chunk)));
   }
 
-  /// <summary>Original triangle handle of the k-th triangle in leaf order.</summary>
-  public int OriginalTriangle(int k) => triId[k];
-
   /// <summary>Appends all hits of the line <c>p0 + t p1</c> (any t) to <paramref name="hits"/>, unsorted.</summary>
+  [SkipLocalsInit]   // the stack is written before it is read
   public void IntersectAll(Vector3d p0, Vector3d p1, List<MeshHit> hits)
   {
-    if (triId.Length == 0)
+    if (triangles == 0)
       return;
     double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
     double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
+    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out _, out _))
+      return;
+    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
+    Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
+    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
+    WideNode[] nodes = wide.Nodes;
 
-    Span<int> stack = stackalloc int[128];
+    // Entries as in Nearest; every box the line crosses (any t) is opened.
+    int size = wide.StackSize;
+    Span<int> stack = size <= 1024 ? stackalloc int[size] : new int[size];
     int sp = 0;
     stack[sp++] = 0;
     while (sp > 0)
     {
-      int node = stack[--sp];
-      if (!LineBox(node, ox, oy, oz, dx, dy, dz, ix, iy, iz, out _, out _))
-        continue;
-      ref BvhNode n = ref tree.Nodes[node];
-      if (n.Count == 0)
+      int code = stack[--sp];
+      if (code >= 0)
       {
-        if (sp + 2 > stack.Length)
+        ref WideNode n = ref nodes[code];
+        for (int mask = n.Cross(vox, voy, voz, vix, viy, viz, out _, out _); mask != 0; mask &= mask - 1)
         {
-          // Degenerate (very deep) tree: fall back to a heap stack once.
-          Span<int> bigger = new int[stack.Length * 2];
-          stack.CopyTo(bigger);
-          stack = bigger;
+          int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
+          stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);
         }
-        stack[sp++] = node + 1;
-        stack[sp++] = n.Index;
         continue;
       }
-      int end = n.Index + n.Count;
-      for (int k = n.Index; k < end; k++)
-        TestTriangle(k, ox, oy, oz, dx, dy, dz, hits);
+      Leaf(nodes, code, out int block, out int end);
+      for (; block < end; block++)
+      {
+        int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
+                                     out Vector256<double> v, out Vector256<double> det);
+        for (; mask != 0; mask &= mask - 1)
+        {
+          int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
+          hits.Add(new MeshHit
+          {
+            T = t.GetElement(lane),
+            Triangle = ids[TriangleBlock.Width * block + lane],
+            U = u.GetElement(lane),
+            V = v.GetElement(lane),
+            Front = det.GetElement(lane) > 0.0,
+          });
+        }
+      }
     }
+  }
+
+  /// <summary>The blocks [<paramref name="block"/>, <paramref name="end"/>) of the leaf a stack entry ~(node·4 + lane) names.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static void Leaf(WideNode[] nodes, int code, out int block, out int end)
+  {
+    int slot = ~code;
+    ref WideNode parent = ref nodes[slot / WideNode.Width];
+    block = parent.Index[slot % WideNode.Width];
+    end = block + (parent.Count[slot % WideNode.Width] + TriangleBlock.Width - 1) / TriangleBlock.Width;
   }
 
   static bool Slab(double min, double max, double o, double d, double inv, ref double tMin, ref double tMax)
@@ -145,176 +212,14 @@ internal sealed class MeshBvh
     return tMin <= tMax;
   }
 
-  void TestTriangle(int k, double ox, double oy, double oz, double dx, double dy, double dz, List<MeshHit> hits)
-  {
-    if (Triangle(k, ox, oy, oz, dx, dy, dz, out double t, out double u, out double v, out bool front))
-      hits.Add(new MeshHit { T = t, Triangle = triId[k], U = u, V = v, Front = front });
-  }
-
-  /// <summary>Möller–Trumbore against the k-th triangle in leaf order.</summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  bool Triangle(int k, double ox, double oy, double oz, double dx, double dy, double dz,
-                out double t, out double u, out double v, out bool front) =>
-    MeshTriangles.Hit(tri, 9 * k, ox, oy, oz, dx, dy, dz, out t, out u, out v, out front);
-
-  /// <summary>
-  /// The first hit in the list's order (T, then triangle) among hits <see cref="Intersection.FirstIntersection"/>
-  /// accepts (<c>T &gt; 0</c>, <c>T² len2 &gt; RAY_EPSILON2</c>) when <paramref name="accepted"/>; otherwise the
-  /// last hit in that order among those it rejects. Allocation-free, nearest boxes first, pruned by the best so far.
-  /// </summary>
-  [SkipLocalsInit]   // the stack is written before it is read: no zeroing of it per query
-  public bool Nearest(in Vector3d p0, in Vector3d p1, double len2, bool accepted, out MeshHit best)
-  {
-    best = default;
-    if (triId.Length == 0)
-      return false;
-    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
-    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
-
-    // Rejected hits have T ≤ sqrt(RAY_EPSILON2 / len2) (up to rounding; the exact test decides).
-    double limit = Math.Sqrt(Intersection.RAY_EPSILON2 / len2);
-    limit += 1e-9 * limit + 1e-300;
-    bool found = false;
-    double bestT = accepted ? double.PositiveInfinity : double.NegativeInfinity;
-    int bestTri = 0;
-    if (!LineBox(0, ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar))
-      return false;
-    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
-    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
-    WideNode[] nodes = wide.Nodes;
-
-    // Each entry: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)) and the line's parameter interval in its box,
-    // re-checked against the best when popped; the root's interval is that of the whole mesh's box.
-    int size = wide.StackSize;
-    // On the stack (not zeroed) up to a tree depth of about 170; only a degenerate mesh's tree is deeper.
-    Span<NodeSpan> stack = size <= 512 ? stackalloc NodeSpan[size] : new NodeSpan[size];
-    int sp = 0;
-    stack[sp++] = new NodeSpan(0, rootNear, rootFar);
-    while (sp > 0)
-    {
-      NodeSpan e = stack[--sp];
-      // Accepted: T in (0, best]; rejected: T in [best, limit].
-      if (accepted ? (e.Far <= 0.0 || e.Near > bestT) : (e.Near > limit || e.Far < bestT))
-        continue;
-      int code = e.Node;
-      if (code >= 0)
-      {
-        ref WideNode n = ref nodes[code];
-        int mask = n.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
-        // The boxes more likely to hold the answer are popped first: nearest entry for the first accepted hit,
-        // farthest exit for the last rejected one. Pushed in insertion order, most likely last.
-        int first = sp;
-        for (; mask != 0; mask &= mask - 1)
-        {
-          int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
-          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
-          int k = sp++;
-          for (; k > first && (accepted ? stack[k - 1].Near < s.Near : stack[k - 1].Far > s.Far); k--)
-            stack[k] = stack[k - 1];
-          stack[k] = s;
-        }
-        continue;
-      }
-      int slot = ~code;
-      ref WideNode parent = ref nodes[slot / WideNode.Width];
-      int start = parent.Index[slot % WideNode.Width], end = start + parent.Count[slot % WideNode.Width];
-      for (int k = start; k < end; k++)
-      {
-        if (!Triangle(k, ox, oy, oz, dx, dy, dz, out double t, out double u, out double v, out bool front))
-          continue;
-        if ((t > 0.0 && t * t * len2 > Intersection.RAY_EPSILON2) != accepted)
-          continue;
-        int id = triId[k];
-        bool better = accepted
-          ? t < bestT || (t == bestT && id < bestTri)
-          : t > bestT || (t == bestT && id > bestTri);
-        if (!found || better)
-        {
-          found = true;
-          bestT = t;
-          bestTri = id;
-          best = new MeshHit { T = t, Triangle = id, U = u, V = v, Front = front };
-        }
-      }
-    }
-    return found;
-  }
-
-  /// <summary>
-  /// Any-hit with early exit: some hit that <see cref="Intersection.FirstIntersection"/> accepts with T ≤ <paramref name="tMax"/>
-  /// and runs against the face (Front). True at the first such hit found, in no particular order; otherwise false, with
-  /// <paramref name="onlyBack"/> true when accepted back-face hits (exits) lie in that range. Boxes beyond
-  /// <paramref name="tMax"/> or behind the origin are never opened.
-  /// </summary>
-  [SkipLocalsInit]   // the stack is written before it is read
-  public bool AnyFront(in Vector3d p0, in Vector3d p1, double len2, double tMax, out MeshHit hit, out bool onlyBack)
-  {
-    hit = default;
-    onlyBack = false;
-    if (triId.Length == 0)
-      return false;
-    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
-    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
-    if (!LineBox(0, ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar) || rootFar <= 0.0 || rootNear > tMax)
-      return false;
-    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
-    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
-    WideNode[] nodes = wide.Nodes;
-
-    // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)); only boxes meeting (0, tMax] are pushed.
-    int size = wide.StackSize;
-    Span<int> stack = size <= 1024 ? stackalloc int[size] : new int[size];
-    int sp = 0;
-    stack[sp++] = 0;
-    while (sp > 0)
-    {
-      int code = stack[--sp];
-      if (code >= 0)
-      {
-        ref WideNode n = ref nodes[code];
-        int mask = n.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
-        for (; mask != 0; mask &= mask - 1)
-        {
-          int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
-          if (far.GetElement(lane) <= 0.0 || near.GetElement(lane) > tMax)
-            continue;
-          stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);
-        }
-        continue;
-      }
-      int slot = ~code;
-      ref WideNode parent = ref nodes[slot / WideNode.Width];
-      int start = parent.Index[slot % WideNode.Width], end = start + parent.Count[slot % WideNode.Width];
-      for (int k = start; k < end; k++)
-      {
-        if (!Triangle(k, ox, oy, oz, dx, dy, dz, out double t, out double u, out double v, out bool front))
-          continue;
-        if (!(t > 0.0 && t * t * len2 > Intersection.RAY_EPSILON2) || t > tMax)
-          continue;
-        if (!front)
-        {
-          onlyBack = true;
-          continue;
-        }
-        hit = new MeshHit { T = t, Triangle = triId[k], U = u, V = v, Front = true };
-        onlyBack = false;
-        return true;
-      }
-    }
-    return false;
-  }
-
-  /// <summary>Parameter interval of the line in a node's box (the same widened slabs as <see cref="IntersectAll"/>).</summary>
-  bool LineBox(int node, double ox, double oy, double oz, double dx, double dy, double dz, double ix, double iy, double iz,
+  /// <summary>Parameter interval of the line in the box around every triangle (widened slabs).</summary>
+  bool LineBox(double ox, double oy, double oz, double dx, double dy, double dz, double ix, double iy, double iz,
                out double tMin, out double tMax)
   {
-    ref BvhNode n = ref tree.Nodes[node];
     tMin = double.NegativeInfinity;
     tMax = double.PositiveInfinity;
-    return Slab(n.MinX, n.MaxX, ox, dx, ix, ref tMin, ref tMax) &&
-           Slab(n.MinY, n.MaxY, oy, dy, iy, ref tMin, ref tMax) &&
-           Slab(n.MinZ, n.MaxZ, oz, dz, iz, ref tMin, ref tMax);
+    return Slab(root.MinX, root.MaxX, ox, dx, ix, ref tMin, ref tMax) &&
+           Slab(root.MinY, root.MaxY, oy, dy, iy, ref tMin, ref tMax) &&
+           Slab(root.MinZ, root.MaxZ, oz, dz, iz, ref tMin, ref tMax);
   }
-
-  readonly record struct NodeSpan(int Node, double Near, double Far);
 }

@@ -138,7 +138,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
   public virtual bool IsClosed => false;
 
   /// <summary>
-  /// Two allocation-free BVH queries: the first accepted hit in list order, and the last rejected one
+  /// One allocation-free BVH walk for two answers: the first accepted hit in list order, and the last rejected one
   /// (its Enter is the CSG state before the first accepted record; duplicates dropped by
   /// <see cref="Intersect"/> share their predecessor's Enter). In the rare case that the list would drop
   /// the first accepted hit as a duplicate of a rejected one, the list itself answers.
@@ -146,8 +146,8 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
   public virtual bool IntersectFirst(in Vector3d p0, in Vector3d p1, double len2, out SolidRecord hit, out bool insideBefore)
   {
     MeshBvh b = Bvh;
-    bool hasLast = b.Nearest(p0, p1, len2, false, out MeshHit last);
-    return First(b, p0, p1, len2, hasLast, last, out hit, out insideBefore);
+    b.NearestBoth(p0, p1, len2, out bool hasFirst, out MeshHit first, out bool hasLast, out MeshHit last);
+    return First(b, p0, p1, len2, hasLast, last, hasFirst, first, out hit, out insideBefore);
   }
 
   /// <summary>
@@ -163,7 +163,10 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
     MeshBvh b = Bvh;
     bool hasLast = b.Nearest(p0, p1, len2, false, out MeshHit last);
     if (!hasLast || last.Front)
-      return First(b, p0, p1, len2, hasLast, last, out hit, out insideBefore);
+    {
+      bool hasFirst = b.Nearest(p0, p1, len2, true, out MeshHit first);
+      return First(b, p0, p1, len2, hasLast, last, hasFirst, first, out hit, out insideBefore);
+    }
     insideBefore = false;
     hit = default;
     if (!b.AnyFront(p0, p1, len2, tMax, out MeshHit any, out bool onlyBack))
@@ -181,20 +184,47 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
     return true;
   }
 
-  bool First(MeshBvh b, in Vector3d p0, in Vector3d p1, double len2, bool hasLast, in MeshHit last, out SolidRecord hit, out bool insideBefore)
+  /// <summary>
+  /// The first accepted hit alone (one walk, ahead of the origin only, pruned at <paramref name="tMax"/>): the state before
+  /// it is not asked for, and the last rejected hit can change the record only when it is the first accepted hit's
+  /// duplicate (<see cref="First"/>), which needs the first accepted hit within the duplicate tolerance of the rejected
+  /// hits' limit. Only then does the full query answer.
+  /// </summary>
+  bool IAnyHitSolid.FirstRecord(in Vector3d p0, in Vector3d p1, double len2, double tMax, out SolidRecord hit)
+  {
+    MeshBvh b = Bvh;
+    hit = default;
+    if (!b.Nearest(p0, p1, len2, true, out MeshHit first, tMax))
+      return false;
+    // The margin covers the rounding of First's difference first.T − last.T (any last.T ≤ the limit).
+    if (!(first.T > (MeshBvh.RejectLimit(len2) + DuplicateTolerance(b.Extent, p1)) * (1.0 + 1e-9)))
+      return IntersectFirst(p0, p1, len2, out hit, out _) && hit.T <= tMax;
+    Record(first, p0, p1, out hit);
+    return true;
+  }
+
+  /// <summary>The record of an accepted hit, as the list lists it.</summary>
+  static void Record(in MeshHit h, in Vector3d p0, in Vector3d p1, out SolidRecord hit)
   {
     hit = default;
-    bool hasFirst = b.Nearest(p0, p1, len2, true, out MeshHit first);
+    hit.T = h.T;
+    hit.CoordLocal = p0 + h.T * p1;
+    hit.Data = h.Triangle;
+    hit.Aux = new Vector3d(h.U, h.V, 0.0);
+    hit.Enter = hit.Front = h.Front;
+  }
+
+  /// <summary>The record of the first accepted hit and the state before it, from the last rejected hit.</summary>
+  bool First(MeshBvh b, in Vector3d p0, in Vector3d p1, double len2, bool hasLast, in MeshHit last, bool hasFirst, in MeshHit first,
+             out SolidRecord hit, out bool insideBefore)
+  {
+    hit = default;
     insideBefore = hasLast ? last.Front : hasFirst && !first.Front;
     if (!hasFirst)
       return false;
     if (hasLast && last.Front == first.Front && first.T - last.T <= DuplicateTolerance(b.Extent, p1))
       return FirstFromList(p0, p1, len2, out hit, out insideBefore);
-    hit.T = first.T;
-    hit.CoordLocal = p0 + first.T * p1;
-    hit.Data = first.Triangle;
-    hit.Aux = new Vector3d(first.U, first.V, 0.0);
-    hit.Enter = hit.Front = first.Front;
+    Record(first, p0, p1, out hit);
     return true;
   }
 

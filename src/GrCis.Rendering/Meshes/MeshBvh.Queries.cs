@@ -1,0 +1,278 @@
+using System;
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
+using OpenTK.Mathematics;
+using Rendering.Accel;
+
+namespace Rendering;
+
+/// <summary>The closest-hit and any-hit walks of a <see cref="MeshBvh"/>.</summary>
+internal sealed partial class MeshBvh
+{
+  /// <summary>
+  /// An upper bound on the T of every hit <see cref="Intersection.FirstIntersection"/> rejects: those have
+  /// T ≤ sqrt(RAY_EPSILON2 / len2) up to rounding (the exact test decides which they are).
+  /// </summary>
+  public static double RejectLimit(double len2)
+  {
+    double limit = Math.Sqrt(Intersection.RAY_EPSILON2 / len2);
+    return limit + (1e-9 * limit + 1e-300);
+  }
+
+  /// <summary>
+  /// The first hit in the list's order (T, then triangle) among hits <see cref="Intersection.FirstIntersection"/>
+  /// accepts (<c>T &gt; 0</c>, <c>T² len2 &gt; RAY_EPSILON2</c>) when <paramref name="accepted"/>, among those with
+  /// T ≤ <paramref name="tMax"/>; otherwise the last hit in that order among those it rejects. Allocation-free, nearest
+  /// boxes first, pruned by the best so far.
+  /// </summary>
+  [SkipLocalsInit]   // the stack is written before it is read: no zeroing of it per query
+  public bool Nearest(in Vector3d p0, in Vector3d p1, double len2, bool accepted, out MeshHit best, double tMax = double.PositiveInfinity)
+  {
+    best = default;
+    if (triangles == 0)
+      return false;
+    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
+    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
+
+    double limit = RejectLimit(len2);
+    bool found = false;
+    // Accepted: boxes beyond tMax are never opened, hits beyond it never taken.
+    double bestT = accepted ? tMax : double.NegativeInfinity;
+    int bestTri = 0;
+    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar))
+      return false;
+    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
+    Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
+    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
+    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
+    WideNode[] nodes = wide.Nodes;
+
+    // Each entry: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)) and the line's parameter interval in its box,
+    // re-checked against the best when popped; the root's interval is that of the whole mesh's box.
+    int size = wide.StackSize;
+    // On the stack (not zeroed) up to a tree depth of about 170; only a degenerate mesh's tree is deeper.
+    Span<NodeSpan> stack = size <= 512 ? stackalloc NodeSpan[size] : new NodeSpan[size];
+    int sp = 0;
+    stack[sp++] = new NodeSpan(0, rootNear, rootFar);
+    while (sp > 0)
+    {
+      NodeSpan e = stack[--sp];
+      // Accepted: T in (0, best]; rejected: T in [best, limit].
+      if (accepted ? (e.Far <= 0.0 || e.Near > bestT) : (e.Near > limit || e.Far < bestT))
+        continue;
+      int code = e.Node;
+      if (code >= 0)
+      {
+        ref WideNode n = ref nodes[code];
+        int mask = n.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
+        // The boxes more likely to hold the answer are popped first: nearest entry for the first accepted hit,
+        // farthest exit for the last rejected one. Pushed in insertion order, most likely last.
+        int first = sp;
+        for (; mask != 0; mask &= mask - 1)
+        {
+          int lane = BitOperations.TrailingZeroCount(mask);
+          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
+          int k = sp++;
+          for (; k > first && (accepted ? stack[k - 1].Near < s.Near : stack[k - 1].Far > s.Far); k--)
+            stack[k] = stack[k - 1];
+          stack[k] = s;
+        }
+        continue;
+      }
+      Leaf(nodes, code, out int block, out int end);
+      for (; block < end; block++)
+      {
+        int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
+                                     out Vector256<double> v, out Vector256<double> det);
+        if (mask == 0)
+          continue;
+        // Intersection.FirstIntersection's rule, per lane: (t > 0) and (t · t) · len2 > RAY_EPSILON2.
+        int valid = (int)(Vector256.GreaterThan(t, Vector256<double>.Zero) & Vector256.GreaterThan(t * t * vlen2, eps2)).ExtractMostSignificantBits();
+        if (accepted)
+          valid &= (int)Vector256.LessThanOrEqual(t, vtMax).ExtractMostSignificantBits();
+        for (mask &= accepted ? valid : ~valid; mask != 0; mask &= mask - 1)
+        {
+          int lane = BitOperations.TrailingZeroCount(mask);
+          double tl = t.GetElement(lane);
+          int id = ids[TriangleBlock.Width * block + lane];
+          bool better = accepted
+            ? tl < bestT || (tl == bestT && id < bestTri)
+            : tl > bestT || (tl == bestT && id > bestTri);
+          if (!found || better)
+          {
+            found = true;
+            bestT = tl;
+            bestTri = id;
+            best = new MeshHit { T = tl, Triangle = id, U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
+          }
+        }
+      }
+    }
+    return found;
+  }
+
+  /// <summary>
+  /// <see cref="Nearest"/>'s two answers from one walk: the first accepted hit (<paramref name="first"/>) and the last
+  /// rejected one (<paramref name="last"/>). A box is opened while it may hold either; the one nearer the origin (in
+  /// front or behind) is opened first. Boxes and triangles around the origin, which both searches need, are visited once.
+  /// </summary>
+  [SkipLocalsInit]   // the stack is written before it is read
+  public void NearestBoth(in Vector3d p0, in Vector3d p1, double len2, out bool hasFirst, out MeshHit first, out bool hasLast, out MeshHit last)
+  {
+    first = last = default;
+    hasFirst = hasLast = false;
+    if (triangles == 0)
+      return;
+    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
+    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
+    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar))
+      return;
+    double limit = RejectLimit(len2);
+    double bestF = double.PositiveInfinity, bestB = double.NegativeInfinity;
+    int triF = 0, triB = 0;
+    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
+    Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
+    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
+    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vlimit = Vector256.Create(limit);
+    WideNode[] nodes = wide.Nodes;
+
+    int size = wide.StackSize;
+    Span<NodeSpan> stack = size <= 512 ? stackalloc NodeSpan[size] : new NodeSpan[size];
+    int sp = 0;
+    stack[sp++] = new NodeSpan(0, rootNear, rootFar);
+    while (sp > 0)
+    {
+      NodeSpan e = stack[--sp];
+      // Nearest's two tests: accepted T in (0, bestF], rejected T in [bestB, limit].
+      if ((e.Far <= 0.0 || e.Near > bestF) && (e.Near > limit || e.Far < bestB))
+        continue;
+      int code = e.Node;
+      if (code >= 0)
+      {
+        ref WideNode n = ref nodes[code];
+        int mask = n.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
+        // Only boxes either search still needs; the rest would be dropped when popped.
+        Vector256<double> zero = Vector256<double>.Zero;
+        mask &= (int)((Vector256.GreaterThan(far, zero) & Vector256.LessThanOrEqual(near, Vector256.Create(bestF))) |
+                      (Vector256.LessThanOrEqual(near, vlimit) & Vector256.GreaterThanOrEqual(far, Vector256.Create(bestB)))).ExtractMostSignificantBits();
+        // Distance from the origin along the line (negative for a box around it): the smallest is popped first.
+        Vector256<double> key = Vector256.MaxNative(near, -far);
+        int pushed = sp;
+        for (; mask != 0; mask &= mask - 1)
+        {
+          int lane = BitOperations.TrailingZeroCount(mask);
+          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
+          double sk = key.GetElement(lane);
+          int k = sp++;
+          for (; k > pushed && Math.Max(stack[k - 1].Near, -stack[k - 1].Far) < sk; k--)
+            stack[k] = stack[k - 1];
+          stack[k] = s;
+        }
+        continue;
+      }
+      Leaf(nodes, code, out int block, out int end);
+      for (; block < end; block++)
+      {
+        int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
+                                     out Vector256<double> v, out Vector256<double> det);
+        if (mask == 0)
+          continue;
+        int valid = (int)(Vector256.GreaterThan(t, Vector256<double>.Zero) & Vector256.GreaterThan(t * t * vlen2, eps2)).ExtractMostSignificantBits();
+        for (; mask != 0; mask &= mask - 1)
+        {
+          int lane = BitOperations.TrailingZeroCount(mask);
+          double tl = t.GetElement(lane);
+          int id = ids[TriangleBlock.Width * block + lane];
+          if ((valid >> lane & 1) != 0)
+          {
+            if (!hasFirst || tl < bestF || (tl == bestF && id < triF))
+            {
+              hasFirst = true;
+              bestF = tl;
+              triF = id;
+              first = new MeshHit { T = tl, Triangle = id, U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
+            }
+          }
+          else if (!hasLast || tl > bestB || (tl == bestB && id > triB))
+          {
+            hasLast = true;
+            bestB = tl;
+            triB = id;
+            last = new MeshHit { T = tl, Triangle = id, U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
+          }
+        }
+      }
+    }
+  }
+
+  /// <summary>
+  /// Any-hit with early exit: some hit that <see cref="Intersection.FirstIntersection"/> accepts with T ≤ <paramref name="tMax"/>
+  /// and runs against the face (Front). True at the first such hit found, in no particular order; otherwise false, with
+  /// <paramref name="onlyBack"/> true when accepted back-face hits (exits) lie in that range. Boxes beyond
+  /// <paramref name="tMax"/> or behind the origin are never opened.
+  /// </summary>
+  [SkipLocalsInit]   // the stack is written before it is read
+  public bool AnyFront(in Vector3d p0, in Vector3d p1, double len2, double tMax, out MeshHit hit, out bool onlyBack)
+  {
+    hit = default;
+    onlyBack = false;
+    if (triangles == 0)
+      return false;
+    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
+    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
+    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar) || rootFar <= 0.0 || rootNear > tMax)
+      return false;
+    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
+    Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
+    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
+    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
+    WideNode[] nodes = wide.Nodes;
+
+    // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)); only boxes meeting (0, tMax] are pushed.
+    int size = wide.StackSize;
+    Span<int> stack = size <= 1024 ? stackalloc int[size] : new int[size];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0)
+    {
+      int code = stack[--sp];
+      if (code >= 0)
+      {
+        ref WideNode n = ref nodes[code];
+        int mask = n.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
+        mask &= (int)(Vector256.GreaterThan(far, Vector256<double>.Zero) & Vector256.LessThanOrEqual(near, vtMax)).ExtractMostSignificantBits();
+        for (; mask != 0; mask &= mask - 1)
+        {
+          int lane = BitOperations.TrailingZeroCount(mask);
+          stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);
+        }
+        continue;
+      }
+      Leaf(nodes, code, out int block, out int end);
+      for (; block < end; block++)
+      {
+        int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
+                                     out Vector256<double> v, out Vector256<double> det);
+        if (mask == 0)
+          continue;
+        // Accepted (as in Nearest) and not beyond tMax; the first front face in triangle order answers.
+        mask &= (int)(Vector256.GreaterThan(t, Vector256<double>.Zero) & Vector256.GreaterThan(t * t * vlen2, eps2) &
+                      Vector256.LessThanOrEqual(t, vtMax)).ExtractMostSignificantBits();
+        int front = mask & (int)Vector256.GreaterThan(det, Vector256<double>.Zero).ExtractMostSignificantBits();
+        if (front == 0)
+        {
+          onlyBack |= mask != 0;
+          continue;
+        }
+        int lane = BitOperations.TrailingZeroCount(front);
+        hit = new MeshHit { T = t.GetElement(lane), Triangle = ids[TriangleBlock.Width * block + lane], U = u.GetElement(lane), V = v.GetElement(lane), Front = true };
+        onlyBack = false;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  readonly record struct NodeSpan(int Node, double Near, double Far);
+}
