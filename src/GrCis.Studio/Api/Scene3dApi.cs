@@ -18,11 +18,12 @@ internal static class Scene3dApi
   public const int MaxPoints = 250_000;
 
   /// <summary>
-  /// The primary rays' hits of the render on show: the image's size, the grid's step in pixels, the rays cast, and per
-  /// hit its world position (x, y, z, …, GrCis's world), its pixel's linear colour (r, g, b, …) and the index of the
-  /// part it hit in the tessellation's parts (−1: a solid the view does not show).
+  /// The primary rays' hits of the render on show: the image's size, the grid's step in pixels, the rays cast, the
+  /// render's gamma (its image shows a linear value v as v^(1/gamma)), and per hit its world position (x, y, z, …,
+  /// GrCis's world), its pixel's linear colour (r, g, b, …) and the index of the part it hit in the tessellation's parts
+  /// (−1: a solid the view does not show).
   /// </summary>
-  internal sealed record PointsJson(int Width, int Height, int Step, int Rays, int Count, float[] Positions, float[] Colors, int[] Parts);
+  internal sealed record PointsJson(int Width, int Height, int Step, int Rays, double Gamma, int Count, float[] Positions, float[] Colors, int[] Parts);
 
   public static void MapScene3dApi(this IEndpointRouteBuilder api)
   {
@@ -63,6 +64,6 @@ internal static class Scene3dApi
       (colors[3 * i], colors[3 * i + 1], colors[3 * i + 2]) = ((float)p.Color.X, (float)p.Color.Y, (float)p.Color.Z);
       indices[i] = parts.IndexOf(p.Solid) ?? -1;
     }
-    return TypedResults.Ok(new PointsJson(job.Width, job.Height, cloud.Step, cloud.Rays, n, positions, colors, indices));
+    return TypedResults.Ok(new PointsJson(job.Width, job.Height, cloud.Step, cloud.Rays, job.Settings.Gamma, n, positions, colors, indices));
   }
 }
