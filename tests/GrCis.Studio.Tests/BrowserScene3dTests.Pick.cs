@@ -55,6 +55,7 @@ public sealed partial class BrowserScene3dTests
     IWebElement label = browser.FindElement(By.Id("hover3d"));
     Until(browser, () => label.Displayed && label.Text.StartsWith("Sphere 1", StringComparison.Ordinal), "the hovered ball's name");
     output.WriteLine(label.Text.Replace('\n', '|'));
+    Shot(browser, "studio-3d-hover.png", docs: true);
     Assert.Equal(["Sphere 1", "Sphere", "colour (0.00, 0.20, 0.10)"], label.Text.Split('\n'));
     // Beside the pointer, not under it.
     double[] box = ((IReadOnlyCollection<object>)Js(browser, "const r = document.getElementById('hover3d').getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom];")!)
@@ -69,6 +70,7 @@ public sealed partial class BrowserScene3dTests
     Assert.Equal("Sphere 1", glass);
     ClickPixel(browser, 150, 130);
     Until(browser, () => PaneData(browser, "highlight") == glass, "the glass ball tinted");
+    Shot(browser, "studio-3d-highlight.png");
     Assert.True(browser.FindElement(By.Id("probeMark")).Displayed);
     ClickPixel(browser, 2, 2);
     Until(browser, () => PaneData(browser, "highlight") == "", "no part tinted for the sky");
@@ -88,6 +90,7 @@ public sealed partial class BrowserScene3dTests
     To3d(browser, x, y).Click().Perform();
     Until(browser, () => PaneData(browser, "pickVisible") != null, "the pick's answer");
     Assert.Equal(("Sphere 2", "true"), (PaneData(browser, "pickPart"), PaneData(browser, "pickVisible")));
+    Shot(browser, "studio-3d-pick.png");
     // The pixel probed is one whose primary ray hits that ball; the image and the rays show it, as for a click on the image.
     int[] pixel = PaneData(browser, "pickPixel")!.Split(',').Select(int.Parse).ToArray();
     using HttpClient client = StudioFixture.ClientOf(studio.Server);
@@ -139,6 +142,17 @@ public sealed partial class BrowserScene3dTests
     Open3d(browser);
     Assert.True((bool)Js(browser, "return document.querySelector('#layers3d [data-layer=points]').checked;")!);
     Until(browser, () => PaneData(browser, "points") == count.ToString(System.Globalization.CultureInfo.InvariantCulture), "the points again after a reload");
+
+    // A new render's points replace the old ones in the open pane. Optics' lens is the intersection of two large balls:
+    // the surfaces show the balls, the points the thin lens.
+    browser.FindElement(By.CssSelector("#layers3d [data-layer=surfaces]")).Click();
+    string before3d = PaneData(browser, "scene")!;
+    Render(browser, "Optics.cs", 320, 240);
+    Until(browser, () => PaneData(browser, "scene") != before3d, "Optics in the open pane");
+    int optics = client.GetFromJsonAsync<JsonElement>("/api/scene/points?max=40000").GetAwaiter().GetResult().GetProperty("count").GetInt32();
+    Until(browser, () => PaneData(browser, "points") == optics.ToString(System.Globalization.CultureInfo.InvariantCulture), $"Optics' {optics} points");
+    System.Threading.Thread.Sleep(200);
+    Shot(browser, "studio-3d-points.png", docs: true);
     browser.FindElement(By.Id("show3d")).Click();
     Assert.Equal(0, Pane3d(browser, "m.memory()").GetProperty("geometries").GetInt32());
     Js(browser, "localStorage.removeItem('grcis-3d-layers');");

@@ -10,7 +10,7 @@ export async function probe(p) {
   try {
     const r = await (await api(`probe?x=${p.x}&y=${p.y}`)).json();
     const f = v => v ? "(" + v.map(c => c.toFixed(3)).join(", ") + ")" : "-";
-    const lines = [`pixel [${r.x}, ${r.y}] ${f(r.pixel)}, hash ${r.hash}${r.partName ? `, ${r.partName}` : ""}`];
+    const lines = [`pixel [${r.x}, ${r.y}] ${f(r.pixel)}, hash ${r.hash}${r.partName ? `, hits ${r.partName}` : ""}`];
     const walk = (n, indent) => {
       lines.push(`${indent}${n.kind} ${n.solid ?? (n.blocked ? "blocked" : "miss")} at ${f(n.hit)}`);
       for (const c of n.children) walk(c, indent + "  ");

@@ -194,23 +194,29 @@ export class View3d {
     return { mesh: hit.object, point: [hit.point.x, hit.point.y, -hit.point.z] };
   }
 
-  // Tints part index `part` of the surfaces layer (a copy of its material, so solids sharing it stay as they are); the
-  // part tinted before is restored. null: none. Returns the mesh tinted, or null.
+  // Marks part index `part` of the surfaces layer: tinted (a copy of its material, so solids sharing it stay as they are)
+  // and its triangles' edges drawn over it, orange, whatever its own colour. The part marked before is restored. null:
+  // none. Returns the mesh marked, or null.
   highlight(part) {
     const h = this.highlighted;
     if (h && h.mesh.userData.part === part) return h.mesh;
     if (h) {
       h.mesh.material.dispose();
       h.mesh.material = h.original;
+      h.mesh.remove(h.edges);
+      h.edges.material.dispose();
       this.highlighted = null;
     }
     const mesh = part == null ? null : this.layers.surfaces?.children.find(m => m.userData.part === part);
     if (!mesh) return null;
-    const tinted = mesh.material.clone();
-    if (tinted.emissive) tinted.emissive.setRGB(0.55, 0.3, 0);
-    else tinted.color.lerp(new THREE.Color(1, 0.55, 0), 0.5);
+    const tinted = mesh.material.clone(), orange = new THREE.Color(1, 0.55, 0);
+    if (tinted.emissive) tinted.emissive.copy(orange).multiplyScalar(0.35);
+    else tinted.color.lerp(orange, 0.35);
     if (tinted.transparent) tinted.opacity = Math.max(tinted.opacity, 0.6);
-    this.highlighted = { mesh, original: mesh.material };
+    // The edges share the part's geometry (nothing more on the GPU but the wireframe's index).
+    const edges = new THREE.Mesh(mesh.geometry, new THREE.MeshBasicMaterial({ color: orange, wireframe: true, transparent: true, opacity: 0.45 }));
+    mesh.add(edges);
+    this.highlighted = { mesh, original: mesh.material, edges };
     mesh.material = tinted;
     return mesh;
   }
