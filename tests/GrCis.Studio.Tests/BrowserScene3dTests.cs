@@ -32,11 +32,14 @@ public sealed partial class BrowserScene3dTests(ScriptsStudioFixture studio, ITe
   /// <summary>Renders the script <paramref name="file"/> at the size typed in (so it wins over the script's), one sample per pixel.</summary>
   void Render(ChromeDriver browser, string file, int width, int height)
   {
-    Js(browser, """
+    // Chosen as the list's change event chooses it, and waited for until the script's own values are in the fields (a
+    // fixed pause lost that race on a loaded machine): the typed ones then win.
+    ((IJavaScriptExecutor)browser).ExecuteAsyncScript("""
+      const done = arguments[arguments.length - 1];
       const s = document.getElementById('scene'), o = [...s.options].find(o => o.textContent === arguments[0]);
-      s.value = o.value; s.dispatchEvent(new Event('change'));
+      s.value = o.value;
+      import('./settings.js').then(m => m.sceneChanged(new Event('change'))).then(() => done());
       """, file);
-    System.Threading.Thread.Sleep(300);   // the script's own values arrive first; the typed ones win
     Js(browser, """
       document.getElementById('algorithm').value = '';
       for (const [id, v] of [['width', arguments[0]], ['height', arguments[1]], ['spp', 1]]) {

@@ -12,9 +12,10 @@ namespace GrCis.Interactive;
 
 /// <summary>
 /// The points where a render's primary rays hit (GrCis's 048 visualiser's hit point cloud): one ray through the centre of
-/// every <see cref="Step"/>-th pixel in each direction, traced as the pixel probe traces one (<see cref="PixelProbe"/>: the
-/// job's own image function on a worker of its own, seeded as the renderer seeds the pixel), so the points lie on what the
-/// render saw, a CSG result or a script's own solid included. Deterministic: the same job gives the same points.
+/// every <see cref="Step"/>-th pixel in each direction, traced as the pixel probe traces one (<see cref="PixelProbe"/>: on
+/// a worker of its own over the job's scene and queries, seeded as the renderer seeds the pixel, the primary ray's hit
+/// reported to an observer), so the points lie on what the render saw, a CSG result or a script's own solid included.
+/// Deterministic: the same job gives the same points.
 /// </summary>
 public sealed class HitPointCloud
 {
@@ -35,7 +36,8 @@ public sealed class HitPointCloud
   public IReadOnlyList<HitPoint> Points { get; }
 
   /// <summary>Casts at most <paramref name="maxRays"/> primary rays of <paramref name="job"/> on an even grid of its pixels.</summary>
-  /// <param name="rendered">The job's image, whose pixels colour the points; null = each ray's own sample colour.</param>
+  /// <param name="rendered">The job's image, whose pixels colour the points; null = each ray's own sample colour (for a library
+  /// image function, ray casting's: the surface lit, without shadows or reflections).</param>
   public static HitPointCloud Cast(RenderJob job, int maxRays, FloatImage? rendered = null)
   {
     ArgumentNullException.ThrowIfNull(job);
@@ -51,8 +53,7 @@ public sealed class HitPointCloud
     var points = new List<HitPoint>();
     int rays = 0;
     var observer = new PrimaryHit();
-    // Only a RayCasting reports its rays; another image function's first hits are those of ray casting (as ExtraViews says).
-    IImageFunction tracer = job.ImageFunction is RayCasting ? job.ImageFunction : new RayCasting();
+    IImageFunction tracer = PrimaryTracer(job.ImageFunction);
     using (WorkerContext.Begin(null, job.Scene, tracer, job.Renderer, job.Options))
     using (new RenderContext { Observer = observer }.Enter())
     {
@@ -78,6 +79,24 @@ public sealed class HitPointCloud
         }
     }
     return new HitPointCloud(step, rays, points);
+  }
+
+  /// <summary>
+  /// What traces the primary rays. The library's image functions all take their primary ray from the camera and its
+  /// first hit from the same query, so plain ray casting with the function's settings finds the same hits without
+  /// shading the reflections, refractions and paths behind them (a glass ball's ray tree costs 10× its primary ray). A
+  /// script's own subclass may trace otherwise and is asked itself; a function that is not a RayCasting reports no
+  /// rays, and ray casting stands in for it (as <see cref="ExtraViews"/> does).
+  /// </summary>
+  static IImageFunction PrimaryTracer(IImageFunction function)
+  {
+    if (function is not RayCasting own)
+      return new RayCasting();
+    if (own.GetType().Assembly != typeof(RayCasting).Assembly)
+      return function;
+    var plain = new RayCasting();
+    plain.CopySettingsFrom(own);
+    return plain;
   }
 
   static int Across(int size, int step) => (size - step / 2 + step - 1) / step;
