@@ -117,6 +117,41 @@ public sealed class Scene3dPickApiTests(StudioFixture studio) : IClassFixture<St
     Assert.Equal(rgb, Floats(again, "colors"));
   }
 
+  [Fact]
+  public async Task A_csg_differences_points_lie_on_the_result_not_on_its_operands_whole()
+  {
+    // A ball bitten at its front by a smaller one: the camera looks into the bite.
+    string path = System.IO.Path.Combine(studio.ScriptsFolder, "Bitten.cs");
+    System.IO.File.WriteAllText(path, """
+      CSGInnerNode root = new CSGInnerNode(SetOperation.Union);
+      root.SetAttribute(PropertyName.REFLECTANCE_MODEL, new PhongModel());
+      root.SetAttribute(PropertyName.MATERIAL, new PhongMaterial(new double[] { 0.5, 0.5, 0.5 }, 0.1, 0.6, 0.3, 16));
+      scene.Intersectable = root;
+      scene.BackgroundColor = new double[] { 0.0, 0.0, 0.0 };
+      scene.Camera = new StaticCamera(new Vector3d(0.0, 0.0, -6.0), new Vector3d(0.0, 0.0, 1.0), 40.0);
+      scene.Sources = new System.Collections.Generic.LinkedList<ILightSource>();
+      scene.Sources.Add(new PointLightSource(new Vector3d(-2.0, 4.0, -5.0), 1.0));
+      CSGInnerNode bitten = new CSGInnerNode(SetOperation.Difference);
+      bitten.InsertChild(new Sphere(), Matrix4d.Identity);
+      bitten.InsertChild(new Sphere(), Matrix4d.Scale(0.6) * Matrix4d.CreateTranslation(0.0, 0.0, -0.9));
+      root.InsertChild(bitten, Matrix4d.Identity);
+      """);
+    string name;
+    using (HttpResponseMessage added = await studio.Client.PostAsJsonAsync("/api/scenes/add", new { path }))
+      name = (await added.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("name").GetString()!;
+    await studio.RenderAndWait(new { scene = name, settings = new { width = 48, height = 48 } });
+    JsonElement points = await studio.Client.GetFromJsonAsync<JsonElement>("/api/scene/points");
+
+    float[] xyz = Floats(points, "positions");
+    int[] part = points.GetProperty("parts").EnumerateArray().Select(e => e.GetInt32()).ToArray();
+    double Distance(int i, double cz) => Math.Sqrt(xyz[3 * i] * xyz[3 * i] + xyz[3 * i + 1] * xyz[3 * i + 1] + (xyz[3 * i + 2] - cz) * (xyz[3 * i + 2] - cz));
+    int[] onBig = Enumerable.Range(0, part.Length).Where(i => part[i] == 0).ToArray(), inBite = Enumerable.Range(0, part.Length).Where(i => part[i] == 1).ToArray();
+    Assert.True(onBig.Length > 50 && inBite.Length > 50, $"{onBig.Length} points on the ball, {inBite.Length} in the bite");
+    // The ball's surface where the bite is not, and the bite's surface inside the ball: the difference, not its operands.
+    Assert.All(onBig, i => Assert.True(Math.Abs(Distance(i, 0) - 1) < 1e-4 && Distance(i, -0.9) > 0.6 - 1e-4, $"point {i}"));
+    Assert.All(inBite, i => Assert.True(Math.Abs(Distance(i, -0.9) - 0.6) < 1e-4 && Distance(i, 0) < 1 + 1e-4, $"point {i}"));
+  }
+
   static float[] Floats(JsonElement e, string name) => e.GetProperty(name).EnumerateArray().Select(v => v.GetSingle()).ToArray();
 
   [Fact]
