@@ -135,11 +135,11 @@ export function probed() {
 
 // The pane closed: every layer's GPU memory given back; the scene is fetched again when it opens.
 function close() {
-  pane.picker?.hide();
-  $("pick3d").hidden = true;
   pane.view?.clear();
   pane.key = pane.json = pane.pointsKey = null;
   pane.asked++;
+  pane.picker?.hide();
+  $("pick3d").hidden = true;
 }
 
 // What the renderer holds on the GPU now (null before the view is made), what each layer holds, and the canvas as PNG.
