@@ -348,13 +348,6 @@ public sealed partial class DemoController : IDisposable
     }
   }
 
-  /// <summary>The pixel read-out for the last render.</summary>
-  public ProbeResult Probe(int x, int y)
-  {
-    RenderJob job = LastJob ?? throw new InvalidOperationException("Render something first.");
-    return PixelProbe.Probe(job, x, y, LastResult?.Job == job ? LastResult.Image : null);
-  }
-
   /// <summary>Depth, normal and ray maps of the last render (after it finished).</summary>
   public ExtraViews ComputeExtraViews(CancellationToken cancel = default)
   {

@@ -51,8 +51,8 @@ internal static class SceneView3d
     // small solids around it, becomes a box).
     var unique = new List<TessellatedPart>();
     var seen = new HashSet<Vector3d[]>(ReferenceEqualityComparer.Instance);
-    foreach (TessellatedPart part in scene.Parts)
-      if (part.TriangleCount > 0 && seen.Add(part.Positions))
+    foreach (TessellatedPart part in Shown(scene))
+      if (seen.Add(part.Positions))
         unique.Add(part);
     var boxed = new HashSet<Vector3d[]>(ReferenceEqualityComparer.Instance);
     long sent = 0;
@@ -64,10 +64,8 @@ internal static class SceneView3d
     var shapes = new List<ShapeJson>();
     var shapeOf = new Dictionary<Vector3d[], int>(ReferenceEqualityComparer.Instance);
     var parts = new List<PartJson>();
-    foreach (TessellatedPart part in scene.Parts)
+    foreach (TessellatedPart part in Shown(scene))
     {
-      if (part.TriangleCount == 0)
-        continue;
       bool box = boxed.Contains(part.Positions);
       if (!shapeOf.TryGetValue(part.Positions, out int shape))
       {
@@ -84,6 +82,14 @@ internal static class SceneView3d
       ? new CameraJson(V(c.Position), V(c.Direction), V(c.Up), c.VerticalFov, c.AspectRatio, c.Exact)
       : null;
     return new SceneJson(name, settings.Width, settings.Height, shapes.ToArray(), parts.ToArray(), lights, camera, notes);
+  }
+
+  /// <summary>The parts the view is sent, in the order of <see cref="SceneJson.Parts"/> (those with triangles): <see cref="SceneParts"/> indexes the same list.</summary>
+  internal static IEnumerable<TessellatedPart> Shown(SceneTessellation scene)
+  {
+    foreach (TessellatedPart part in scene.Parts)
+      if (part.TriangleCount > 0)
+        yield return part;
   }
 
   // The box around a shape's vertices (in its local space), as 12 triangles.

@@ -28,7 +28,7 @@ internal static class StudioSceneFiles
     RenderJob? job = s.Controller.LastJob;
     if (job == null)
       return null;
-    return (Tessellate(job.Scene, job), job.Settings, job.SceneName ?? "scene");
+    return (s.StillScene.For(job).Tessellation, job.Settings, job.SceneName ?? "scene");
   }
 
   /// <summary>Frame <paramref name="k"/>'s scene of the animation on show, its run's settings and a name; null when there is none or no such frame.</summary>
@@ -43,6 +43,7 @@ internal static class StudioSceneFiles
     return (Tessellate(scene, run.Job), run.Job.Settings, $"{run.Job.SceneName ?? "scene"} frame {k}");
   }
 
-  static SceneTessellation Tessellate(IRayScene scene, RenderJob job) =>
+  /// <summary>The scene as triangles at <paramref name="job"/>'s image size (its camera's aspect ratio).</summary>
+  internal static SceneTessellation Tessellate(IRayScene scene, RenderJob job) =>
     SceneTessellator.Tessellate(scene, new TessellationOptions { Width = job.Settings.Width, Height = job.Settings.Height });
 }

@@ -356,6 +356,9 @@ public sealed class StudioSession : IDisposable
     return found;
   }
 
+  /// <summary>The last still render's scene as triangles and its parts, made once per render (the 3D view, the probe, the hit points).</summary>
+  internal StillScene StillScene { get; } = new();
+
   /// <summary>The final linear image of the last finished render, or null.</summary>
   public FloatImage? FinalImage() => Controller.LastResult?.Image;
 

@@ -18,7 +18,7 @@ namespace GrCis.Studio.Tests;
 /// layers' checkboxes remembered across a reload; and "View from camera" lining the spheres up with the render.
 /// </summary>
 [Collection(BrowserCollection.Name)]
-public sealed class BrowserScene3dTests(ScriptsStudioFixture studio, ITestOutputHelper output) : IClassFixture<ScriptsStudioFixture>
+public sealed partial class BrowserScene3dTests(ScriptsStudioFixture studio, ITestOutputHelper output) : IClassFixture<ScriptsStudioFixture>
 {
   ChromeDriver Load()
   {
@@ -32,11 +32,14 @@ public sealed class BrowserScene3dTests(ScriptsStudioFixture studio, ITestOutput
   /// <summary>Renders the script <paramref name="file"/> at the size typed in (so it wins over the script's), one sample per pixel.</summary>
   void Render(ChromeDriver browser, string file, int width, int height)
   {
-    Js(browser, """
+    // Chosen as the list's change event chooses it, and waited for until the script's own values are in the fields (a
+    // fixed pause lost that race on a loaded machine): the typed ones then win.
+    ((IJavaScriptExecutor)browser).ExecuteAsyncScript("""
+      const done = arguments[arguments.length - 1];
       const s = document.getElementById('scene'), o = [...s.options].find(o => o.textContent === arguments[0]);
-      s.value = o.value; s.dispatchEvent(new Event('change'));
+      s.value = o.value;
+      import('./settings.js').then(m => m.sceneChanged(new Event('change'))).then(() => done());
       """, file);
-    System.Threading.Thread.Sleep(300);   // the script's own values arrive first; the typed ones win
     Js(browser, """
       document.getElementById('algorithm').value = '';
       for (const [id, v] of [['width', arguments[0]], ['height', arguments[1]], ['spp', 1]]) {
@@ -56,7 +59,8 @@ public sealed class BrowserScene3dTests(ScriptsStudioFixture studio, ITestOutput
     browser.FindElement(By.Id("show3d")).Click();
     Until(browser, () => Js(browser, "return document.getElementById('rays3dPane').dataset.surfaces;") != null, "the scene in 3D");
     var data = (IReadOnlyDictionary<string, object>)Js(browser, "return Object.assign({}, document.getElementById('rays3dPane').dataset);")!;
-    return data.Where(d => d.Key != "scene").ToDictionary(d => d.Key, d => Convert.ToInt32(d.Value));
+    // The counts (the other attributes name the scene, the highlighted part, what a pick found).
+    return data.Where(d => int.TryParse(Convert.ToString(d.Value), out _)).ToDictionary(d => d.Key, d => Convert.ToInt32(d.Value));
   }
 
   [SkippableTheory]

@@ -112,5 +112,10 @@ public sealed class Scene3dApiTests(StudioFixture studio) : IClassFixture<Studio
     Assert.Equal("application/problem+json", answer.Content.Headers.ContentType?.MediaType);
     JsonElement problem = await answer.Content.ReadFromJsonAsync<JsonElement>();
     Assert.Equal("nothing rendered yet: render a scene, and its scene shows in 3D", problem.GetProperty("detail").GetString());
+    // And the points the render's rays hit.
+    using HttpResponseMessage points = await client.GetAsync("/api/scene/points");
+    Assert.Equal(HttpStatusCode.NotFound, points.StatusCode);
+    Assert.Equal("nothing rendered yet: render a scene, and the points its rays hit show in 3D",
+                 (await points.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("detail").GetString());
   }
 }

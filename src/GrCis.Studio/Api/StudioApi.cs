@@ -53,8 +53,8 @@ internal static class StudioApi
     // The scene on show for Blender or any 3D viewer: what grcis export writes (docs/export.md).
     api.MapGet("/scene.glb", Results<FileContentHttpResult, ProblemHttpResult> (StudioSession s) =>
       StudioSceneFiles.StillGlb(s) is byte[] glb ? TypedResults.File(glb, "model/gltf-binary", "scene.glb") : Problems.NotFound("render something first"));
-    // The same scene for the page's 3D view: triangles, lights and camera as JSON (SceneView3d); ?frame=k an animation frame's.
-    api.MapGet("/scene/tessellation", Tessellation);
+    // The same scene for the page's 3D view, and the points its rays hit (Scene3dApi).
+    api.MapScene3dApi();
     api.MapGet("/probe", Probe);
     api.MapGet("/source", Source);
     api.MapPut("/source", SaveSource);
@@ -95,17 +95,6 @@ internal static class StudioApi
     s.SceneBoxes() is { } boxes
       ? TypedResults.Ok(boxes.Select(b => new BoxJson([b.Min.X, b.Min.Y, b.Min.Z], [b.Max.X, b.Max.Y, b.Max.Z])).ToArray())
       : Problems.NotFound("render something first");
-
-  static Results<Ok<SceneView3d.SceneJson>, ProblemHttpResult> Tessellation(StudioSession s, int? frame)
-  {
-    if (frame is int k)
-      return StudioSceneFiles.Frame(s, k) is var (t, settings, name)
-        ? TypedResults.Ok(SceneView3d.Of(t, settings, name))
-        : Problems.NotFound($"no frame {k} in the animation on show");
-    return StudioSceneFiles.Still(s) is var (still, stillSettings, stillName)
-      ? TypedResults.Ok(SceneView3d.Of(still, stillSettings, stillName))
-      : Problems.NotFound("nothing rendered yet: render a scene, and its scene shows in 3D");
-  }
 
   static Results<FileContentHttpResult, NotFound> Image(StudioSession s, HttpResponse response)
   {
@@ -272,16 +261,24 @@ internal static class StudioApi
     return false;
   }
 
-  /// <summary>One pixel's read-out: its colour, the first sample's, the pixel's hash and its ray tree.</summary>
-  internal sealed record ProbeJson(int X, int Y, double[] Pixel, double[] Sample, long Hash, RayJson? Rays);
+  /// <summary>
+  /// One pixel's read-out: its colour, the first sample's, the pixel's hash and its ray tree, and the part of the 3D view
+  /// its primary ray hit (its index in <c>/scene/tessellation</c>'s parts and its name, e.g. <c>Sphere 2</c>; null for the
+  /// background or a solid the view does not show).
+  /// </summary>
+  internal sealed record ProbeJson(int X, int Y, double[] Pixel, double[] Sample, long Hash, RayJson? Rays, int? Part, string? PartName);
 
-  /// <summary>One ray of the tree: where it starts and goes, what it hit (and the normal there), and the rays it spawned.</summary>
-  internal sealed record RayJson(string Kind, int Depth, double[] Origin, double[] Direction, double[]? Hit, double[]? Normal, string? Solid, bool Blocked,
-                                 RayJson[] Children);
+  /// <summary>
+  /// One ray of the tree: where it starts and goes, what it hit (the solid's class, the normal there, the index of the 3D
+  /// view's part), and the rays it spawned.
+  /// </summary>
+  internal sealed record RayJson(string Kind, int Depth, double[] Origin, double[] Direction, double[]? Hit, double[]? Normal, string? Solid, int? Part,
+                                 bool Blocked, RayJson[] Children);
 
   static Results<Ok<ProbeJson>, ProblemHttpResult> Probe(StudioSession s, int x, int y)
   {
     ProbeResult probe;
+    RenderJob? job = s.Controller.LastJob;
     try
     {
       probe = s.Controller.Probe(x, y);
@@ -290,13 +287,17 @@ internal static class StudioApi
     {
       return Problems.BadRequest(e.Message);
     }
-    return TypedResults.Ok(new ProbeJson(probe.X, probe.Y, probe.PixelColor, probe.SampleColor, probe.Hash, probe.Rays == null ? null : Ray(probe.Rays)));
+    // The parts of the scene probed (a render started meanwhile has other nodes: none named then).
+    SceneParts? parts = job != null && ReferenceEquals(job, s.Controller.LastJob) ? s.StillScene.For(job).Parts : null;
+    int? part = probe.Rays is { Kind: Rendering.Observation.RayKind.Primary } primary ? parts?.IndexOf(primary.Solid) : null;
+    return TypedResults.Ok(new ProbeJson(probe.X, probe.Y, probe.PixelColor, probe.SampleColor, probe.Hash, probe.Rays == null ? null : Ray(probe.Rays, parts),
+                                         part, part is int i ? parts!.NameOf(i) : null));
   }
 
-  static RayJson Ray(RayNode n) => new(
+  static RayJson Ray(RayNode n, SceneParts? parts) => new(
     n.Kind.ToString(), n.Depth, [n.Origin.X, n.Origin.Y, n.Origin.Z], [n.Direction.X, n.Direction.Y, n.Direction.Z],
-    n.Hit is { } h ? [h.X, h.Y, h.Z] : null, n.Normal is { } m ? [m.X, m.Y, m.Z] : null, n.Solid?.GetType().Name, n.Blocked,
-    n.Children.Select(Ray).ToArray());
+    n.Hit is { } h ? [h.X, h.Y, h.Z] : null, n.Normal is { } m ? [m.X, m.Y, m.Z] : null, n.Solid?.GetType().Name, parts?.IndexOf(n.Solid), n.Blocked,
+    n.Children.Select(c => Ray(c, parts)).ToArray());
 
   /// <summary>Whether the controller's watcher follows <paramref name="entry"/>'s file (the selected script's).</summary>
   static bool IsWatched(DemoController controller, SceneEntry entry) =>

@@ -21,7 +21,7 @@ initView(probe);
 initHistory();
 initSettings();
 initEditor();
-initPane3d();
+initPane3d(probe);
 initAnimation();
 $("stop").addEventListener("click", () => {
   // A save being compiled ends too: it will not say that it compiles.

@@ -1,21 +1,27 @@
-// The 3D pane: the scene on show (its solids, lights and camera, api/scene/tessellation), the prepared scene's boxes and the
-// probed pixel's rays, in one orbitable view (view3d.js) with a checkbox per layer (remembered in localStorage) and "View
-// from camera". The scene is fetched once per render or animation frame on show; a probe replaces only the rays. What
-// each layer holds is written on the pane as data attributes (data-surfaces, data-lights, …), for a reader or a test.
+// The 3D pane: the scene on show (its solids, lights and camera, api/scene/tessellation), the prepared scene's boxes, the
+// probed pixel's rays and the render's hit points (api/scene/points), in one orbitable view (view3d.js) with a checkbox
+// per layer (remembered in localStorage) and "View from camera"; hover and pick (pick3d.js). The scene is fetched once per
+// render or animation frame on show, the points once per render while their layer is on; a probe replaces only the rays
+// and the highlighted part (the one its primary ray hit). What each layer holds is written on the pane as data attributes
+// (data-surfaces, data-lights, data-points, data-highlight, …), for a reader or a test.
 import { $, state } from "./state.js";
 import { api, problemText } from "./api.js";
 import { showError } from "./messages.js";
 import { View3d } from "./view3d.js";
 import * as Scene3d from "./scene3d.js";
 import { rays } from "./rays3d.js";
+import { Picker } from "./pick3d.js";
 
-const layerNames = ["surfaces", "boxes", "lights", "camera", "rays"];
-const defaults = { surfaces: true, boxes: false, lights: true, camera: true, rays: true };
+const layerNames = ["surfaces", "boxes", "lights", "camera", "rays", "points"];
+const defaults = { surfaces: true, boxes: false, lights: true, camera: true, rays: true, points: false };
+// The points asked for: a 200 × 200 grid's worth, whatever the render's size.
+const maxPoints = 40000;
 const storeKey = "grcis-3d-layers";
 
-// The pane's one state: the view (made when first opened), the scene shown (its key and JSON), its size, and the number
-// of the newest request (an older answer arriving late is dropped).
-const pane = { view: null, key: null, json: null, size: 10, asked: 0 };
+// The pane's one state: the view (made when first opened) and its picker, the scene shown (its key and JSON), the scene
+// whose points are shown, its size, the number of the newest request (an older answer arriving late is dropped), and how
+// to probe a pixel (the image's click, given to initPane3d).
+const pane = { view: null, picker: null, key: null, json: null, pointsKey: null, size: 10, asked: 0, probe: null };
 
 function storedLayers() {
   try {
@@ -40,6 +46,7 @@ function view() {
     pane.view.onCamera = on => $("fromCamera").setAttribute("aria-pressed", String(on));
     const shown = storedLayers();
     for (const name of layerNames) pane.view.visible[name] = shown[name];
+    pane.picker = new Picker(pane.view, $("rays3dPane"), () => pane.json, p => pane.probe(p));
   }
   return pane.view;
 }
@@ -52,11 +59,31 @@ function writeCounts() {
   p.dataset.lights = c.lights;
   p.dataset.cameras = c.cameras;
   p.dataset.raySegments = c.raySegments;
+  p.dataset.points = c.points;
+  p.dataset.highlight = pane.view.highlighted?.mesh.userData.name ?? "";
   p.dataset.scene = pane.key ?? "";
 }
 
+// The probed pixel's rays, and the part its primary ray hit tinted (the previous probe's restored).
 function showRays() {
   pane.view.setLayer("rays", rays(state.probe?.rays ?? null, pane.size));
+  pane.view.highlight(state.probe?.part ?? null);
+}
+
+// The render's hit points, once per render while their layer is on; an animation frame has none (they are a still
+// render's: the layer is empty then).
+async function showPoints(want, asked) {
+  if (!pane.view.visible.points || pane.pointsKey === want.key) return;
+  let group = null;
+  if (!want.query) {
+    const r = await api(`scene/points?max=${maxPoints}`);
+    if (!r.ok) throw new Error(await problemText(r));
+    const json = await r.json();
+    if (asked !== pane.asked) return;
+    group = Scene3d.points(json);
+  }
+  pane.view.setLayer("points", group);
+  pane.pointsKey = want.key;
 }
 
 // Fetches the scene on show (unless it is the one shown) and its boxes, and draws every layer.
@@ -87,6 +114,8 @@ export async function refresh() {
       $("fromCamera").disabled = !json.camera;
     }
     if (asked !== pane.asked) return;
+    await showPoints(want, asked);
+    if (asked !== pane.asked) return;
     showRays();
     writeCounts();
     if (v.fromCamera) v.viewFromCamera(pane.json.width, pane.json.height);
@@ -107,8 +136,10 @@ export function probed() {
 // The pane closed: every layer's GPU memory given back; the scene is fetched again when it opens.
 function close() {
   pane.view?.clear();
-  pane.key = pane.json = null;
+  pane.key = pane.json = pane.pointsKey = null;
   pane.asked++;
+  pane.picker?.hide();
+  $("pick3d").hidden = true;
 }
 
 // What the renderer holds on the GPU now (null before the view is made), what each layer holds, and the canvas as PNG.
@@ -117,7 +148,20 @@ export const counts = () => pane.view?.counts() ?? null;
 export const snapshot = () => pane.view?.snapshot() ?? null;
 export const visibleLayers = () => layerNames.filter(n => pane.view?.layers[n]?.visible ?? false);
 
-export function initPane3d() {
+// Where part `name` (e.g. "Sphere 2") is drawn now: the client point of its middle, or null.
+export function screenOf(name) {
+  const mesh = pane.view?.layers.surfaces?.children.find(m => m.userData.name === name);
+  if (!mesh) return null;
+  mesh.geometry.boundingSphere ?? mesh.geometry.computeBoundingSphere();
+  return pane.view.clientOf(mesh.geometry.boundingSphere.center.clone().applyMatrix4(mesh.matrixWorld));
+}
+
+// Picks point (GrCis's world) of part index `part`, as a click on it there does.
+export const pickAt = (part, point) => pane.picker?.pick(part, point);
+
+// probe(pixel): probes a pixel of the render, as a click on the image does (a click on a surface uses it).
+export function initPane3d(probe) {
+  pane.probe = probe;
   $("show3d").addEventListener("click", async () => {
     const p = $("rays3dPane");
     p.hidden = !p.hidden;
@@ -134,6 +178,7 @@ export function initPane3d() {
       now[name] = box.checked;
       localStorage.setItem(storeKey, JSON.stringify(now));
       pane.view?.show(name, box.checked);
+      if (name === "points" && box.checked) refresh();
     });
   }
   $("fromCamera").addEventListener("click", () => {

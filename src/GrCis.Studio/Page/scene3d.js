@@ -39,25 +39,43 @@ export function surfaces(json) {
         flatShading: flat, transparent: box, opacity: box ? 0.35 : 1, depthWrite: !box }));
     return materials.get(key);
   };
-  for (const p of json.parts) {
+  // What hover and pick read of a part: its index in json.parts (the probe's numbering), name, class, operation, colour.
+  const about = (p, index, kind) => ({ part: index, name: p.name, type: p.type, kind, csg: p.csg, color: p.color, emission: p.emission });
+  json.parts.forEach((p, index) => {
     const box = p.kind === "BoundingBox";
     if (p.emission) {
       const mesh = new THREE.Mesh(geometries[p.shape], new THREE.MeshBasicMaterial({ color: lightColour(p.emission), side: THREE.DoubleSide }));
       mesh.name = `${p.name} (emissive)`;
-      mesh.userData = { type: p.type, kind: "Emitter", csg: p.csg };
+      mesh.userData = about(p, index, "Emitter");
       mesh.matrixAutoUpdate = false;
       mesh.matrix.fromArray(p.matrix);
       group.add(mesh);
-      continue;
+      return;
     }
     // Corners shared by faces at right angles (cubes, boxes) need flat shading; curved solids are smooth.
     const mesh = new THREE.Mesh(geometries[p.shape], material(p.color, box || p.type === "Cube", box));
     mesh.name = p.csg ? `${p.name} (${p.csg} operand)` : box ? `${p.name} (its box)` : p.name;
-    mesh.userData = { type: p.type, kind: p.kind, csg: p.csg };
+    mesh.userData = about(p, index, p.kind);
     mesh.matrixAutoUpdate = false;
     mesh.matrix.fromArray(p.matrix);
     group.add(mesh);
-  }
+  });
+  return group;
+}
+
+// The render's primary-ray hits (api/scene/points) as dots of their pixels' colours, a few screen pixels wide whatever
+// their distance, so a CSG result or a script's own solid shows its real shape. The group's userData.points counts them.
+export function points(json) {
+  const group = new THREE.Group();
+  group.name = "points";
+  group.userData.points = json.count;
+  if (json.count === 0) return group;
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute("position", new THREE.Float32BufferAttribute(json.positions, 3));
+  // The colours the render's image shows (its gamma applied; three.js shows them as given); a light's pixel may exceed 1.
+  const shown = c => Math.pow(Math.min(1, Math.max(0, c)), 1 / (json.gamma || 1));
+  geometry.setAttribute("color", new THREE.Float32BufferAttribute(json.colors.map(shown), 3));
+  group.add(new THREE.Points(geometry, new THREE.PointsMaterial({ size: 3, sizeAttenuation: false, vertexColors: true })));
   return group;
 }
 

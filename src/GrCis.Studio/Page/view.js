@@ -15,6 +15,13 @@ export function place() {
   const smooth = view.fitted && view.enlarge && view.zoom > 1;
   canvas.classList.toggle("smooth", smooth);
   $("canvasB").classList.toggle("smooth", smooth);
+  // The probed pixel's ring, at the pixel's middle.
+  const p = state.probe, mark = $("probeMark");
+  mark.hidden = !p || p.x >= canvas.width || p.y >= canvas.height;
+  if (p) {
+    mark.style.left = `${view.panX + (p.x + 0.5) * view.zoom}px`;
+    mark.style.top = `${view.panY + (p.y + 0.5) * view.zoom}px`;
+  }
 }
 
 export async function draw(response) {

@@ -1,4 +1,4 @@
-// The 3D view: a three.js renderer over named layers (groups of objects: surfaces, boxes, lights, camera, rays), an
+// The 3D view: a three.js renderer over named layers (groups of objects: surfaces, boxes, lights, camera, rays, points), an
 // orbit of our own (drag orbits, wheel zooms) and "view from the camera", which looks through the render's camera at the
 // render's size so the view lines up with the image. three.js is the vendored classic script (global THREE).
 //
@@ -35,7 +35,12 @@ export class View3d {
     // Told whether the view looks through the render's camera (the page marks its button pressed).
     this.onCamera = null;
     this.dragging = null;
-    canvas.addEventListener("pointerdown", e => { this.dragging = { x: e.clientX, y: e.clientY }; canvas.setPointerCapture(e.pointerId); });
+    // The part shown highlighted (the probed pixel's): its mesh and the material its tinted copy replaced.
+    this.highlighted = null;
+    canvas.addEventListener("pointerdown", e => {
+      this.dragging = { x: e.clientX, y: e.clientY, moved: false };
+      canvas.setPointerCapture(e.pointerId);
+    });
     canvas.addEventListener("pointerup", () => { this.dragging = null; });
     canvas.addEventListener("pointermove", e => this.drag(e));
     canvas.addEventListener("wheel", e => {
@@ -48,6 +53,9 @@ export class View3d {
 
   drag(e) {
     if (!this.dragging) return;
+    // A press that has not moved a few pixels is a click (a pick), not yet an orbit.
+    if (!this.dragging.moved && Math.abs(e.clientX - this.dragging.x) + Math.abs(e.clientY - this.dragging.y) < 4) return;
+    this.dragging.moved = true;
     this.leaveCamera();
     const o = this.orbit;
     o.theta -= (e.clientX - this.dragging.x) * 0.01;
@@ -59,6 +67,7 @@ export class View3d {
   // Replaces layer name's group (disposing the old one's GPU buffers), shown as its checkbox says.
   setLayer(name, group) {
     const old = this.layers[name];
+    if (name === "surfaces") this.highlight(null);
     if (old) {
       this.root.remove(old);
       dispose(old);
@@ -147,13 +156,79 @@ export class View3d {
     r.render(this.scene, cam);
   }
 
+  // Where the drawing is on screen (client pixels): the whole canvas, or through the render's camera the render's size
+  // fitted into it unstretched (object-fit: contain).
+  drawnBox() {
+    let { left, top, width, height } = this.canvas.getBoundingClientRect();
+    if (this.fromCamera) {
+      const { width: w, height: h } = this.fromCamera, scale = Math.min(width / w, height / h);
+      left += (width - w * scale) / 2;
+      top += (height - h * scale) / 2;
+      width = w * scale;
+      height = h * scale;
+    }
+    return { left, top, width, height };
+  }
+
+  // The client point (x, y) in three.js's device coordinates (−1 to 1 across the drawing).
+  deviceAt(x, y) {
+    const b = this.drawnBox();
+    return new THREE.Vector2((x - b.left) / b.width * 2 - 1, 1 - (y - b.top) / b.height * 2);
+  }
+
+  // The inverse: the client point where a point of three.js's world is drawn.
+  clientOf(world) {
+    const d = world.clone().project(this.camera), b = this.drawnBox();
+    return { x: b.left + (d.x + 1) / 2 * b.width, y: b.top + (1 - d.y) / 2 * b.height };
+  }
+
+  // The surface under the client point (x, y), from the surfaces layer only (none while it is hidden): its mesh and the
+  // point hit in GrCis's world; null when there is none.
+  surfaceAt(x, y) {
+    const layer = this.layers.surfaces;
+    if (!layer?.visible) return null;
+    const ray = new THREE.Raycaster();
+    ray.setFromCamera(this.deviceAt(x, y), this.camera);
+    const hit = ray.intersectObjects(layer.children, false)[0];
+    if (!hit) return null;
+    return { mesh: hit.object, point: [hit.point.x, hit.point.y, -hit.point.z] };
+  }
+
+  // Marks part index `part` of the surfaces layer: tinted (a copy of its material, so solids sharing it stay as they are)
+  // and its triangles' edges drawn over it, orange, whatever its own colour. The part marked before is restored. null:
+  // none. Returns the mesh marked, or null.
+  highlight(part) {
+    const h = this.highlighted;
+    if (h && h.mesh.userData.part === part) return h.mesh;
+    if (h) {
+      h.mesh.material.dispose();
+      h.mesh.material = h.original;
+      h.mesh.remove(h.edges);
+      h.edges.material.dispose();
+      this.highlighted = null;
+    }
+    const mesh = part == null ? null : this.layers.surfaces?.children.find(m => m.userData.part === part);
+    if (!mesh) return null;
+    const tinted = mesh.material.clone(), orange = new THREE.Color(1, 0.55, 0);
+    if (tinted.emissive) tinted.emissive.copy(orange).multiplyScalar(0.35);
+    else tinted.color.lerp(orange, 0.35);
+    if (tinted.transparent) tinted.opacity = Math.max(tinted.opacity, 0.6);
+    // The edges share the part's geometry (nothing more on the GPU but the wireframe's index).
+    const edges = new THREE.Mesh(mesh.geometry, new THREE.MeshBasicMaterial({ color: orange, wireframe: true, transparent: true, opacity: 0.45 }));
+    mesh.add(edges);
+    this.highlighted = { mesh, original: mesh.material, edges };
+    mesh.material = tinted;
+    return mesh;
+  }
+
   // The canvas as a PNG data URL, drawn just now (the drawing buffer is not kept between frames).
   snapshot() {
     this.draw();
     return this.canvas.toDataURL("image/png");
   }
 
-  // What each layer holds: solids drawn as surfaces, as boxes and glowing (emissive), lights, camera frusta, ray segments.
+  // What each layer holds: solids drawn as surfaces, as boxes and glowing (emissive), lights, camera frusta, ray segments,
+  // hit points.
   counts() {
     const parts = this.layers.surfaces?.children ?? [];
     return {
@@ -163,6 +238,7 @@ export class View3d {
       lights: this.layers.lights?.children.length ?? 0,
       cameras: this.layers.camera?.children.length ? 1 : 0,
       raySegments: this.layers.rays?.userData.segments ?? 0,
+      points: this.layers.points?.userData.points ?? 0,
     };
   }
 
