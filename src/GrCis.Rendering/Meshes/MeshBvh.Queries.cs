@@ -45,6 +45,7 @@ internal sealed partial class MeshBvh
     Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
     Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
     Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
+    bool finite = wide.FiniteBoxes && WideNode.NoNaN(ox, oy, oz, ix, iy, iz);   // decided once per ray: the cheaper box test, the same answers
     Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
     WideNode[] nodes = wide.Nodes;
 
@@ -65,7 +66,8 @@ internal sealed partial class MeshBvh
       if (code >= 0)
       {
         ref WideNode n = ref nodes[code];
-        int mask = n.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
+        int mask = (finite ? n.CrossFinite(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far)
+                           : n.Cross(vox, voy, voz, vix, viy, viz, out near, out far));
         // The boxes more likely to hold the answer are popped first: nearest entry for the first accepted hit,
         // farthest exit for the last rejected one. Pushed in insertion order, most likely last.
         int first = sp;
@@ -134,6 +136,7 @@ internal sealed partial class MeshBvh
     Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
     Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
     Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
+    bool finite = wide.FiniteBoxes && WideNode.NoNaN(ox, oy, oz, ix, iy, iz);   // decided once per ray: the cheaper box test, the same answers
     Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vlimit = Vector256.Create(limit);
     WideNode[] nodes = wide.Nodes;
 
@@ -151,7 +154,8 @@ internal sealed partial class MeshBvh
       if (code >= 0)
       {
         ref WideNode n = ref nodes[code];
-        int mask = n.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
+        int mask = (finite ? n.CrossFinite(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far)
+                           : n.Cross(vox, voy, voz, vix, viy, viz, out near, out far));
         // Only boxes either search still needs; the rest would be dropped when popped.
         Vector256<double> zero = Vector256<double>.Zero;
         mask &= (int)((Vector256.GreaterThan(far, zero) & Vector256.LessThanOrEqual(near, Vector256.Create(bestF))) |
@@ -226,6 +230,7 @@ internal sealed partial class MeshBvh
     Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
     Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
     Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
+    bool finite = wide.FiniteBoxes && WideNode.NoNaN(ox, oy, oz, ix, iy, iz);   // decided once per ray: the cheaper box test, the same answers
     Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
     WideNode[] nodes = wide.Nodes;
 
@@ -240,7 +245,8 @@ internal sealed partial class MeshBvh
       if (code >= 0)
       {
         ref WideNode n = ref nodes[code];
-        int mask = n.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
+        int mask = (finite ? n.CrossFinite(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far)
+                           : n.Cross(vox, voy, voz, vix, viy, viz, out near, out far));
         mask &= (int)(Vector256.GreaterThan(far, Vector256<double>.Zero) & Vector256.LessThanOrEqual(near, vtMax)).ExtractMostSignificantBits();
         for (; mask != 0; mask &= mask - 1)
         {

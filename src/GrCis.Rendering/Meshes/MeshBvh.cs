@@ -147,6 +147,7 @@ internal sealed partial class MeshBvh
     Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
     Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
     Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
+    bool finite = wide.FiniteBoxes && WideNode.NoNaN(ox, oy, oz, ix, iy, iz);   // decided once per ray: the cheaper box test, the same answers
     WideNode[] nodes = wide.Nodes;
 
     // Entries as in Nearest; every box the line crosses (any t) is opened.
@@ -160,7 +161,7 @@ internal sealed partial class MeshBvh
       if (code >= 0)
       {
         ref WideNode n = ref nodes[code];
-        for (int mask = n.Cross(vox, voy, voz, vix, viy, viz, out _, out _); mask != 0; mask &= mask - 1)
+        for (int mask = (finite ? n.CrossFinite(vox, voy, voz, vix, viy, viz, out _, out _) : n.Cross(vox, voy, voz, vix, viy, viz, out _, out _)); mask != 0; mask &= mask - 1)
         {
           int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
           stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);
