@@ -55,7 +55,7 @@ public class MeshBvhNearestTests
       all.IntersectAll(o, d, hits);
       foreach (bool accepted in new[] { true, false })
       {
-        bool expected = Reference(hits, len2, accepted, out MeshHit want);
+        bool expected = ListedHits.Nearest(hits, len2, accepted, out MeshHit want);
         bool got = bvh.Nearest(o, d, len2, accepted, out MeshHit have);
         Assert.True(expected == got, $"{name} ray {r} ({o} + t{d}), accepted={accepted}: brute force {expected}, BVH {got}");
         if (expected)
@@ -72,26 +72,6 @@ public class MeshBvhNearestTests
     }
     Assert.Equal(rays, checkedRays);
     Assert.True(withHits > rays / 6, $"only {withHits} answers with a hit: the rays miss the mesh");
-  }
-
-  static bool Reference(List<MeshHit> hits, double len2, bool accepted, out MeshHit best)
-  {
-    best = default;
-    bool found = false;
-    foreach (MeshHit h in hits)
-    {
-      if ((h.T > 0.0 && h.T * h.T * len2 > Intersection.RAY_EPSILON2) != accepted)
-        continue;
-      bool better = accepted
-        ? h.T < best.T || (h.T == best.T && h.Triangle < best.Triangle)
-        : h.T > best.T || (h.T == best.T && h.Triangle > best.Triangle);
-      if (!found || better)
-      {
-        best = h;
-        found = true;
-      }
-    }
-    return found;
   }
 
   static Vector3d Origin(Random rnd, List<Vector3d> vertices, int r) => (r % 3) switch

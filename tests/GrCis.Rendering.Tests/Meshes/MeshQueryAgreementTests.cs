@@ -63,7 +63,7 @@ public class MeshQueryAgreementTests
 
       foreach (bool accepted in new[] { true, false })
       {
-        bool expected = Reference(hits, len2, accepted, out MeshHit want);
+        bool expected = ListedHits.Nearest(hits, len2, accepted, out MeshHit want);
         Assert.True(expected == bvh.Nearest(o, d, len2, accepted, out MeshHit have), $"{ray}, accepted={accepted}");
         if (expected)
         {
@@ -76,14 +76,14 @@ public class MeshQueryAgreementTests
       double tMax = hits.Count > 0 && rnd.Next(3) > 0 ? hits[rnd.Next(hits.Count)].T : rnd.Next(2) == 0 ? double.PositiveInfinity : 2.0 * rnd.NextDouble();
       bool anyFront = false, anyBack = false;
       foreach (MeshHit h in hits)
-        if (Accepted(h.T, len2) && h.T <= tMax)
+        if (ListedHits.Accepted(h.T, len2) && h.T <= tMax)
           (h.Front ? ref anyFront : ref anyBack) = true;
       bool got = bvh.AnyFront(o, d, len2, tMax, out MeshHit any, out bool back);
       Assert.True(anyFront == got, $"{ray}, tMax {tMax}: front hit {anyFront}, AnyFront {got}");
       if (got)
       {
         Assert.Contains(hits, h => h.T == any.T && h.Triangle == any.Triangle && h.U == any.U && h.V == any.V && h.Front);
-        Assert.True(any.T <= tMax && Accepted(any.T, len2));
+        Assert.True(any.T <= tMax && ListedHits.Accepted(any.T, len2));
         blocked++;
       }
       else
@@ -146,7 +146,7 @@ public class MeshQueryAgreementTests
     insideBefore = !list.First.Value.Enter;
     foreach (Intersection i in list)
     {
-      if (Accepted(i.T, len2))
+      if (ListedHits.Accepted(i.T, len2))
       {
         hit.T = i.T;
         hit.CoordLocal = i.CoordLocal;
@@ -163,34 +163,12 @@ public class MeshQueryAgreementTests
     return false;
   }
 
-  static bool Accepted(double t, double len2) => t > 0.0 && t * t * len2 > Intersection.RAY_EPSILON2;
-
   static int ByTThenTriangle(MeshHit x, MeshHit y) => x.T != y.T ? x.T.CompareTo(y.T) : x.Triangle.CompareTo(y.Triangle);
 
   static void Same(in MeshHit want, in MeshHit have, string ray)
   {
     Assert.True(want.T.Equals(have.T) && want.Triangle == have.Triangle && want.U.Equals(have.U) && want.V.Equals(have.V) && want.Front == have.Front,
                 $"{ray}: want T {want.T:R} #{want.Triangle} ({want.U:R}, {want.V:R}) {want.Front}, have T {have.T:R} #{have.Triangle} ({have.U:R}, {have.V:R}) {have.Front}");
-  }
-
-  static bool Reference(List<MeshHit> hits, double len2, bool accepted, out MeshHit best)
-  {
-    best = default;
-    bool found = false;
-    foreach (MeshHit h in hits)
-    {
-      if (Accepted(h.T, len2) != accepted)
-        continue;
-      bool better = accepted
-        ? h.T < best.T || (h.T == best.T && h.Triangle < best.Triangle)
-        : h.T > best.T || (h.T == best.T && h.Triangle > best.Triangle);
-      if (!found || better)
-      {
-        best = h;
-        found = true;
-      }
-    }
-    return found;
   }
 
   /// <summary>
