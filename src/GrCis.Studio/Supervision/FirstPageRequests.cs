@@ -22,7 +22,7 @@ internal static class FirstPageRequests
   /// </summary>
   public static async Task MakeAsync(StudioOptions options, int port, string hostHeader, string token, CancellationToken cancel)
   {
-    string host = options.IsAnyAddress || options.Host == "localhost" ? "127.0.0.1" : StudioOptions.UrlHost(options.Host.Trim('[', ']'));
+    string host = options.IsAnyAddress || options.Host == "localhost" ? "127.0.0.1" : StudioOptions.UrlHost(options.Host);
     using var client = new HttpClient { BaseAddress = new Uri($"http://{host}:{port}/"), Timeout = Limit };
     client.DefaultRequestHeaders.Host = hostHeader;
     client.DefaultRequestHeaders.Add(AccessGuard.HeaderName, token);
