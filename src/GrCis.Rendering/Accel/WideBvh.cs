@@ -25,7 +25,7 @@ internal sealed class WideBvh
 
   /// <summary>
   /// True when every box coordinate is finite (no ±∞, no NaN: a mesh read with such a vertex): for a ray that
-  /// <see cref="WideNode.NoNaN"/> accepts, <see cref="WideNode.CrossFinite"/> then answers as <see cref="WideNode.Cross"/>.
+  /// <see cref="WideNode.NoNaN"/> accepts, <see cref="WideNode.Cross"/> may then leave out its NaN lanes.
   /// </summary>
   public readonly bool FiniteBoxes;
 

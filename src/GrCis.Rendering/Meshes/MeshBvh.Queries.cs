@@ -66,8 +66,7 @@ internal sealed partial class MeshBvh
       if (code >= 0)
       {
         ref WideNode n = ref nodes[code];
-        int mask = (finite ? n.CrossFinite(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far)
-                           : n.Cross(vox, voy, voz, vix, viy, viz, out near, out far));
+        int mask = n.Cross(vox, voy, voz, vix, viy, viz, finite, out Vector256<double> near, out Vector256<double> far);
         // The boxes more likely to hold the answer are popped first: nearest entry for the first accepted hit,
         // farthest exit for the last rejected one. Pushed in insertion order, most likely last.
         int first = sp;
@@ -154,8 +153,7 @@ internal sealed partial class MeshBvh
       if (code >= 0)
       {
         ref WideNode n = ref nodes[code];
-        int mask = (finite ? n.CrossFinite(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far)
-                           : n.Cross(vox, voy, voz, vix, viy, viz, out near, out far));
+        int mask = n.Cross(vox, voy, voz, vix, viy, viz, finite, out Vector256<double> near, out Vector256<double> far);
         // Only boxes either search still needs; the rest would be dropped when popped.
         Vector256<double> zero = Vector256<double>.Zero;
         mask &= (int)((Vector256.GreaterThan(far, zero) & Vector256.LessThanOrEqual(near, Vector256.Create(bestF))) |
@@ -245,8 +243,7 @@ internal sealed partial class MeshBvh
       if (code >= 0)
       {
         ref WideNode n = ref nodes[code];
-        int mask = (finite ? n.CrossFinite(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far)
-                           : n.Cross(vox, voy, voz, vix, viy, viz, out near, out far));
+        int mask = n.Cross(vox, voy, voz, vix, viy, viz, finite, out Vector256<double> near, out Vector256<double> far);
         mask &= (int)(Vector256.GreaterThan(far, Vector256<double>.Zero) & Vector256.LessThanOrEqual(near, vtMax)).ExtractMostSignificantBits();
         for (; mask != 0; mask &= mask - 1)
         {

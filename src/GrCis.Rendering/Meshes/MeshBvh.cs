@@ -161,7 +161,7 @@ internal sealed partial class MeshBvh
       if (code >= 0)
       {
         ref WideNode n = ref nodes[code];
-        for (int mask = (finite ? n.CrossFinite(vox, voy, voz, vix, viy, viz, out _, out _) : n.Cross(vox, voy, voz, vix, viy, viz, out _, out _)); mask != 0; mask &= mask - 1)
+        for (int mask = n.Cross(vox, voy, voz, vix, viy, viz, finite, out _, out _); mask != 0; mask &= mask - 1)
         {
           int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
           stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);

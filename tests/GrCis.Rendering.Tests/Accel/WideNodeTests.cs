@@ -138,8 +138,8 @@ public class WideNodeTests
       compared++;
       Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
       Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
-      int general = node.Cross(vox, voy, voz, vix, viy, viz, out Vector256<double> near, out Vector256<double> far);
-      int cheap = node.CrossFinite(vox, voy, voz, vix, viy, viz, out Vector256<double> near2, out Vector256<double> far2);
+      int general = node.Cross(vox, voy, voz, vix, viy, viz, false, out Vector256<double> near, out Vector256<double> far);
+      int cheap = node.Cross(vox, voy, voz, vix, viy, viz, true, out Vector256<double> near2, out Vector256<double> far2);
       Assert.Equal(general, cheap);
       for (int l = 0; l < WideNode.Width; l++)
       {
@@ -183,7 +183,7 @@ public class WideNodeTests
 
       WideNode node = Node(boxes, lanes);
       int bits = node.Cross(Vector256.Create(ox), Vector256.Create(oy), Vector256.Create(oz),
-                            Vector256.Create(ix), Vector256.Create(iy), Vector256.Create(iz), out Vector256<double> near, out Vector256<double> far);
+                            Vector256.Create(ix), Vector256.Create(iy), Vector256.Create(iz), false, out Vector256<double> near, out Vector256<double> far);
       Assert.Equal(0, bits >> lanes);
       for (int l = 0; l < lanes; l++)
       {
