@@ -31,8 +31,8 @@ internal static partial class LibraryTypes
 
   /// <summary>
   /// The surface-only completion of a solid's hit: <see cref="HitCompletion.Sphere"/> (or
-  /// <see cref="HitCompletion.SphereTextured"/>), <see cref="HitCompletion.Plane"/> or <see cref="HitCompletion.Cube"/>
-  /// for the library's own solids and subclasses that override nothing; <see cref="HitCompletion.Full"/> otherwise.
+  /// <see cref="HitCompletion.SphereTextured"/>), <see cref="HitCompletion.Plane"/>, <see cref="HitCompletion.Cube"/> or
+  /// <see cref="HitCompletion.OwnSurface"/> for the library's own solids and subclasses that override nothing; <see cref="HitCompletion.Full"/> otherwise.
   /// </summary>
   public static HitCompletion SurfaceShape(IRecordSolid solid, bool textured)
   {
@@ -42,6 +42,8 @@ internal static partial class LibraryTypes
       return HitCompletion.Plane;
     if (SubclassCheck.OverridesNothing(solid, typeof(Cube)))
       return HitCompletion.Cube;
+    if (solid is ISurfaceSolid && SubclassCheck.OverridesNothing(solid, ImplementingClass(solid, typeof(ISurfaceSolid))))
+      return HitCompletion.OwnSurface;
     return HitCompletion.Full;
   }
 
@@ -136,14 +138,20 @@ internal static partial class LibraryTypes
     }
   }
 
-  /// <summary>The solid's part of a surface-only completion (<paramref name="completion"/> is not <see cref="HitCompletion.Full"/>).</summary>
-  public static void CompleteSurface(HitCompletion completion, Intersection inter, in Matrix4d worldToLocal)
+  /// <summary>
+  /// The solid's part of a surface-only completion (<paramref name="completion"/> is not <see cref="HitCompletion.Full"/>);
+  /// false when this hit needs the full completion after all (<see cref="ISurfaceSolid"/>).
+  /// </summary>
+  public static bool CompleteSurface(HitCompletion completion, Intersection inter, in Matrix4d worldToLocal)
   {
+    if (completion == HitCompletion.OwnSurface)
+      return Unsafe.As<ISurfaceSolid>(inter.Solid!).CompleteSurface(inter, worldToLocal);
     if (completion == HitCompletion.Plane)
       ((Plane)inter.Solid!).CompleteSurface(inter, worldToLocal);
     else if (completion == HitCompletion.Cube)
       Cube.CompleteSurface(inter, worldToLocal);
     else
       Sphere.CompleteSurface(inter, worldToLocal, completion == HitCompletion.SphereTextured);
+    return true;
   }
 }

@@ -194,7 +194,7 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>
-  /// The surface-only completion a member allows: a library Sphere, Plane or Cube (<see cref="LibraryTypes.SurfaceShape"/>),
+  /// The surface-only completion a member allows: a library Sphere, Plane, Cube or TriangleMesh (<see cref="LibraryTypes.SurfaceShape"/>),
   /// shaded by the library's Phong model and material with no RECURSION function, and no texture but checkers and image
   /// textures (which read only TextureCoord and the surface colour).
   /// </summary>

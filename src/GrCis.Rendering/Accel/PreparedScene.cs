@@ -217,13 +217,16 @@ public sealed partial class PreparedScene : ISceneQuery
     LibraryTypes.Init(m.Direct, f, hit, i);
     if (surfaceOnly && m.Completion != HitCompletion.Full)
     {
-      if (i.BeginSurface(m.LocalToWorld, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion))
+      if (!i.BeginSurface(m.LocalToWorld, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion))
+        return i;
+      if (LibraryTypes.CompleteSurface(m.Completion, i, m.WorldToLocal))
       {
-        LibraryTypes.CompleteSurface(m.Completion, i, m.WorldToLocal);
         i.EndSurface();
+        return i;
       }
+      // The solid asked for the full completion of this hit.
     }
-    else if (m.AttributesCached)
+    if (m.AttributesCached)
       i.CompleteCached(m.LocalToWorld, m.WorldToLocal, m.LocalToObject, m.Model!, m.Material!, m.Color, m.Textures, m.Recursion);
     else
       i.CompleteWith(m.LocalToWorld, m.WorldToLocal, m.LocalToObject);

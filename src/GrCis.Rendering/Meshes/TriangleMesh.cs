@@ -15,7 +15,7 @@ namespace Rendering;
 /// coordinates are interpolated when the mesh has them (GrCis leaves them zero). The search
 /// structure (<see cref="MeshBvh"/>) is built on first use; change the mesh before rendering.
 /// </summary>
-public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
+public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid, ISurfaceSolid
 {
   /// <summary>The mesh (GrCis keeps it reachable for subclasses).</summary>
   protected SceneBrep mesh;
@@ -267,21 +267,10 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
       SolidSupport.SetWorldFrame(inter, Vector3d.UnitZ);
       return;
     }
-    mesh.GetTriangleVertices(d.Face, out int ia, out int ib, out int ic);
-    Vector3d a = mesh.GetVertex(ia), b = mesh.GetVertex(ib), c = mesh.GetVertex(ic);
-    double w = 1.0 - d.U - d.V;
-
-    Vector3d normal = Vector3d.Cross(b - a, c - a);
-    if (Smooth && mesh.Normals > 0)
-    {
-      Vector3d n = w * (Vector3d)mesh.GetNormal(ia) + d.U * (Vector3d)mesh.GetNormal(ib) + d.V * (Vector3d)mesh.GetNormal(ic);
-      if (n.LengthSquared > 0.0)
-        normal = n;
-    }
+    Vector3d normal = ShadingNormal(d, out Vector3d a, out Vector3d b, out Vector3d c);
     if (mesh.TxtCoords > 0)
     {
-      Vector2 ta = mesh.GetTxtCoord(ia), tb = mesh.GetTxtCoord(ib), tc = mesh.GetTxtCoord(ic);
-      inter.TextureCoord = new Vector2d(w * ta.X + d.U * tb.X + d.V * tc.X, w * ta.Y + d.U * tb.Y + d.V * tc.Y);
+      inter.TextureCoord = TextureCoordAt(d, out Vector2 ta, out Vector2 tb, out Vector2 tc);
 
       // Tangents from the texture parametrisation (dP/du, dP/dv), when it is not degenerate.
       double du1 = tb.X - ta.X, dv1 = tb.Y - ta.Y, du2 = tc.X - ta.X, dv2 = tc.Y - ta.Y;
@@ -298,6 +287,55 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
     else
       inter.TextureCoord = Vector2d.Zero;
     SolidSupport.SetWorldFrame(inter, normal);
+  }
+
+  /// <summary>
+  /// The surface part of <see cref="CompleteIntersection"/> (<see cref="ISurfaceSolid"/>): the normal, local and
+  /// world, and the texture coordinates, with the same arithmetic, so the same bits; no tangents. False, with nothing
+  /// written, when the world normal is within GrCis's zero length (|n|² ≤ 1e-24: a tiny or degenerate triangle), which
+  /// the full completion replaces by the tangents' cross product.
+  /// </summary>
+  bool ISurfaceSolid.CompleteSurface(Intersection inter, in Matrix4d worldToLocal)
+  {
+    if (inter.SolidData is not HitData d)
+      return false;
+    Vector3d normal = ShadingNormal(d, out _, out _, out _);
+    Vector3d world = Vector3d.TransformNormalInverse(normal, worldToLocal);
+    if (world.LengthSquared <= 1.0e-24)
+      return false;
+    inter.TextureCoord = mesh.TxtCoords > 0 ? TextureCoordAt(d, out _, out _, out _) : Vector2d.Zero;
+    inter.NormalLocal = normal;
+    inter.Normal = world;
+    return true;
+  }
+
+  /// <summary>The shading normal at a hit: the face's, or with <see cref="Smooth"/> the vertex normals interpolated; and the triangle's corners.</summary>
+  Vector3d ShadingNormal(HitData d, out Vector3d a, out Vector3d b, out Vector3d c)
+  {
+    mesh.GetTriangleVertices(d.Face, out int ia, out int ib, out int ic);
+    a = mesh.GetVertex(ia);
+    b = mesh.GetVertex(ib);
+    c = mesh.GetVertex(ic);
+    Vector3d normal = Vector3d.Cross(b - a, c - a);
+    if (Smooth && mesh.Normals > 0)
+    {
+      double w = 1.0 - d.U - d.V;
+      Vector3d n = w * (Vector3d)mesh.GetNormal(ia) + d.U * (Vector3d)mesh.GetNormal(ib) + d.V * (Vector3d)mesh.GetNormal(ic);
+      if (n.LengthSquared > 0.0)
+        normal = n;
+    }
+    return normal;
+  }
+
+  /// <summary>The texture coordinates at a hit, interpolated from the corners' (<paramref name="ta"/>, <paramref name="tb"/>, <paramref name="tc"/>).</summary>
+  Vector2d TextureCoordAt(HitData d, out Vector2 ta, out Vector2 tb, out Vector2 tc)
+  {
+    mesh.GetTriangleVertices(d.Face, out int ia, out int ib, out int ic);
+    ta = mesh.GetTxtCoord(ia);
+    tb = mesh.GetTxtCoord(ib);
+    tc = mesh.GetTxtCoord(ic);
+    double w = 1.0 - d.U - d.V;
+    return new Vector2d(w * ta.X + d.U * tb.X + d.V * tc.X, w * ta.Y + d.U * tb.Y + d.V * tc.Y);
   }
 
   /// <summary>The box of all the mesh's vertices (a point at the origin for an empty mesh).</summary>

@@ -22,4 +22,10 @@ internal enum HitCompletion : byte
 
   /// <summary>A plain <see cref="Cube"/>: the face's texture coordinates (two copies), no tangents.</summary>
   Cube,
+
+  /// <summary>
+  /// The solid's own (<see cref="ISurfaceSolid"/>: a plain <see cref="TriangleMesh"/>): the face's or interpolated normal
+  /// and the texture coordinates, no tangents; a hit the solid cannot complete so gets the full completion.
+  /// </summary>
+  OwnSurface,
 }
