@@ -1,0 +1,98 @@
+using System;
+using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
+
+namespace Rendering;
+
+/// <summary>
+/// The eight-box step of a mesh walk in floats: per axis one fused multiply–add for the near plane and one for the far
+/// plane of all eight boxes (the plane is picked once per ray by the sign of the direction), so a node costs six FMAs, four
+/// min/max and a compare. Conservative: each box's interval contains the one the exact double slab test
+/// (<see cref="Accel.WideNode.Cross"/> on the double boxes) computes, so it keeps every box that test keeps, with a near
+/// end no later and a far end no earlier; the double triangle tests decide every answer.
+/// </summary>
+/// <remarks>
+/// Why it contains (per axis; u = 2^-24, the float rounding unit; M = the largest |coordinate| of the float boxes on the
+/// axis; o, inv = 1/d the ray's doubles; set-up in <see cref="TryCreate"/>):
+/// <list type="bullet">
+/// <item>The float box contains the double box (rounded outward), and its slab the double slab: for inv &gt; 0 the near plane
+/// b ≤ b_d, so b·inv ≤ b_d·inv; for inv &lt; 0 the near plane is the max plane, b ≥ b_d, and again b·inv ≤ b_d·inv.</item>
+/// <item>The double test gives t_d = (b_d − o)·inv·(1 + δ), |δ| ≤ 2.0001·2^-53: t_d ≥ (b_d − o)·inv − 2^-52.9·(|o| + M)·|inv|.</item>
+/// <item>invf = float(inv) = inv·(1 + ε), |ε| ≤ u (|inv| in [2^-100, 2^100]: a normal float). The step computes
+/// fl(b·invf + cN) with one rounding (FMA) and cN ≤ −o·invf − pad, pad = 4u·(|o| + M)·|inv|, so
+/// t ≤ (b − o)·invf − pad + u·|b·invf + cN| ≤ (b_d − o)·inv + u(|o| + M)|inv| − pad + u((|o| + M)|inv|(1 + u) + pad).</item>
+/// <item>Hence t ≤ t_d − pad(1 − u) + (2u + u² + 2^-52.9)(|o| + M)|inv| &lt; t_d − 1.99u(|o| + M)|inv|: the margin also covers
+/// the double rounding of cN's set-up (relative 2^-52) and an underflow of the FMA (absolute 2^-150, while
+/// (|o| + M)|inv| ≥ 2^-100 is required). No overflow: every value stays below 2^102.</item>
+/// <item>The far plane likewise with cF ≥ −o·invf + pad: t ≥ t_d. The min and max over the axes are exact, so near ≤ the
+/// double near and far ≥ the double far, and a box the double test keeps (near_d ≤ far_d) is kept.</item>
+/// </list>
+/// A ray outside these bounds (a zero or ∞ direction component, an origin or a mesh beyond 2^100 in (|o| + M)|inv|,
+/// NaN) gets no float step: its walk falls back to <see cref="DoubleStep"/>, decided once per ray.
+/// An unused lane (min +∞, max −∞) gives near +∞ and far −∞ whatever the sign: never crossed.
+/// </remarks>
+internal readonly struct FloatStep : IMeshBoxStep
+{
+  readonly Vector256<float> ix, iy, iz, nx, ny, nz, fx, fy, fz;
+  readonly int px, py, pz, qx, qy, qz;   // near and far plane of each axis (MeshNode field number)
+
+  const double Two100 = (double)(1L << 50) * (1L << 50);
+  const double Lowest = 1.0 / Two100;
+  const double Pad = 1.0 / (1 << 22);   // 4u
+
+  FloatStep(in Axis x, in Axis y, in Axis z)
+  {
+    (ix, nx, fx, px, qx) = (x.Inv, x.Near, x.Far, x.Plane, 3 - x.Plane);
+    (iy, ny, fy, py, qy) = (y.Inv, y.Near, y.Far, 1 + y.Plane, 4 - y.Plane);
+    (iz, nz, fz, pz, qz) = (z.Inv, z.Near, z.Far, 2 + z.Plane, 5 - z.Plane);
+  }
+
+  /// <summary>
+  /// The float step for origin o and inverse direction inv in a tree whose float boxes reach at most
+  /// <paramref name="mx"/>, <paramref name="my"/>, <paramref name="mz"/> in absolute value; false when the ray (or the
+  /// mesh) lies outside the bounds of the proof (see the remarks).
+  /// </summary>
+  public static bool TryCreate(in MeshLine line, double mx, double my, double mz, out FloatStep step)
+  {
+    step = default;
+    if (!Axis.Make(line.Ox, line.Ix, mx, out Axis x) || !Axis.Make(line.Oy, line.Iy, my, out Axis y) ||
+        !Axis.Make(line.Oz, line.Iz, mz, out Axis z))
+      return false;
+    step = new FloatStep(x, y, z);
+    return true;
+  }
+
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  public int Cross(ref readonly MeshNode n, out Vector256<float> near, out Vector256<float> far)
+  {
+    ref Vector256<float> p = ref Unsafe.AsRef(in n.MinX);
+    near = Vector256.MaxNative(Vector256.MaxNative(Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, px), ix, nx),
+                                                   Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, py), iy, ny)),
+                               Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, pz), iz, nz));
+    far = Vector256.MinNative(Vector256.MinNative(Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qx), ix, fx),
+                                                  Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qy), iy, fy)),
+                              Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qz), iz, fz));
+    return (int)Vector256.LessThanOrEqual(near, far).ExtractMostSignificantBits();
+  }
+
+  /// <summary>One axis's set-up: float inverse, the near and far offsets cN, cF, and the near plane (0 min, 3 max).</summary>
+  readonly struct Axis(Vector256<float> inv, Vector256<float> near, Vector256<float> far, int plane)
+  {
+    public readonly Vector256<float> Inv = inv, Near = near, Far = far;
+    public readonly int Plane = plane;
+
+    public static bool Make(double o, double inv, double m, out Axis axis)
+    {
+      axis = default;
+      double a = Math.Abs(inv), s = (Math.Abs(o) + m) * a;
+      // Written so that NaN fails too.
+      if (!(a >= Lowest && a <= Two100 && s >= Lowest && s <= Two100))
+        return false;
+      float f = (float)inv;
+      double oi = o * f, pad = Pad * s;
+      axis = new Axis(Vector256.Create(f), Vector256.Create(MeshNode.Down(-oi - pad)), Vector256.Create(MeshNode.Up(-oi + pad)),
+                      inv > 0.0 ? 0 : 3);
+      return true;
+    }
+  }
+}
