@@ -53,7 +53,7 @@ internal sealed partial class MeshBvh
     // accepted T in (0, best], rejected T in [best, limit].
     Vector256<float> lo = Vector256.Create(accepted ? 0f : MeshNode.Down(bestT));
     Vector256<float> hi = Vector256.Create(MeshNode.Up(accepted ? bestT : limit));
-    MeshNode[] nodes = this.nodes;
+    ref MeshNode nodes = ref FirstNode();
 
     // Each entry: an inner node (≥ 0) or a leaf lane (~(node·8 + lane)) and the line's parameter interval in its box,
     // re-checked against the best when popped; the root's interval is that of the whole mesh's box.
@@ -69,7 +69,7 @@ internal sealed partial class MeshBvh
       int code = e.Node;
       if (code >= 0)
       {
-        ref MeshNode n = ref nodes[code];
+        ref MeshNode n = ref Unsafe.Add(ref nodes, code);
         int mask = step.Cross(in n, out Vector256<float> near, out Vector256<float> far);
         mask &= accepted
           ? (int)(Vector256.GreaterThan(far, lo) & Vector256.LessThanOrEqual(near, hi)).ExtractMostSignificantBits()
@@ -88,7 +88,7 @@ internal sealed partial class MeshBvh
         }
         continue;
       }
-      Leaf(nodes, code, out int block, out int end);
+      Leaf(ref nodes, code, out int block, out int end);
       for (; block < end; block++)
       {
         int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
@@ -135,6 +135,15 @@ internal sealed partial class MeshBvh
     hasFirst = hasLast = false;
     if (!Start(p0, p1, out MeshLine line, out float near, out float far))
       return;
+    if (near > RejectLimit(len2))
+    {
+      // Every hit lies at T ≥ the box's entry > the limit: all are accepted and there is no last rejected one, so the
+      // first is Nearest's (the least T, then triangle, whatever the walk): a ray from outside, ahead of the mesh.
+      hasFirst = FloatStep.TryCreate(line, mx, my, mz, out FloatStep ahead)
+        ? Nearest(ahead, line, near, far, len2, true, out first, double.PositiveInfinity)
+        : Nearest(new DoubleStep(line), line, near, far, len2, true, out first, double.PositiveInfinity);
+      return;
+    }
     if (FloatStep.TryCreate(line, mx, my, mz, out FloatStep fast))
       NearestBoth(fast, line, near, far, len2, out hasFirst, out first, out hasLast, out last);
     else
@@ -156,7 +165,7 @@ internal sealed partial class MeshBvh
     // Float bounds rounded outward, as in Nearest.
     Vector256<float> hiF = Vector256.Create(float.PositiveInfinity), loB = Vector256.Create(float.NegativeInfinity);
     Vector256<float> vlimit = Vector256.Create(MeshNode.Up(limit));
-    MeshNode[] nodes = this.nodes;
+    ref MeshNode nodes = ref FirstNode();
 
     Span<NodeSpan> stack = stackSize <= 512 ? stackalloc NodeSpan[stackSize] : new NodeSpan[stackSize];
     int sp = 0;
@@ -170,7 +179,7 @@ internal sealed partial class MeshBvh
       int code = e.Node;
       if (code >= 0)
       {
-        ref MeshNode n = ref nodes[code];
+        ref MeshNode n = ref Unsafe.Add(ref nodes, code);
         int mask = step.Cross(in n, out Vector256<float> near, out Vector256<float> far);
         // Only boxes either search still needs; the rest would be dropped when popped.
         Vector256<float> zero = Vector256<float>.Zero;
@@ -191,7 +200,7 @@ internal sealed partial class MeshBvh
         }
         continue;
       }
-      Leaf(nodes, code, out int block, out int end);
+      Leaf(ref nodes, code, out int block, out int end);
       for (; block < end; block++)
       {
         int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
@@ -255,7 +264,7 @@ internal sealed partial class MeshBvh
     Vector256<double> vdx = Vector256.Create(line.Dx), vdy = Vector256.Create(line.Dy), vdz = Vector256.Create(line.Dz);
     Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
     Vector256<float> hi = Vector256.Create(MeshNode.Up(tMax));   // rounded up: no box the double bound keeps is lost
-    MeshNode[] nodes = this.nodes;
+    ref MeshNode nodes = ref FirstNode();
 
     // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·8 + lane)); only boxes meeting (0, tMax] are pushed.
     Span<int> stack = stackSize <= 1024 ? stackalloc int[stackSize] : new int[stackSize];
@@ -266,7 +275,7 @@ internal sealed partial class MeshBvh
       int code = stack[--sp];
       if (code >= 0)
       {
-        ref MeshNode n = ref nodes[code];
+        ref MeshNode n = ref Unsafe.Add(ref nodes, code);
         int mask = step.Cross(in n, out Vector256<float> near, out Vector256<float> far);
         mask &= (int)(Vector256.GreaterThan(far, Vector256<float>.Zero) & Vector256.LessThanOrEqual(near, hi)).ExtractMostSignificantBits();
         for (; mask != 0; mask &= mask - 1)
@@ -276,7 +285,7 @@ internal sealed partial class MeshBvh
         }
         continue;
       }
-      Leaf(nodes, code, out int block, out int end);
+      Leaf(ref nodes, code, out int block, out int end);
       for (; block < end; block++)
       {
         int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,

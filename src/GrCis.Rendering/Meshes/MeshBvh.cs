@@ -3,6 +3,7 @@ using System;
 using System.Buffers;
 using System.Collections.Generic;
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
 using OpenTK.Mathematics;
 using Rendering.Accel;
@@ -19,7 +20,10 @@ namespace Rendering;
 /// </summary>
 internal sealed partial class MeshBvh
 {
-  readonly MeshNode[] nodes;  // leaf lanes: Index = first block of the leaf, Count = its blocks
+  // The nodes (leaf lanes: Index = first block of the leaf, Count = its blocks) in a pinned buffer from a 64-byte boundary on:
+  // a node is then four whole cache lines and no 32-byte load straddles two (a managed array is only 8-byte aligned).
+  readonly byte[] nodeMemory;
+  readonly int nodeStart, nodeCount;
   readonly int stackSize;     // traversal stack entries that can be live at once
   readonly BvhNode root;      // the box around every triangle
   readonly double mx, my, mz; // largest |coordinate| of the float boxes per axis, +∞ when a box is not finite in floats
@@ -32,7 +36,7 @@ internal sealed partial class MeshBvh
   public int NodeCount => binaryNodes;
 
   /// <summary>Nodes of the eight-wide tree the queries walk.</summary>
-  public int WideNodeCount => nodes.Length;
+  public int WideNodeCount => nodeCount;
 
   /// <summary>Size of the mesh's box (for relative tolerances).</summary>
   public double Extent { get; }
@@ -71,13 +75,34 @@ internal sealed partial class MeshBvh
     for (int axis = 0; axis < 3 && n > 0; axis++)
       magnitude = Math.Max(magnitude, Math.Max(Math.Abs(rootBox.Min[axis]), Math.Abs(rootBox.Max[axis])));
     double pad = 1e-9 * (Extent + magnitude);
-    nodes = MeshNode.Collapse(tree, pad, out stackSize);
+    MeshNode[] nodes = MeshNode.Collapse(tree, pad, out stackSize);
     (blocks, ids) = Store(mesh, nodes, order);
+    nodeCount = nodes.Length;
+    (nodeMemory, nodeStart) = Aligned(nodes);
     // Every float box lies in the root's (boxes nest; outward rounding is monotone): its coordinates bound them all.
     mx = Magnitude(root.MinX - pad, root.MaxX + pad);
     my = Magnitude(root.MinY - pad, root.MaxY + pad);
     mz = Magnitude(root.MinZ - pad, root.MaxZ + pad);
   }
+
+  static (byte[] Memory, int Start) Aligned(MeshNode[] nodes)
+  {
+    const int Line = 64;
+    int size = nodes.Length * Unsafe.SizeOf<MeshNode>();
+    byte[] memory = GC.AllocateUninitializedArray<byte>(size + Line, pinned: true);   // never moved
+    int start;
+    unsafe
+    {
+      fixed (byte* p = memory)
+        start = (int)((Line - (nint)p % Line) % Line);
+    }
+    MemoryMarshal.AsBytes(nodes.AsSpan()).CopyTo(memory.AsSpan(start, size));
+    return (memory, start);
+  }
+
+  /// <summary>The first node (the root); node i is <c>Unsafe.Add(ref FirstNode(), i)</c>.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  ref MeshNode FirstNode() => ref Unsafe.As<byte, MeshNode>(ref nodeMemory[nodeStart]);
 
   // The largest |coordinate| of the float slab [min, max] rounded outward (+∞ when it leaves the float range or is NaN).
   static double Magnitude(double min, double max)
@@ -167,7 +192,7 @@ internal sealed partial class MeshBvh
   {
     Vector256<double> vox = Vector256.Create(line.Ox), voy = Vector256.Create(line.Oy), voz = Vector256.Create(line.Oz);
     Vector256<double> vdx = Vector256.Create(line.Dx), vdy = Vector256.Create(line.Dy), vdz = Vector256.Create(line.Dz);
-    MeshNode[] nodes = this.nodes;
+    ref MeshNode nodes = ref FirstNode();
 
     // Entries as in Nearest; every box the line crosses (any t) is opened.
     Span<int> stack = stackSize <= 1024 ? stackalloc int[stackSize] : new int[stackSize];
@@ -178,7 +203,7 @@ internal sealed partial class MeshBvh
       int code = stack[--sp];
       if (code >= 0)
       {
-        ref MeshNode n = ref nodes[code];
+        ref MeshNode n = ref Unsafe.Add(ref nodes, code);
         for (int mask = step.Cross(in n, out _, out _); mask != 0; mask &= mask - 1)
         {
           int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
@@ -186,7 +211,7 @@ internal sealed partial class MeshBvh
         }
         continue;
       }
-      Leaf(nodes, code, out int block, out int end);
+      Leaf(ref nodes, code, out int block, out int end);
       for (; block < end; block++)
       {
         int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
@@ -224,12 +249,12 @@ internal sealed partial class MeshBvh
 
   /// <summary>The blocks [<paramref name="block"/>, <paramref name="end"/>) of the leaf a stack entry ~(node·8 + lane) names.</summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  static void Leaf(MeshNode[] nodes, int code, out int block, out int end)
+  static void Leaf(ref MeshNode nodes, int code, out int block, out int end)
   {
-    int slot = ~code;
-    ref MeshNode parent = ref nodes[slot / MeshNode.Width];
-    block = parent.Index[slot % MeshNode.Width];
-    end = block + parent.Count[slot % MeshNode.Width];
+    int slot = ~code;   // ≥ 0
+    ref MeshNode parent = ref Unsafe.Add(ref nodes, slot >> 3);
+    block = parent.Index[slot & 7];
+    end = block + parent.Count[slot & 7];
   }
 
   static bool Slab(double min, double max, double o, double d, double inv, ref double tMin, ref double tMax)

@@ -64,11 +64,13 @@ internal struct MeshNode
   /// The eight-wide tree of <paramref name="tree"/>: while a node has fewer than eight children, its inner child of
   /// largest surface area is replaced by that child's two children (as <see cref="WideBvh.Collapse"/> does for four).
   /// Leaf lanes get the binary leaf's first item and item count (the caller turns them into blocks). Boxes grown by
-  /// <paramref name="pad"/>. <paramref name="stackSize"/>: traversal stack entries that can be live at once.
+  /// <paramref name="pad"/>. <paramref name="stackSize"/>: traversal stack entries that can be live at once (each step
+  /// pops one entry and pushes at most eight: seven more per level of this tree, whose depth is about a third of the
+  /// binary tree's; sized by the binary depth, a stack would often be too large to live on the thread's stack).
   /// </summary>
   public static MeshNode[] Collapse(Bvh tree, double pad, out int stackSize)
   {
-    stackSize = (Width - 1) * tree.Depth + 2;
+    stackSize = 2;
     if (tree.Items.Length == 0)
     {
       var none = new MeshNode[1];   // a tree over nothing: one node without lanes
@@ -76,11 +78,12 @@ internal struct MeshNode
       return none;
     }
     // Counted first, so the nodes are written straight into their final array (no list to grow and copy).
-    int count = 0;
-    new Collapser(tree, pad, null).Node(0, ref count);
+    int count = 0, depth = 0;
+    new Collapser(tree, pad, null).Node(0, 1, ref count, ref depth);
     var nodes = new MeshNode[count];
     count = 0;
-    new Collapser(tree, pad, nodes).Node(0, ref count);
+    new Collapser(tree, pad, nodes).Node(0, 1, ref count, ref depth);
+    stackSize = (Width - 1) * depth + 2;
     return nodes;
   }
 
@@ -88,9 +91,10 @@ internal struct MeshNode
   {
     /// <summary>
     /// Adds the node whose children are those of binary node <paramref name="binary"/> (or the node itself, a leaf root)
-    /// at <paramref name="used"/>, its subtree after it; without an array, only counts.
+    /// at <paramref name="used"/>, its subtree after it; without an array, only counts. <paramref name="depth"/>: the
+    /// deepest level reached (this node's is <paramref name="level"/>).
     /// </summary>
-    public int Node(int binary, ref int used)
+    public int Node(int binary, int level, ref int used, ref int depth)
     {
       BvhNode[] b = tree.Nodes;
       Span<int> picks = stackalloc int[Width];
@@ -133,11 +137,12 @@ internal struct MeshNode
       }
 
       int self = used++;
+      depth = Math.Max(depth, level);
       if (nodes == null)
       {
         for (int lane = 0; lane < count; lane++)
           if (b[picks[lane]].Count == 0)
-            Node(picks[lane], ref used);
+            Node(picks[lane], level + 1, ref used, ref depth);
         return self;
       }
       ref MeshNode node = ref nodes[self];
@@ -152,7 +157,7 @@ internal struct MeshNode
           node.Count[lane] = child.Count;
         }
         else
-          node.Index[lane] = Node(picks[lane], ref used);
+          node.Index[lane] = Node(picks[lane], level + 1, ref used, ref depth);
       }
       return self;
     }
