@@ -13,7 +13,7 @@ namespace Rendering;
 /// </summary>
 /// <remarks>
 /// Why it contains (per axis; u = 2^-24, the float rounding unit; M = the largest |coordinate| of the float boxes on the
-/// axis; o, inv = 1/d the ray's doubles; set-up in <see cref="TryCreate"/>):
+/// axis; o, inv = 1/d the ray's doubles; set-up in the constructor):
 /// <list type="bullet">
 /// <item>The float box contains the double box (rounded outward), and its slab the double slab: for inv &gt; 0 the near plane
 /// b ≤ b_d, so b·inv ≤ b_d·inv; for inv &lt; 0 the near plane is the max plane, b ≥ b_d, and again b·inv ≤ b_d·inv.</item>
@@ -40,26 +40,44 @@ internal readonly struct FloatStep : IMeshBoxStep
   const double Lowest = 1.0 / Two100;
   const double Pad = 1.0 / (1 << 22);   // 4u
 
-  FloatStep(in Axis x, in Axis y, in Axis z)
+  /// <summary>
+  /// True when the float step can bound the ray (origin o, inverse direction inv) in a tree whose float boxes reach at
+  /// most <paramref name="mx"/>, <paramref name="my"/>, <paramref name="mz"/> in absolute value; false when the ray (or
+  /// the mesh) lies outside the bounds of the proof (see the remarks). Cheap scalar checks, decided once per ray.
+  /// </summary>
+  public static bool Bounded(in MeshLine line, double mx, double my, double mz) =>
+    InRange(line.Ox, line.Ix, mx) && InRange(line.Oy, line.Iy, my) && InRange(line.Oz, line.Iz, mz);
+
+  // Written so that NaN fails too.
+  static bool InRange(double o, double inv, double m)
   {
-    (ix, nx, fx, px, qx) = (x.Inv, x.Near, x.Far, x.Plane, 3 - x.Plane);
-    (iy, ny, fy, py, qy) = (y.Inv, y.Near, y.Far, 1 + y.Plane, 4 - y.Plane);
-    (iz, nz, fz, pz, qz) = (z.Inv, z.Near, z.Far, 2 + z.Plane, 5 - z.Plane);
+    double a = Math.Abs(inv), s = (Math.Abs(o) + m) * a;
+    return a >= Lowest && a <= Two100 && s >= Lowest && s <= Two100;
   }
 
-  /// <summary>
-  /// The float step for origin o and inverse direction inv in a tree whose float boxes reach at most
-  /// <paramref name="mx"/>, <paramref name="my"/>, <paramref name="mz"/> in absolute value; false when the ray (or the
-  /// mesh) lies outside the bounds of the proof (see the remarks).
-  /// </summary>
-  public static bool TryCreate(in MeshLine line, double mx, double my, double mz, out FloatStep step)
+  /// <summary>The step for a ray <see cref="Bounded"/> accepts (the same bounds).</summary>
+  [SkipLocalsInit]
+  public FloatStep(in MeshLine line, double mx, double my, double mz)
   {
-    step = default;
-    if (!Axis.Make(line.Ox, line.Ix, mx, out Axis x) || !Axis.Make(line.Oy, line.Iy, my, out Axis y) ||
-        !Axis.Make(line.Oz, line.Iz, mz, out Axis z))
-      return false;
-    step = new FloatStep(x, y, z);
-    return true;
+    Axis(line.Ox, line.Ix, mx, out ix, out nx, out fx, out px);
+    Axis(line.Oy, line.Iy, my, out iy, out ny, out fy, out py);
+    Axis(line.Oz, line.Iz, mz, out iz, out nz, out fz, out pz);
+    qx = 3 - px;   // the other plane of the axis (fields 0…2 min, 3…5 max)
+    py += 1;
+    qy = 5 - py;
+    pz += 2;
+    qz = 7 - pz;
+  }
+
+  // One axis: float inverse, the near and far offsets cN ≤ −o·invf − pad and cF ≥ −o·invf + pad, the near plane (0 min, 3 max).
+  static void Axis(double o, double inv, double m, out Vector256<float> vinv, out Vector256<float> near, out Vector256<float> far, out int plane)
+  {
+    float f = (float)inv;
+    double oi = o * f, pad = Pad * (Math.Abs(o) + m) * Math.Abs(inv);
+    vinv = Vector256.Create(f);
+    near = Vector256.Create(MeshNode.Down(-oi - pad));
+    far = Vector256.Create(MeshNode.Up(-oi + pad));
+    plane = inv > 0.0 ? 0 : 3;
   }
 
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -73,26 +91,5 @@ internal readonly struct FloatStep : IMeshBoxStep
                                                   Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qy), iy, fy)),
                               Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qz), iz, fz));
     return (int)Vector256.LessThanOrEqual(near, far).ExtractMostSignificantBits();
-  }
-
-  /// <summary>One axis's set-up: float inverse, the near and far offsets cN, cF, and the near plane (0 min, 3 max).</summary>
-  readonly struct Axis(Vector256<float> inv, Vector256<float> near, Vector256<float> far, int plane)
-  {
-    public readonly Vector256<float> Inv = inv, Near = near, Far = far;
-    public readonly int Plane = plane;
-
-    public static bool Make(double o, double inv, double m, out Axis axis)
-    {
-      axis = default;
-      double a = Math.Abs(inv), s = (Math.Abs(o) + m) * a;
-      // Written so that NaN fails too.
-      if (!(a >= Lowest && a <= Two100 && s >= Lowest && s <= Two100))
-        return false;
-      float f = (float)inv;
-      double oi = o * f, pad = Pad * s;
-      axis = new Axis(Vector256.Create(f), Vector256.Create(MeshNode.Down(-oi - pad)), Vector256.Create(MeshNode.Up(-oi + pad)),
-                      inv > 0.0 ? 0 : 3);
-      return true;
-    }
   }
 }

@@ -26,13 +26,14 @@ internal sealed partial class MeshBvh
   /// T ≤ <paramref name="tMax"/>; otherwise the last hit in that order among those it rejects. Allocation-free, nearest
   /// boxes first, pruned by the best so far.
   /// </summary>
+  [SkipLocalsInit]   // the float step (300 bytes) is written before it is read
   public bool Nearest(in Vector3d p0, in Vector3d p1, double len2, bool accepted, out MeshHit best, double tMax = double.PositiveInfinity)
   {
     best = default;
     if (!Start(p0, p1, out MeshLine line, out float near, out float far))
       return false;
-    return FloatStep.TryCreate(line, mx, my, mz, out FloatStep fast)
-      ? Nearest(fast, line, near, far, len2, accepted, out best, tMax)
+    return FloatStep.Bounded(line, mx, my, mz)
+      ? Nearest(new FloatStep(line, mx, my, mz), line, near, far, len2, accepted, out best, tMax)
       : Nearest(new DoubleStep(line), line, near, far, len2, accepted, out best, tMax);
   }
 
@@ -129,6 +130,7 @@ internal sealed partial class MeshBvh
   /// rejected one (<paramref name="last"/>). A box is opened while it may hold either; the one nearer the origin (in
   /// front or behind) is opened first. Boxes and triangles around the origin, which both searches need, are visited once.
   /// </summary>
+  [SkipLocalsInit]   // the float step (300 bytes) is written before it is read
   public void NearestBoth(in Vector3d p0, in Vector3d p1, double len2, out bool hasFirst, out MeshHit first, out bool hasLast, out MeshHit last)
   {
     first = last = default;
@@ -139,13 +141,13 @@ internal sealed partial class MeshBvh
     {
       // Every hit lies at T ≥ the box's entry > the limit: all are accepted and there is no last rejected one, so the
       // first is Nearest's (the least T, then triangle, whatever the walk): a ray from outside, ahead of the mesh.
-      hasFirst = FloatStep.TryCreate(line, mx, my, mz, out FloatStep ahead)
-        ? Nearest(ahead, line, near, far, len2, true, out first, double.PositiveInfinity)
+      hasFirst = FloatStep.Bounded(line, mx, my, mz)
+        ? Nearest(new FloatStep(line, mx, my, mz), line, near, far, len2, true, out first, double.PositiveInfinity)
         : Nearest(new DoubleStep(line), line, near, far, len2, true, out first, double.PositiveInfinity);
       return;
     }
-    if (FloatStep.TryCreate(line, mx, my, mz, out FloatStep fast))
-      NearestBoth(fast, line, near, far, len2, out hasFirst, out first, out hasLast, out last);
+    if (FloatStep.Bounded(line, mx, my, mz))
+      NearestBoth(new FloatStep(line, mx, my, mz), line, near, far, len2, out hasFirst, out first, out hasLast, out last);
     else
       NearestBoth(new DoubleStep(line), line, near, far, len2, out hasFirst, out first, out hasLast, out last);
   }
@@ -243,14 +245,15 @@ internal sealed partial class MeshBvh
   /// <paramref name="onlyBack"/> true when accepted back-face hits (exits) lie in that range. Boxes beyond
   /// <paramref name="tMax"/> or behind the origin are never opened.
   /// </summary>
+  [SkipLocalsInit]   // the float step (300 bytes) is written before it is read
   public bool AnyFront(in Vector3d p0, in Vector3d p1, double len2, double tMax, out MeshHit hit, out bool onlyBack)
   {
     hit = default;
     onlyBack = false;
     if (!Start(p0, p1, out MeshLine line, out float near, out float far) || far <= 0f || near > tMax)
       return false;
-    return FloatStep.TryCreate(line, mx, my, mz, out FloatStep fast)
-      ? AnyFront(fast, line, len2, tMax, out hit, out onlyBack)
+    return FloatStep.Bounded(line, mx, my, mz)
+      ? AnyFront(new FloatStep(line, mx, my, mz), line, len2, tMax, out hit, out onlyBack)
       : AnyFront(new DoubleStep(line), line, len2, tMax, out hit, out onlyBack);
   }
 

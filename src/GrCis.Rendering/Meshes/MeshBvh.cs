@@ -177,12 +177,13 @@ internal sealed partial class MeshBvh
   }
 
   /// <summary>Appends all hits of the line <c>p0 + t p1</c> (any t) to <paramref name="hits"/>, unsorted.</summary>
+  [SkipLocalsInit]   // the float step (300 bytes) is written before it is read
   public void IntersectAll(Vector3d p0, Vector3d p1, List<MeshHit> hits)
   {
     if (!Start(p0, p1, out MeshLine line, out _, out _))
       return;
-    if (FloatStep.TryCreate(line, mx, my, mz, out FloatStep fast))
-      IntersectAll(fast, line, hits);
+    if (FloatStep.Bounded(line, mx, my, mz))
+      IntersectAll(new FloatStep(line, mx, my, mz), line, hits);
     else
       IntersectAll(new DoubleStep(line), line, hits);
   }

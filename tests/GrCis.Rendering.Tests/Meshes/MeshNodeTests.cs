@@ -86,8 +86,9 @@ public class MeshNodeTests
         my = Math.Max(my, Math.Max(Math.Abs((double)node.MinY[l]), Math.Abs((double)node.MaxY[l])));
         mz = Math.Max(mz, Math.Max(Math.Abs((double)node.MinZ[l]), Math.Abs((double)node.MaxZ[l])));
       }
-      if (FloatStep.TryCreate(line, mx, my, mz, out FloatStep step))
+      if (FloatStep.Bounded(line, mx, my, mz))
       {
+        var step = new FloatStep(line, mx, my, mz);
         Check(step.Cross(in node, out Vector256<float> near, out Vector256<float> far), near, far);
         fast++;
       }
