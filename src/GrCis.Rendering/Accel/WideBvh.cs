@@ -6,9 +6,9 @@ namespace Rendering.Accel;
 /// A <see cref="Bvh"/> collapsed to four children per node (<see cref="WideNode"/>): one SIMD step tests four boxes,
 /// and a ray visits about half as many nodes. Built from the binary tree by pulling up grandchildren: while a node has
 /// fewer than four children, its inner child of largest surface area is replaced by that child's two children. The
-/// leaves, and so <see cref="Items"/>, are the binary tree's. The traversals (<see cref="PreparedScene"/>,
-/// <see cref="MeshBvh"/>) pick the answer by T and then by item, not by visiting order, so the order of a node's lanes
-/// only affects speed.
+/// leaves, and so <see cref="Items"/>, are the binary tree's. The scene traversal (<see cref="PreparedScene"/>) picks
+/// the answer by T and then by item, not by visiting order, so the order of a node's lanes only affects speed. (A mesh's
+/// tree is collapsed the same way to eight float boxes per node: <see cref="MeshNode"/>.)
 /// </summary>
 internal sealed class WideBvh
 {

@@ -125,8 +125,12 @@ internal struct WideNode
     double.IsFinite(ox) && double.IsFinite(oy) && double.IsFinite(oz) &&
     double.IsFinite(ix) && double.IsFinite(iy) && double.IsFinite(iz) && ix != 0.0 && iy != 0.0 && iz != 0.0;
 
+  /// <summary>
+  /// One axis of <see cref="Cross"/>: narrows [near, far] by the slab [min, max]; a NaN parameter leaves the lane as it is
+  /// (also the mesh tree's double fallback, <see cref="Rendering.DoubleStep"/>).
+  /// </summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  static void LineSlab(Vector256<double> min, Vector256<double> max, Vector256<double> o, Vector256<double> inv,
+  internal static void LineSlab(Vector256<double> min, Vector256<double> max, Vector256<double> o, Vector256<double> inv,
                        Vector256<double> lo, Vector256<double> hi, ref Vector256<double> near, ref Vector256<double> far)
   {
     Vector256<double> t0 = (min - o) * inv, t1 = (max - o) * inv;

@@ -26,54 +26,62 @@ internal sealed partial class MeshBvh
   /// T ≤ <paramref name="tMax"/>; otherwise the last hit in that order among those it rejects. Allocation-free, nearest
   /// boxes first, pruned by the best so far.
   /// </summary>
-  [SkipLocalsInit]   // the stack is written before it is read: no zeroing of it per query
+  [SkipLocalsInit]   // the float step (300 bytes) is written before it is read
   public bool Nearest(in Vector3d p0, in Vector3d p1, double len2, bool accepted, out MeshHit best, double tMax = double.PositiveInfinity)
   {
     best = default;
-    if (triangles == 0)
+    if (!Start(p0, p1, out MeshLine line, out float near, out float far))
       return false;
-    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
-    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
+    return FloatStep.Bounded(line, mx, my, mz)
+      ? Nearest(new FloatStep(line, mx, my, mz), line, near, far, len2, accepted, out best, tMax)
+      : Nearest(new DoubleStep(line), line, near, far, len2, accepted, out best, tMax);
+  }
 
+  [SkipLocalsInit]   // the stack is written before it is read: no zeroing of it per query
+  bool Nearest<TStep>(in TStep step, in MeshLine line, float rootNear, float rootFar, double len2, bool accepted,
+                      out MeshHit best, double tMax) where TStep : struct, IMeshBoxStep
+  {
+    best = default;
     double limit = RejectLimit(len2);
     bool found = false;
     // Accepted: boxes beyond tMax are never opened, hits beyond it never taken.
     double bestT = accepted ? tMax : double.NegativeInfinity;
     int bestTri = 0;
-    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar))
-      return false;
-    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
-    Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
-    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
-    bool finite = wide.FiniteBoxes && WideNode.NoNaN(ox, oy, oz, ix, iy, iz);   // decided once per ray: the cheaper box test, the same answers
+    Vector256<double> vox = Vector256.Create(line.Ox), voy = Vector256.Create(line.Oy), voz = Vector256.Create(line.Oz);
+    Vector256<double> vdx = Vector256.Create(line.Dx), vdy = Vector256.Create(line.Dy), vdz = Vector256.Create(line.Dz);
     Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
-    WideNode[] nodes = wide.Nodes;
+    // The float bounds of the boxes still worth opening (rounded outward: a box the double bounds keep is kept):
+    // accepted T in (0, best], rejected T in [best, limit].
+    Vector256<float> lo = Vector256.Create(accepted ? 0f : MeshNode.Down(bestT));
+    Vector256<float> hi = Vector256.Create(MeshNode.Up(accepted ? bestT : limit));
+    ref MeshNode nodes = ref FirstNode();
 
-    // Each entry: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)) and the line's parameter interval in its box,
+    // Each entry: an inner node (≥ 0) or a leaf lane (~(node·8 + lane)) and the line's parameter interval in its box,
     // re-checked against the best when popped; the root's interval is that of the whole mesh's box.
-    int size = wide.StackSize;
-    // On the stack (not zeroed) up to a tree depth of about 170; only a degenerate mesh's tree is deeper.
-    Span<NodeSpan> stack = size <= 512 ? stackalloc NodeSpan[size] : new NodeSpan[size];
+    // On the stack (not zeroed) up to a tree depth of about 70; only a degenerate mesh's tree is deeper.
+    Span<NodeSpan> stack = stackSize <= 512 ? stackalloc NodeSpan[stackSize] : new NodeSpan[stackSize];
     int sp = 0;
     stack[sp++] = new NodeSpan(0, rootNear, rootFar);
     while (sp > 0)
     {
       NodeSpan e = stack[--sp];
-      // Accepted: T in (0, best]; rejected: T in [best, limit].
       if (accepted ? (e.Far <= 0.0 || e.Near > bestT) : (e.Near > limit || e.Far < bestT))
         continue;
       int code = e.Node;
       if (code >= 0)
       {
-        ref WideNode n = ref nodes[code];
-        int mask = n.Cross(vox, voy, voz, vix, viy, viz, finite, out Vector256<double> near, out Vector256<double> far);
+        ref MeshNode n = ref Unsafe.Add(ref nodes, code);
+        int mask = step.Cross(in n, out Vector256<float> near, out Vector256<float> far);
+        mask &= accepted
+          ? (int)(Vector256.GreaterThan(far, lo) & Vector256.LessThanOrEqual(near, hi)).ExtractMostSignificantBits()
+          : (int)(Vector256.GreaterThanOrEqual(far, lo) & Vector256.LessThanOrEqual(near, hi)).ExtractMostSignificantBits();
         // The boxes more likely to hold the answer are popped first: nearest entry for the first accepted hit,
         // farthest exit for the last rejected one. Pushed in insertion order, most likely last.
         int first = sp;
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
+          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
           int k = sp++;
           for (; k > first && (accepted ? stack[k - 1].Near < s.Near : stack[k - 1].Far > s.Far); k--)
             stack[k] = stack[k - 1];
@@ -81,7 +89,7 @@ internal sealed partial class MeshBvh
         }
         continue;
       }
-      Leaf(nodes, code, out int block, out int end);
+      Leaf(ref nodes, code, out int block, out int end);
       for (; block < end; block++)
       {
         int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
@@ -106,6 +114,10 @@ internal sealed partial class MeshBvh
             bestT = tl;
             bestTri = id;
             best = new MeshHit { T = tl, Triangle = id, U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
+            if (accepted)
+              hi = Vector256.Create(MeshNode.Up(bestT));
+            else
+              lo = Vector256.Create(MeshNode.Down(bestT));
           }
         }
       }
@@ -118,29 +130,46 @@ internal sealed partial class MeshBvh
   /// rejected one (<paramref name="last"/>). A box is opened while it may hold either; the one nearer the origin (in
   /// front or behind) is opened first. Boxes and triangles around the origin, which both searches need, are visited once.
   /// </summary>
-  [SkipLocalsInit]   // the stack is written before it is read
+  [SkipLocalsInit]   // the float step (300 bytes) is written before it is read
   public void NearestBoth(in Vector3d p0, in Vector3d p1, double len2, out bool hasFirst, out MeshHit first, out bool hasLast, out MeshHit last)
   {
     first = last = default;
     hasFirst = hasLast = false;
-    if (triangles == 0)
+    if (!Start(p0, p1, out MeshLine line, out float near, out float far))
       return;
-    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
-    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
-    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar))
+    if (near > RejectLimit(len2))
+    {
+      // Every hit lies at T ≥ the box's entry > the limit: all are accepted and there is no last rejected one, so the
+      // first is Nearest's (the least T, then triangle, whatever the walk): a ray from outside, ahead of the mesh.
+      hasFirst = FloatStep.Bounded(line, mx, my, mz)
+        ? Nearest(new FloatStep(line, mx, my, mz), line, near, far, len2, true, out first, double.PositiveInfinity)
+        : Nearest(new DoubleStep(line), line, near, far, len2, true, out first, double.PositiveInfinity);
       return;
+    }
+    if (FloatStep.Bounded(line, mx, my, mz))
+      NearestBoth(new FloatStep(line, mx, my, mz), line, near, far, len2, out hasFirst, out first, out hasLast, out last);
+    else
+      NearestBoth(new DoubleStep(line), line, near, far, len2, out hasFirst, out first, out hasLast, out last);
+  }
+
+  [SkipLocalsInit]   // the stack is written before it is read
+  void NearestBoth<TStep>(in TStep step, in MeshLine line, float rootNear, float rootFar, double len2,
+                          out bool hasFirst, out MeshHit first, out bool hasLast, out MeshHit last) where TStep : struct, IMeshBoxStep
+  {
+    first = last = default;
+    hasFirst = hasLast = false;
     double limit = RejectLimit(len2);
     double bestF = double.PositiveInfinity, bestB = double.NegativeInfinity;
     int triF = 0, triB = 0;
-    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
-    Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
-    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
-    bool finite = wide.FiniteBoxes && WideNode.NoNaN(ox, oy, oz, ix, iy, iz);   // decided once per ray: the cheaper box test, the same answers
-    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vlimit = Vector256.Create(limit);
-    WideNode[] nodes = wide.Nodes;
+    Vector256<double> vox = Vector256.Create(line.Ox), voy = Vector256.Create(line.Oy), voz = Vector256.Create(line.Oz);
+    Vector256<double> vdx = Vector256.Create(line.Dx), vdy = Vector256.Create(line.Dy), vdz = Vector256.Create(line.Dz);
+    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2);
+    // Float bounds rounded outward, as in Nearest.
+    Vector256<float> hiF = Vector256.Create(float.PositiveInfinity), loB = Vector256.Create(float.NegativeInfinity);
+    Vector256<float> vlimit = Vector256.Create(MeshNode.Up(limit));
+    ref MeshNode nodes = ref FirstNode();
 
-    int size = wide.StackSize;
-    Span<NodeSpan> stack = size <= 512 ? stackalloc NodeSpan[size] : new NodeSpan[size];
+    Span<NodeSpan> stack = stackSize <= 512 ? stackalloc NodeSpan[stackSize] : new NodeSpan[stackSize];
     int sp = 0;
     stack[sp++] = new NodeSpan(0, rootNear, rootFar);
     while (sp > 0)
@@ -152,28 +181,28 @@ internal sealed partial class MeshBvh
       int code = e.Node;
       if (code >= 0)
       {
-        ref WideNode n = ref nodes[code];
-        int mask = n.Cross(vox, voy, voz, vix, viy, viz, finite, out Vector256<double> near, out Vector256<double> far);
+        ref MeshNode n = ref Unsafe.Add(ref nodes, code);
+        int mask = step.Cross(in n, out Vector256<float> near, out Vector256<float> far);
         // Only boxes either search still needs; the rest would be dropped when popped.
-        Vector256<double> zero = Vector256<double>.Zero;
-        mask &= (int)((Vector256.GreaterThan(far, zero) & Vector256.LessThanOrEqual(near, Vector256.Create(bestF))) |
-                      (Vector256.LessThanOrEqual(near, vlimit) & Vector256.GreaterThanOrEqual(far, Vector256.Create(bestB)))).ExtractMostSignificantBits();
+        Vector256<float> zero = Vector256<float>.Zero;
+        mask &= (int)((Vector256.GreaterThan(far, zero) & Vector256.LessThanOrEqual(near, hiF)) |
+                      (Vector256.LessThanOrEqual(near, vlimit) & Vector256.GreaterThanOrEqual(far, loB))).ExtractMostSignificantBits();
         // Distance from the origin along the line (negative for a box around it): the smallest is popped first.
-        Vector256<double> key = Vector256.MaxNative(near, -far);
+        Vector256<float> key = Vector256.MaxNative(near, -far);
         int pushed = sp;
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
-          double sk = key.GetElement(lane);
+          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
+          float sk = key.GetElement(lane);
           int k = sp++;
-          for (; k > pushed && Math.Max(stack[k - 1].Near, -stack[k - 1].Far) < sk; k--)
+          for (; k > pushed && MathF.Max(stack[k - 1].Near, -stack[k - 1].Far) < sk; k--)
             stack[k] = stack[k - 1];
           stack[k] = s;
         }
         continue;
       }
-      Leaf(nodes, code, out int block, out int end);
+      Leaf(ref nodes, code, out int block, out int end);
       for (; block < end; block++)
       {
         int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
@@ -193,6 +222,7 @@ internal sealed partial class MeshBvh
               hasFirst = true;
               bestF = tl;
               triF = id;
+              hiF = Vector256.Create(MeshNode.Up(bestF));
               first = new MeshHit { T = tl, Triangle = id, U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
             }
           }
@@ -201,6 +231,7 @@ internal sealed partial class MeshBvh
             hasLast = true;
             bestB = tl;
             triB = id;
+            loB = Vector256.Create(MeshNode.Down(bestB));
             last = new MeshHit { T = tl, Triangle = id, U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
           }
         }
@@ -214,27 +245,32 @@ internal sealed partial class MeshBvh
   /// <paramref name="onlyBack"/> true when accepted back-face hits (exits) lie in that range. Boxes beyond
   /// <paramref name="tMax"/> or behind the origin are never opened.
   /// </summary>
-  [SkipLocalsInit]   // the stack is written before it is read
+  [SkipLocalsInit]   // the float step (300 bytes) is written before it is read
   public bool AnyFront(in Vector3d p0, in Vector3d p1, double len2, double tMax, out MeshHit hit, out bool onlyBack)
   {
     hit = default;
     onlyBack = false;
-    if (triangles == 0)
+    if (!Start(p0, p1, out MeshLine line, out float near, out float far) || far <= 0f || near > tMax)
       return false;
-    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
-    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
-    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar) || rootFar <= 0.0 || rootNear > tMax)
-      return false;
-    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
-    Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
-    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
-    bool finite = wide.FiniteBoxes && WideNode.NoNaN(ox, oy, oz, ix, iy, iz);   // decided once per ray: the cheaper box test, the same answers
-    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
-    WideNode[] nodes = wide.Nodes;
+    return FloatStep.Bounded(line, mx, my, mz)
+      ? AnyFront(new FloatStep(line, mx, my, mz), line, len2, tMax, out hit, out onlyBack)
+      : AnyFront(new DoubleStep(line), line, len2, tMax, out hit, out onlyBack);
+  }
 
-    // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)); only boxes meeting (0, tMax] are pushed.
-    int size = wide.StackSize;
-    Span<int> stack = size <= 1024 ? stackalloc int[size] : new int[size];
+  [SkipLocalsInit]   // the stack is written before it is read
+  bool AnyFront<TStep>(in TStep step, in MeshLine line, double len2, double tMax, out MeshHit hit, out bool onlyBack)
+    where TStep : struct, IMeshBoxStep
+  {
+    hit = default;
+    onlyBack = false;
+    Vector256<double> vox = Vector256.Create(line.Ox), voy = Vector256.Create(line.Oy), voz = Vector256.Create(line.Oz);
+    Vector256<double> vdx = Vector256.Create(line.Dx), vdy = Vector256.Create(line.Dy), vdz = Vector256.Create(line.Dz);
+    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
+    Vector256<float> hi = Vector256.Create(MeshNode.Up(tMax));   // rounded up: no box the double bound keeps is lost
+    ref MeshNode nodes = ref FirstNode();
+
+    // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·8 + lane)); only boxes meeting (0, tMax] are pushed.
+    Span<int> stack = stackSize <= 1024 ? stackalloc int[stackSize] : new int[stackSize];
     int sp = 0;
     stack[sp++] = 0;
     while (sp > 0)
@@ -242,17 +278,17 @@ internal sealed partial class MeshBvh
       int code = stack[--sp];
       if (code >= 0)
       {
-        ref WideNode n = ref nodes[code];
-        int mask = n.Cross(vox, voy, voz, vix, viy, viz, finite, out Vector256<double> near, out Vector256<double> far);
-        mask &= (int)(Vector256.GreaterThan(far, Vector256<double>.Zero) & Vector256.LessThanOrEqual(near, vtMax)).ExtractMostSignificantBits();
+        ref MeshNode n = ref Unsafe.Add(ref nodes, code);
+        int mask = step.Cross(in n, out Vector256<float> near, out Vector256<float> far);
+        mask &= (int)(Vector256.GreaterThan(far, Vector256<float>.Zero) & Vector256.LessThanOrEqual(near, hi)).ExtractMostSignificantBits();
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);
+          stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane);
         }
         continue;
       }
-      Leaf(nodes, code, out int block, out int end);
+      Leaf(ref nodes, code, out int block, out int end);
       for (; block < end; block++)
       {
         int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
@@ -277,5 +313,6 @@ internal sealed partial class MeshBvh
     return false;
   }
 
-  readonly record struct NodeSpan(int Node, double Near, double Far);
+  /// <summary>A stack entry: node code and the line's parameter interval in its box (floats, rounded outward).</summary>
+  readonly record struct NodeSpan(int Node, float Near, float Far);
 }

@@ -3,6 +3,7 @@ using System;
 using System.Buffers;
 using System.Collections.Generic;
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
 using OpenTK.Mathematics;
 using Rendering.Accel;
@@ -10,8 +11,8 @@ using Rendering.Accel;
 namespace Rendering;
 
 /// <summary>
-/// A mesh's triangles under the generic <see cref="Bvh"/>, collapsed to four children per node (<see cref="WideBvh"/>),
-/// with the allocation-free traversals a mesh needs: every hit along the whole line (negative t included, because CSG
+/// A mesh's triangles under the generic <see cref="Bvh"/>, collapsed to eight children per node with float boxes
+/// (<see cref="MeshNode"/>, tested eight at a time by <see cref="FloatStep"/>), with the allocation-free traversals a mesh needs: every hit along the whole line (negative t included, because CSG
 /// needs the complete list), the nearest accepted and last rejected hit (<c>MeshBvh.Queries.cs</c>) and an any-hit
 /// walk. A leaf's triangles are stored four at a time in leaf order (<see cref="TriangleBlock"/>) and tested with
 /// Möller–Trumbore in exactly <see cref="MeshTriangles"/>' arithmetic, so every query finds the hits, to the bit, that
@@ -19,8 +20,13 @@ namespace Rendering;
 /// </summary>
 internal sealed partial class MeshBvh
 {
-  readonly WideBvh wide;      // leaf lanes: Index = first block of the leaf, Count = its triangles
+  // The nodes (leaf lanes: Index = first block of the leaf, Count = its blocks) in a pinned buffer from a 64-byte boundary on:
+  // a node is then four whole cache lines and no 32-byte load straddles two (a managed array is only 8-byte aligned).
+  readonly byte[] nodeMemory;
+  readonly int nodeStart, nodeCount;
+  readonly int stackSize;     // traversal stack entries that can be live at once
   readonly BvhNode root;      // the box around every triangle
+  readonly double mx, my, mz; // largest |coordinate| of the float boxes per axis, +∞ when a box is not finite in floats
   readonly TriangleBlock[] blocks;
   readonly int[] ids;         // block·4 + lane → original triangle handle (−1 in unused lanes)
   readonly int triangles, binaryNodes;
@@ -29,8 +35,8 @@ internal sealed partial class MeshBvh
 
   public int NodeCount => binaryNodes;
 
-  /// <summary>Nodes of the four-wide tree the fast queries walk.</summary>
-  public int WideNodeCount => wide.Nodes.Length;
+  /// <summary>Nodes of the eight-wide tree the queries walk.</summary>
+  public int WideNodeCount => nodeCount;
 
   /// <summary>Size of the mesh's box (for relative tolerances).</summary>
   public double Extent { get; }
@@ -68,23 +74,56 @@ internal sealed partial class MeshBvh
     double magnitude = 0.0;
     for (int axis = 0; axis < 3 && n > 0; axis++)
       magnitude = Math.Max(magnitude, Math.Max(Math.Abs(rootBox.Min[axis]), Math.Abs(rootBox.Max[axis])));
-    wide = WideBvh.Collapse(tree, 1e-9 * (Extent + magnitude));
-    (blocks, ids) = Store(mesh, wide.Nodes, order);
+    double pad = 1e-9 * (Extent + magnitude);
+    MeshNode[] nodes = MeshNode.Collapse(tree, pad, out stackSize);
+    (blocks, ids) = Store(mesh, nodes, order);
+    nodeCount = nodes.Length;
+    (nodeMemory, nodeStart) = Aligned(nodes);
+    // Every float box lies in the root's (boxes nest; outward rounding is monotone): its coordinates bound them all.
+    mx = Magnitude(root.MinX - pad, root.MaxX + pad);
+    my = Magnitude(root.MinY - pad, root.MaxY + pad);
+    mz = Magnitude(root.MinZ - pad, root.MaxZ + pad);
+  }
+
+  static (byte[] Memory, int Start) Aligned(MeshNode[] nodes)
+  {
+    const int Line = 64;
+    int size = nodes.Length * Unsafe.SizeOf<MeshNode>();
+    byte[] memory = GC.AllocateUninitializedArray<byte>(size + Line, pinned: true);   // never moved
+    int start;
+    unsafe
+    {
+      fixed (byte* p = memory)
+        start = (int)((Line - (nint)p % Line) % Line);
+    }
+    MemoryMarshal.AsBytes(nodes.AsSpan()).CopyTo(memory.AsSpan(start, size));
+    return (memory, start);
+  }
+
+  /// <summary>The first node (the root); node i is <c>Unsafe.Add(ref FirstNode(), i)</c>.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  ref MeshNode FirstNode() => ref Unsafe.As<byte, MeshNode>(ref nodeMemory[nodeStart]);
+
+  // The largest |coordinate| of the float slab [min, max] rounded outward (+∞ when it leaves the float range or is NaN).
+  static double Magnitude(double min, double max)
+  {
+    double m = Math.Max(Math.Abs((double)MeshNode.Down(min)), Math.Abs((double)MeshNode.Up(max)));
+    return double.IsFinite(m) ? m : double.PositiveInfinity;
   }
 
   /// <summary>
   /// The triangles in blocks of four, each leaf's from a new block in leaf order; the wide leaf lanes are pointed at
   /// their first block.
   /// </summary>
-  static (TriangleBlock[] Blocks, int[] Ids) Store(SceneBrep mesh, WideNode[] nodes, int[] order)
+  static (TriangleBlock[] Blocks, int[] Ids) Store(SceneBrep mesh, MeshNode[] nodes, int[] order)
   {
     int n = order.Length;
     // Leaves cover [0, n) in leaf order without overlap: a leaf is known by its first item.
     int[] countAt = ArrayPool<int>.Shared.Rent(n + 1);
     Array.Clear(countAt, 0, n + 1);
-    foreach (ref readonly WideNode node in nodes.AsSpan())
-      for (int lane = 0; lane < WideNode.Width; lane++)
-        if ((node.Valid >> lane & 1) != 0 && node.Count[lane] > 0)
+    foreach (ref readonly MeshNode node in nodes.AsSpan())
+      for (int lane = 0; lane < MeshNode.Width; lane++)
+        if (node.Count[lane] > 0)
           countAt[node.Index[lane]] = node.Count[lane];
     // Each item's place (block · 4 + lane); countAt becomes each leaf's first block.
     int[] place = ArrayPool<int>.Shared.Rent(n);
@@ -98,10 +137,13 @@ internal sealed partial class MeshBvh
       used += (count + TriangleBlock.Width - 1) / TriangleBlock.Width;
       i += Math.Max(count, 1);
     }
-    foreach (ref WideNode node in nodes.AsSpan())
-      for (int lane = 0; lane < WideNode.Width; lane++)
-        if ((node.Valid >> lane & 1) != 0 && node.Count[lane] > 0)
+    foreach (ref MeshNode node in nodes.AsSpan())
+      for (int lane = 0; lane < MeshNode.Width; lane++)
+        if (node.Count[lane] > 0)
+        {
           node.Index[lane] = countAt[node.Index[lane]];
+          node.Count[lane] = (node.Count[lane] + TriangleBlock.Width - 1) / TriangleBlock.Width;
+        }
 
     var blocks = new TriangleBlock[used];
     var ids = new int[TriangleBlock.Width * used];
@@ -135,24 +177,26 @@ internal sealed partial class MeshBvh
   }
 
   /// <summary>Appends all hits of the line <c>p0 + t p1</c> (any t) to <paramref name="hits"/>, unsorted.</summary>
-  [SkipLocalsInit]   // the stack is written before it is read
+  [SkipLocalsInit]   // the float step (300 bytes) is written before it is read
   public void IntersectAll(Vector3d p0, Vector3d p1, List<MeshHit> hits)
   {
-    if (triangles == 0)
+    if (!Start(p0, p1, out MeshLine line, out _, out _))
       return;
-    double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
-    double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
-    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out _, out _))
-      return;
-    Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
-    Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
-    Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
-    bool finite = wide.FiniteBoxes && WideNode.NoNaN(ox, oy, oz, ix, iy, iz);   // decided once per ray: the cheaper box test, the same answers
-    WideNode[] nodes = wide.Nodes;
+    if (FloatStep.Bounded(line, mx, my, mz))
+      IntersectAll(new FloatStep(line, mx, my, mz), line, hits);
+    else
+      IntersectAll(new DoubleStep(line), line, hits);
+  }
+
+  [SkipLocalsInit]   // the stack is written before it is read
+  void IntersectAll<TStep>(in TStep step, in MeshLine line, List<MeshHit> hits) where TStep : struct, IMeshBoxStep
+  {
+    Vector256<double> vox = Vector256.Create(line.Ox), voy = Vector256.Create(line.Oy), voz = Vector256.Create(line.Oz);
+    Vector256<double> vdx = Vector256.Create(line.Dx), vdy = Vector256.Create(line.Dy), vdz = Vector256.Create(line.Dz);
+    ref MeshNode nodes = ref FirstNode();
 
     // Entries as in Nearest; every box the line crosses (any t) is opened.
-    int size = wide.StackSize;
-    Span<int> stack = size <= 1024 ? stackalloc int[size] : new int[size];
+    Span<int> stack = stackSize <= 1024 ? stackalloc int[stackSize] : new int[stackSize];
     int sp = 0;
     stack[sp++] = 0;
     while (sp > 0)
@@ -160,15 +204,15 @@ internal sealed partial class MeshBvh
       int code = stack[--sp];
       if (code >= 0)
       {
-        ref WideNode n = ref nodes[code];
-        for (int mask = n.Cross(vox, voy, voz, vix, viy, viz, finite, out _, out _); mask != 0; mask &= mask - 1)
+        ref MeshNode n = ref Unsafe.Add(ref nodes, code);
+        for (int mask = step.Cross(in n, out _, out _); mask != 0; mask &= mask - 1)
         {
           int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
-          stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);
+          stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane);
         }
         continue;
       }
-      Leaf(nodes, code, out int block, out int end);
+      Leaf(ref nodes, code, out int block, out int end);
       for (; block < end; block++)
       {
         int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
@@ -189,14 +233,29 @@ internal sealed partial class MeshBvh
     }
   }
 
-  /// <summary>The blocks [<paramref name="block"/>, <paramref name="end"/>) of the leaf a stack entry ~(node·4 + lane) names.</summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  static void Leaf(WideNode[] nodes, int code, out int block, out int end)
+  /// <summary>
+  /// The per-ray set-up every walk shares: the line with its inverse direction, and its parameter interval in the box
+  /// around every triangle (rounded outward to floats); false when there is nothing to find.
+  /// </summary>
+  bool Start(in Vector3d p0, in Vector3d p1, out MeshLine line, out float near, out float far)
   {
-    int slot = ~code;
-    ref WideNode parent = ref nodes[slot / WideNode.Width];
-    block = parent.Index[slot % WideNode.Width];
-    end = block + (parent.Count[slot % WideNode.Width] + TriangleBlock.Width - 1) / TriangleBlock.Width;
+    line = new MeshLine(p0.X, p0.Y, p0.Z, p1.X, p1.Y, p1.Z);
+    near = far = 0f;
+    if (triangles == 0 || !LineBox(line, out double tMin, out double tMax))
+      return false;
+    near = MeshNode.Down(tMin);
+    far = MeshNode.Up(tMax);
+    return true;
+  }
+
+  /// <summary>The blocks [<paramref name="block"/>, <paramref name="end"/>) of the leaf a stack entry ~(node·8 + lane) names.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static void Leaf(ref MeshNode nodes, int code, out int block, out int end)
+  {
+    int slot = ~code;   // ≥ 0
+    ref MeshNode parent = ref Unsafe.Add(ref nodes, slot >> 3);
+    block = parent.Index[slot & 7];
+    end = block + parent.Count[slot & 7];
   }
 
   static bool Slab(double min, double max, double o, double d, double inv, ref double tMin, ref double tMax)
@@ -214,13 +273,12 @@ internal sealed partial class MeshBvh
   }
 
   /// <summary>Parameter interval of the line in the box around every triangle (widened slabs).</summary>
-  bool LineBox(double ox, double oy, double oz, double dx, double dy, double dz, double ix, double iy, double iz,
-               out double tMin, out double tMax)
+  bool LineBox(in MeshLine l, out double tMin, out double tMax)
   {
     tMin = double.NegativeInfinity;
     tMax = double.PositiveInfinity;
-    return Slab(root.MinX, root.MaxX, ox, dx, ix, ref tMin, ref tMax) &&
-           Slab(root.MinY, root.MaxY, oy, dy, iy, ref tMin, ref tMax) &&
-           Slab(root.MinZ, root.MaxZ, oz, dz, iz, ref tMin, ref tMax);
+    return Slab(root.MinX, root.MaxX, l.Ox, l.Dx, l.Ix, ref tMin, ref tMax) &&
+           Slab(root.MinY, root.MaxY, l.Oy, l.Dy, l.Iy, ref tMin, ref tMax) &&
+           Slab(root.MinZ, root.MaxZ, l.Oz, l.Dz, l.Iz, ref tMin, ref tMax);
   }
 }

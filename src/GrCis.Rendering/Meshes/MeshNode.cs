@@ -1,0 +1,173 @@
+using System;
+using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
+using Rendering.Accel;
+
+namespace Rendering;
+
+/// <summary>
+/// One node of a mesh's eight-wide tree (<see cref="MeshBvh"/>): up to eight child boxes side by side in floats (lane l
+/// of each vector is child l), so one 256-bit step tests eight boxes (<see cref="FloatStep"/>). The boxes are the
+/// binary tree's (padded) double boxes rounded outward, so each contains its double box: a box test on them may keep
+/// more, never fewer. Lane l is an inner child (<see cref="Count"/>[l] == 0, node <see cref="Index"/>[l]) or a leaf
+/// (<see cref="Count"/>[l] triangle blocks from <see cref="Index"/>[l] on). An unused lane holds the empty box
+/// (min +∞, max −∞), which no line crosses.
+/// </summary>
+internal struct MeshNode
+{
+  public const int Width = 8;
+
+  // Planes in this order, so a per-ray plane number 0…5 picks a field (FloatStep): min x, y, z, then max x, y, z.
+  public Vector256<float> MinX, MinY, MinZ, MaxX, MaxY, MaxZ;
+  public Lanes Index, Count;
+
+  /// <summary>Eight ints, one per lane.</summary>
+  [InlineArray(Width)]
+  public struct Lanes
+  {
+    int lane;
+  }
+
+  /// <summary>Every lane empty (min +∞, max −∞).</summary>
+  public void Clear()
+  {
+    MinX = MinY = MinZ = Vector256.Create(float.PositiveInfinity);
+    MaxX = MaxY = MaxZ = Vector256.Create(float.NegativeInfinity);
+  }
+
+  /// <summary>Puts <paramref name="box"/> grown by <paramref name="pad"/> in lane <paramref name="lane"/>, rounded outward to floats.</summary>
+  public void SetBox(int lane, in BvhNode box, double pad)
+  {
+    MinX = MinX.WithElement(lane, Down(box.MinX - pad));
+    MinY = MinY.WithElement(lane, Down(box.MinY - pad));
+    MinZ = MinZ.WithElement(lane, Down(box.MinZ - pad));
+    MaxX = MaxX.WithElement(lane, Up(box.MaxX + pad));
+    MaxY = MaxY.WithElement(lane, Up(box.MaxY + pad));
+    MaxZ = MaxZ.WithElement(lane, Up(box.MaxZ + pad));
+  }
+
+  /// <summary>The largest float ≤ <paramref name="x"/> (−∞ below the float range; NaN stays NaN).</summary>
+  public static float Down(double x)
+  {
+    float f = (float)x;
+    return f > x ? MathF.BitDecrement(f) : f;
+  }
+
+  /// <summary>The smallest float ≥ <paramref name="x"/> (+∞ above the float range; NaN stays NaN).</summary>
+  public static float Up(double x)
+  {
+    float f = (float)x;
+    return f < x ? MathF.BitIncrement(f) : f;
+  }
+
+  /// <summary>
+  /// The eight-wide tree of <paramref name="tree"/>: while a node has fewer than eight children, its inner child of
+  /// largest surface area is replaced by that child's two children (as <see cref="WideBvh.Collapse"/> does for four).
+  /// Leaf lanes get the binary leaf's first item and item count (the caller turns them into blocks). Boxes grown by
+  /// <paramref name="pad"/>. <paramref name="stackSize"/>: traversal stack entries that can be live at once (each step
+  /// pops one entry and pushes at most eight: seven more per level of this tree, whose depth is about a third of the
+  /// binary tree's; sized by the binary depth, a stack would often be too large to live on the thread's stack).
+  /// </summary>
+  public static MeshNode[] Collapse(Bvh tree, double pad, out int stackSize)
+  {
+    stackSize = 2;
+    if (tree.Items.Length == 0)
+    {
+      var none = new MeshNode[1];   // a tree over nothing: one node without lanes
+      none[0].Clear();
+      return none;
+    }
+    // Counted first, so the nodes are written straight into their final array (no list to grow and copy).
+    int count = 0, depth = 0;
+    new Collapser(tree, pad, null).Node(0, 1, ref count, ref depth);
+    var nodes = new MeshNode[count];
+    count = 0;
+    new Collapser(tree, pad, nodes).Node(0, 1, ref count, ref depth);
+    stackSize = (Width - 1) * depth + 2;
+    return nodes;
+  }
+
+  readonly struct Collapser(Bvh tree, double pad, MeshNode[]? nodes)
+  {
+    /// <summary>
+    /// Adds the node whose children are those of binary node <paramref name="binary"/> (or the node itself, a leaf root)
+    /// at <paramref name="used"/>, its subtree after it; without an array, only counts. <paramref name="depth"/>: the
+    /// deepest level reached (this node's is <paramref name="level"/>).
+    /// </summary>
+    public int Node(int binary, int level, ref int used, ref int depth)
+    {
+      BvhNode[] b = tree.Nodes;
+      Span<int> picks = stackalloc int[Width];
+      Span<double> areas = stackalloc double[Width];   // −1 for a leaf: never opened
+      int count;
+      if (b[binary].Count > 0)
+      {
+        picks[0] = binary;   // only the root can be a leaf here: a one-lane node over it
+        areas[0] = -1.0;
+        count = 1;
+      }
+      else
+      {
+        Add(b, picks, areas, 0, binary + 1);
+        Add(b, picks, areas, 1, b[binary].Index);
+        count = 2;
+      }
+      while (count < Width)
+      {
+        int widest = -1;
+        double area = -1.0;
+        for (int k = 0; k < count; k++)
+          if (areas[k] > area)
+          {
+            area = areas[k];
+            widest = k;
+          }
+        if (widest < 0)
+          break;
+        // Its two children take its place, in order: lanes stay in the binary tree's left-to-right order.
+        int inner = picks[widest];
+        for (int k = count; k > widest + 1; k--)
+        {
+          picks[k] = picks[k - 1];
+          areas[k] = areas[k - 1];
+        }
+        Add(b, picks, areas, widest, inner + 1);
+        Add(b, picks, areas, widest + 1, b[inner].Index);
+        count++;
+      }
+
+      int self = used++;
+      depth = Math.Max(depth, level);
+      if (nodes == null)
+      {
+        for (int lane = 0; lane < count; lane++)
+          if (b[picks[lane]].Count == 0)
+            Node(picks[lane], level + 1, ref used, ref depth);
+        return self;
+      }
+      ref MeshNode node = ref nodes[self];
+      node.Clear();
+      for (int lane = 0; lane < count; lane++)
+      {
+        ref BvhNode child = ref b[picks[lane]];
+        node.SetBox(lane, child, pad);
+        if (child.Count > 0)
+        {
+          node.Index[lane] = child.Index;
+          node.Count[lane] = child.Count;
+        }
+        else
+          node.Index[lane] = Node(picks[lane], level + 1, ref used, ref depth);
+      }
+      return self;
+    }
+
+    static void Add(BvhNode[] b, Span<int> picks, Span<double> areas, int at, int child)
+    {
+      picks[at] = child;
+      ref BvhNode n = ref b[child];
+      double x = n.MaxX - n.MinX, y = n.MaxY - n.MinY, z = n.MaxZ - n.MinZ;
+      areas[at] = n.Count > 0 ? -1.0 : x * y + y * z + z * x;
+    }
+  }
+}
