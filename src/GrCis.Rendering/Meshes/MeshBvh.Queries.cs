@@ -209,13 +209,14 @@ internal sealed partial class MeshBvh
   }
 
   /// <summary>
-  /// Any-hit with early exit: some hit that <see cref="Intersection.FirstIntersection"/> accepts with T ≤ <paramref name="tMax"/>
-  /// and runs against the face (Front). True at the first such hit found, in no particular order; otherwise false, with
-  /// <paramref name="onlyBack"/> true when accepted back-face hits (exits) lie in that range. Boxes beyond
-  /// <paramref name="tMax"/> or behind the origin are never opened.
+  /// Any-hit with early exit: some hit that <see cref="Intersection.FirstIntersection"/> accepts with T in
+  /// (<paramref name="tMin"/>, <paramref name="tMax"/>] (<paramref name="tMin"/> ≥ 0) and, when <paramref name="frontOnly"/>,
+  /// runs against the face (Front). True at the first such hit found, in no particular order; otherwise false, with
+  /// <paramref name="onlyBack"/> true when accepted back-face hits (exits) lie in that range (only asked with
+  /// <paramref name="frontOnly"/>). Boxes wholly outside the range are never opened.
   /// </summary>
   [SkipLocalsInit]   // the stack is written before it is read
-  public bool AnyFront(in Vector3d p0, in Vector3d p1, double len2, double tMax, out MeshHit hit, out bool onlyBack)
+  public bool Any(in Vector3d p0, in Vector3d p1, double len2, double tMin, double tMax, bool frontOnly, out MeshHit hit, out bool onlyBack)
   {
     hit = default;
     onlyBack = false;
@@ -223,16 +224,17 @@ internal sealed partial class MeshBvh
       return false;
     double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
     double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
-    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar) || rootFar <= 0.0 || rootNear > tMax)
+    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar) || rootFar <= tMin || rootNear > tMax)
       return false;
     Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
     Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
     Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
     bool finite = wide.FiniteBoxes && WideNode.NoNaN(ox, oy, oz, ix, iy, iz);   // decided once per ray: the cheaper box test, the same answers
     Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
+    Vector256<double> vtMin = Vector256.Create(tMin);
     WideNode[] nodes = wide.Nodes;
 
-    // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)); only boxes meeting (0, tMax] are pushed.
+    // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)); only boxes meeting (tMin, tMax] are pushed.
     int size = wide.StackSize;
     Span<int> stack = size <= 1024 ? stackalloc int[size] : new int[size];
     int sp = 0;
@@ -244,7 +246,7 @@ internal sealed partial class MeshBvh
       {
         ref WideNode n = ref nodes[code];
         int mask = n.Cross(vox, voy, voz, vix, viy, viz, finite, out Vector256<double> near, out Vector256<double> far);
-        mask &= (int)(Vector256.GreaterThan(far, Vector256<double>.Zero) & Vector256.LessThanOrEqual(near, vtMax)).ExtractMostSignificantBits();
+        mask &= (int)(Vector256.GreaterThan(far, vtMin) & Vector256.LessThanOrEqual(near, vtMax)).ExtractMostSignificantBits();
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
@@ -259,17 +261,17 @@ internal sealed partial class MeshBvh
                                      out Vector256<double> v, out Vector256<double> det);
         if (mask == 0)
           continue;
-        // Accepted (as in Nearest) and not beyond tMax; the first front face in triangle order answers.
-        mask &= (int)(Vector256.GreaterThan(t, Vector256<double>.Zero) & Vector256.GreaterThan(t * t * vlen2, eps2) &
+        // Accepted (as in Nearest; tMin ≥ 0 keeps t > 0) and in the range; the first (front face) in triangle order answers.
+        mask &= (int)(Vector256.GreaterThan(t, vtMin) & Vector256.GreaterThan(t * t * vlen2, eps2) &
                       Vector256.LessThanOrEqual(t, vtMax)).ExtractMostSignificantBits();
-        int front = mask & (int)Vector256.GreaterThan(det, Vector256<double>.Zero).ExtractMostSignificantBits();
-        if (front == 0)
+        int take = frontOnly ? mask & (int)Vector256.GreaterThan(det, Vector256<double>.Zero).ExtractMostSignificantBits() : mask;
+        if (take == 0)
         {
           onlyBack |= mask != 0;
           continue;
         }
-        int lane = BitOperations.TrailingZeroCount(front);
-        hit = new MeshHit { T = t.GetElement(lane), Triangle = ids[TriangleBlock.Width * block + lane], U = u.GetElement(lane), V = v.GetElement(lane), Front = true };
+        int lane = BitOperations.TrailingZeroCount(take);
+        hit = new MeshHit { T = t.GetElement(lane), Triangle = ids[TriangleBlock.Width * block + lane], U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
         onlyBack = false;
         return true;
       }
