@@ -209,48 +209,72 @@ internal sealed partial class MeshBvh
   }
 
   /// <summary>
-  /// Any-hit with early exit: some hit that <see cref="Intersection.FirstIntersection"/> accepts with T in
-  /// (<paramref name="tMin"/>, <paramref name="tMax"/>] (<paramref name="tMin"/> ≥ 0) and, when <paramref name="frontOnly"/>,
-  /// runs against the face (Front). True at the first such hit found, in no particular order; otherwise false, with
-  /// <paramref name="onlyBack"/> true when accepted back-face hits (exits) lie in that range (only asked with
-  /// <paramref name="frontOnly"/>). Boxes wholly outside the range are never opened.
+  /// Any-hit with early exit, with a zone near the origin that must be clear: some hit that
+  /// <see cref="Intersection.FirstIntersection"/> accepts with T in (<paramref name="zone"/>, <paramref name="tMax"/>] and,
+  /// when <paramref name="frontOnly"/>, runs against the face (Front), while no accepted hit (either face) lies in
+  /// (0, <paramref name="zone"/>] (0 ≤ zone ≤ tMax). An accepted hit in the zone stops the walk: false with
+  /// <paramref name="inZone"/>. Otherwise true at a hit of the range found in no particular order once the zone is known
+  /// clear (with a zone of 0, at once), or false, with <paramref name="onlyBack"/> true when accepted back-face hits (exits)
+  /// lie in the range. Boxes beyond the bound or behind the origin are never opened; with a zone, the nearest child box is
+  /// opened first, so that the boxes around the origin, which the zone needs, come early.
   /// </summary>
   [SkipLocalsInit]   // the stack is written before it is read
-  public bool Any(in Vector3d p0, in Vector3d p1, double len2, double tMin, double tMax, bool frontOnly, out MeshHit hit, out bool onlyBack)
+  public bool Any(in Vector3d p0, in Vector3d p1, double len2, double zone, double tMax, bool frontOnly, out MeshHit hit,
+                  out bool inZone, out bool onlyBack)
   {
     hit = default;
-    onlyBack = false;
+    inZone = onlyBack = false;
     if (triangles == 0)
       return false;
     double ox = p0.X, oy = p0.Y, oz = p0.Z, dx = p1.X, dy = p1.Y, dz = p1.Z;
     double ix = 1.0 / dx, iy = 1.0 / dy, iz = 1.0 / dz;
-    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar) || rootFar <= tMin || rootNear > tMax)
+    if (!LineBox(ox, oy, oz, dx, dy, dz, ix, iy, iz, out double rootNear, out double rootFar) || rootFar <= 0.0 || rootNear > tMax)
       return false;
     Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
     Vector256<double> vdx = Vector256.Create(dx), vdy = Vector256.Create(dy), vdz = Vector256.Create(dz);
     Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
     bool finite = wide.FiniteBoxes && WideNode.NoNaN(ox, oy, oz, ix, iy, iz);   // decided once per ray: the cheaper box test, the same answers
-    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2), vtMax = Vector256.Create(tMax);
-    Vector256<double> vtMin = Vector256.Create(tMin);
+    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2);
+    Vector256<double> vzone = Vector256.Create(zone);
+    // The bound drops to the zone once a hit of the range is found: only the zone is searched after it.
+    double bound = tMax;
+    bool found = false, ordered = zone > 0.0;
     WideNode[] nodes = wide.Nodes;
 
-    // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)); only boxes meeting (tMin, tMax] are pushed.
+    // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·4 + lane)) and the line's entry into its box,
+    // re-checked against the bound when popped; only boxes meeting (0, bound] are pushed.
     int size = wide.StackSize;
     Span<int> stack = size <= 1024 ? stackalloc int[size] : new int[size];
+    Span<double> stackNear = size <= 1024 ? stackalloc double[size] : new double[size];
     int sp = 0;
-    stack[sp++] = 0;
+    stack[sp] = 0;
+    stackNear[sp++] = rootNear;
     while (sp > 0)
     {
-      int code = stack[--sp];
+      --sp;
+      if (stackNear[sp] > bound)
+        continue;
+      int code = stack[sp];
       if (code >= 0)
       {
         ref WideNode n = ref nodes[code];
         int mask = n.Cross(vox, voy, voz, vix, viy, viz, finite, out Vector256<double> near, out Vector256<double> far);
-        mask &= (int)(Vector256.GreaterThan(far, vtMin) & Vector256.LessThanOrEqual(near, vtMax)).ExtractMostSignificantBits();
+        mask &= (int)(Vector256.GreaterThan(far, Vector256<double>.Zero) & Vector256.LessThanOrEqual(near, Vector256.Create(bound))).ExtractMostSignificantBits();
+        // With a zone, pushed farthest entry first, so that the nearest is popped next (the walk then covers the zone
+        // early and meets fewer boxes, 10 % on incoherent segments); without one, in lane order (the union's walk).
+        int first = sp;
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);
+          double t = near.GetElement(lane);
+          int k = sp++;
+          for (; ordered && k > first && stackNear[k - 1] < t; k--)
+          {
+            stack[k] = stack[k - 1];
+            stackNear[k] = stackNear[k - 1];
+          }
+          stack[k] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * WideNode.Width + lane);
+          stackNear[k] = t;
         }
         continue;
       }
@@ -261,22 +285,34 @@ internal sealed partial class MeshBvh
                                      out Vector256<double> v, out Vector256<double> det);
         if (mask == 0)
           continue;
-        // Accepted (as in Nearest; tMin ≥ 0 keeps t > 0) and in the range; the first (front face) in triangle order answers.
-        mask &= (int)(Vector256.GreaterThan(t, vtMin) & Vector256.GreaterThan(t * t * vlen2, eps2) &
-                      Vector256.LessThanOrEqual(t, vtMax)).ExtractMostSignificantBits();
+        // Accepted (as in Nearest) and not beyond the bound.
+        mask &= (int)(Vector256.GreaterThan(t, Vector256<double>.Zero) & Vector256.GreaterThan(t * t * vlen2, eps2) &
+                      Vector256.LessThanOrEqual(t, Vector256.Create(bound))).ExtractMostSignificantBits();
+        if (mask == 0)
+          continue;
+        if ((mask & (int)Vector256.LessThanOrEqual(t, vzone).ExtractMostSignificantBits()) != 0)
+        {
+          inZone = true;
+          onlyBack = false;
+          return false;
+        }
+        // The first (front face) in triangle order is taken.
         int take = frontOnly ? mask & (int)Vector256.GreaterThan(det, Vector256<double>.Zero).ExtractMostSignificantBits() : mask;
         if (take == 0)
         {
-          onlyBack |= mask != 0;
+          onlyBack = true;
           continue;
         }
         int lane = BitOperations.TrailingZeroCount(take);
         hit = new MeshHit { T = t.GetElement(lane), Triangle = ids[TriangleBlock.Width * block + lane], U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
+        found = true;
         onlyBack = false;
-        return true;
+        if (!(zone > 0.0))
+          return true;
+        bound = zone;
       }
     }
-    return false;
+    return found;
   }
 
   readonly record struct NodeSpan(int Node, double Near, double Far);

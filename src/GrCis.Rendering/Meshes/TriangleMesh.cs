@@ -169,7 +169,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
     }
     insideBefore = false;
     hit = default;
-    if (!b.Any(p0, p1, len2, 0.0, tMax, true, out MeshHit any, out bool onlyBack))
+    if (!b.Any(p0, p1, len2, 0.0, tMax, true, out MeshHit any, out _, out bool onlyBack))
     {
       if (!onlyBack)
         return false;
@@ -212,28 +212,32 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
 
   /// <summary>
   /// Whether <see cref="IAnyHitSolid.FirstRecord"/>'s record exists and is not far (<see cref="PreparedScene.NotFar"/>;
-  /// none beyond <paramref name="tMax"/> is), answered mostly by early-exit walks in any order instead of an ordered one:
+  /// none beyond <paramref name="tMax"/> is), answered by one early-exit walk in any order instead of the ordered search
+  /// (<see cref="MeshBvh.Any"/> with the zone (0, Z] of <see cref="Zone"/>):
   /// <list type="bullet">
-  /// <item>An accepted hit H with T in (Z, tMax] (<see cref="Zone"/>) that is not far, and no accepted hit in (0, Z]:
-  /// the first accepted hit F then has T_F &gt; Z, so it is the record, and T_F ≤ T_H, so it is not far either
-  /// (NotFar is monotone in T: t − 1, its square and the product with len2 round monotonely). Blocked.</item>
-  /// <item>No accepted hit in (Z, tMax]: a record not far lies in the zone; the exact search up to Z answers.</item>
-  /// <item>Otherwise (H far, in the bound's slack, or an accepted hit in the zone, where duplicates may chain): the
-  /// exact search up to <paramref name="tMax"/>.</item>
+  /// <item>It finds an accepted hit H with T in (Z, tMax] and no accepted hit in (0, Z]: the first accepted hit F then has
+  /// T_F &gt; Z, so it is the record, and T_F ≤ T_H (F is first). When H is not far, neither is F (NotFar is monotone in
+  /// T: t − 1, its square and the product with len2 round monotonely): blocked.</item>
+  /// <item>It finds no accepted hit in (0, tMax]: the record, an accepted hit, is beyond tMax or absent: not blocked.</item>
+  /// <item>Otherwise (an accepted hit in the zone, where duplicates may chain and drop it, or H far, in the bound's slack,
+  /// or a zone reaching tMax): the ordered search decides.</item>
   /// </list>
   /// </summary>
   bool IAnyHitSolid.Occluded(in Vector3d p0, in Vector3d p1, double len2, double tMax)
   {
     MeshBvh b = Bvh;
-    IAnyHitSolid self = this;
     double zone = Zone(b, p1, len2);
-    SolidRecord hit;
-    if (!b.Any(p0, p1, len2, zone, tMax, false, out MeshHit any, out _))
-      return self.FirstRecord(p0, p1, len2, zone, out hit) && PreparedScene.NotFar(hit.T, len2);
-    // The zone's walk visits only the boxes reaching back to within Z of the origin.
-    if (PreparedScene.NotFar(any.T, len2) && !b.Any(p0, p1, len2, 0.0, zone, false, out _, out _))
-      return true;
-    return self.FirstRecord(p0, p1, len2, tMax, out hit) && PreparedScene.NotFar(hit.T, len2);
+    if (zone < tMax)
+    {
+      if (b.Any(p0, p1, len2, zone, tMax, false, out MeshHit any, out bool inZone, out _))
+      {
+        if (PreparedScene.NotFar(any.T, len2))
+          return true;
+      }
+      else if (!inZone)
+        return false;
+    }
+    return ((IAnyHitSolid)this).FirstRecord(p0, p1, len2, tMax, out SolidRecord hit) && PreparedScene.NotFar(hit.T, len2);
   }
 
   /// <summary>The record of an accepted hit, as the list lists it.</summary>

@@ -71,16 +71,19 @@ public class MeshOcclusionTests
         dropped += wasDropped ? 1 : 0;
 
         // The proof's steps: an accepted hit H beyond the zone with none in the zone makes the first accepted hit the
-        // record, no later than H.
+        // record, no later than H; none found means no accepted hit at all.
         double zone = TriangleMesh.Zone(bvh, d, len2);
-        bool inZone = bvh.Any(o, d, len2, 0.0, zone, false, out _, out _);
+        bool got = bvh.Any(o, d, len2, zone, double.PositiveInfinity, false, out MeshHit h, out bool inZone, out _);
+        Assert.True(inZone == hits.Exists(x => ListedHits.Accepted(x.T, len2) && x.T <= zone), $"{seg}: zone {zone:R}, Any says {inZone}");
         zoneHits += inZone ? 1 : 0;
-        if (bvh.Any(o, d, len2, zone, double.PositiveInfinity, false, out MeshHit h, out _) && !inZone)
+        if (got)
         {
           Assert.True(hasFirst && first.T > zone && first.T <= h.T, $"{seg}: first accepted T {first.T:R}, zone {zone:R}, H {h.T:R}");
           Assert.False(wasDropped, $"{seg}: the record is not the first accepted hit");
           early += PreparedScene.NotFar(h.T, len2) ? 1 : 0;
         }
+        else if (!inZone)
+          Assert.False(hasFirst, $"{seg}: no hit found, first accepted T {first.T:R}");
       }
     }
     Assert.True(blocked > rays / 5 && free > rays / 5 && early > rays / 10, $"{blocked} blocked, {free} free, {early} early exits");
