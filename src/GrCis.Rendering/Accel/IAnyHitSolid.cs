@@ -22,4 +22,11 @@ internal interface IAnyHitSolid
   /// may then skip the search behind the origin that only the state needs.
   /// </summary>
   bool FirstRecord(in Vector3d p0, in Vector3d p1, double len2, double tMax, out SolidRecord hit);
+
+  /// <summary>
+  /// A scene of this one solid's shadow answer: whether <see cref="FirstRecord"/>'s record exists and is not far
+  /// (<see cref="PreparedScene.NotFar"/>), where no T beyond <paramref name="tMax"/> is. The solid may stop at a blocker
+  /// found in any order when it can prove that the record is no later than it.
+  /// </summary>
+  bool Occluded(in Vector3d p0, in Vector3d p1, double len2, double tMax);
 }

@@ -126,6 +126,17 @@ internal static partial class LibraryTypes
       ? Unsafe.As<IAnyHitSolid>(solid).FirstRecord(p0, p1, len2, tMax, out hit)
       : solid.IntersectFirst(p0, p1, len2, out hit, out _);
 
+  /// <summary>
+  /// A scene of one member's shadow answer: its first record exists and is not far (<see cref="PreparedScene.NotFar"/>;
+  /// none beyond <paramref name="tMax"/> is). An any-hit solid's <see cref="IAnyHitSolid.Occluded"/> may stop at the first
+  /// blocker it proves; any other solid's <see cref="IRecordSolid.IntersectFirst"/> gives the record.
+  /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  public static bool Occluded(DirectSolid kind, IRecordSolid solid, in Vector3d p0, in Vector3d p1, double len2, double tMax) =>
+    kind == DirectSolid.AnyHit
+      ? Unsafe.As<IAnyHitSolid>(solid).Occluded(p0, p1, len2, tMax)
+      : solid.IntersectFirst(p0, p1, len2, out SolidRecord hit, out _) && PreparedScene.NotFar(hit.T, len2);
+
   /// <summary>The hit set-up of a member's solid (<see cref="IRecordSolid.InitIntersection"/>), by name for <paramref name="kind"/>.</summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static void Init(DirectSolid kind, IRecordSolid solid, in SolidRecord hit, Intersection target)

@@ -305,7 +305,11 @@ public sealed partial class PreparedScene : ISceneQuery
     return bound + bound * 1.0e-12;
   }
 
-  static bool NotFar(double t, double len2)
+  /// <summary>
+  /// Not <see cref="Intersection.Far"/>(1) for a record at <paramref name="t"/> of a ray with |dir|² = <paramref name="len2"/>
+  /// (the same arithmetic). Monotone: true at t is true at every smaller t.
+  /// </summary>
+  internal static bool NotFar(double t, double len2)
   {
     if (t <= 1.0)
       return true;
@@ -367,10 +371,8 @@ public sealed partial class PreparedScene : ISceneQuery
     if (m.RecordSolid != null)
     {
       // Every record belongs to this solid, so NO_SHADOW hides them all. A record beyond the bound is far (Occluded's
-      // bound), so the search stops there.
-      if (m.NoShadow || !LibraryTypes.FirstRecord(m.Direct, m.RecordSolid, lp0, lp1, len2, FarBound(len2), out SolidRecord h))
-        return false;
-      return NotFar(h.T, len2);
+      // bound), so the search stops there; the mesh may stop at an earlier blocker it proves.
+      return !m.NoShadow && LibraryTypes.Occluded(m.Direct, m.RecordSolid, lp0, lp1, len2, FarBound(len2));
     }
     if (m.Csg != null)
     {

@@ -169,7 +169,7 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
     }
     insideBefore = false;
     hit = default;
-    if (!b.AnyFront(p0, p1, len2, tMax, out MeshHit any, out bool onlyBack))
+    if (!b.Any(p0, p1, len2, 0.0, tMax, true, out MeshHit any, out _, out bool onlyBack))
     {
       if (!onlyBack)
         return false;
@@ -196,11 +196,48 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
     hit = default;
     if (!b.Nearest(p0, p1, len2, true, out MeshHit first, tMax))
       return false;
-    // The margin covers the rounding of First's difference first.T − last.T (any last.T ≤ the limit).
-    if (!(first.T > (MeshBvh.RejectLimit(len2) + DuplicateTolerance(b.Extent, p1)) * (1.0 + 1e-9)))
+    if (!(first.T > Zone(b, p1, len2)))
       return IntersectFirst(p0, p1, len2, out hit, out _) && hit.T <= tMax;
     Record(first, p0, p1, out hit);
     return true;
+  }
+
+  /// <summary>
+  /// The zone (0, Z] where a duplicate can hide the first accepted hit: one beyond Z is the list's first record. Its
+  /// predecessor in the list's order (T, then triangle) is rejected (acceptance grows with T), so it has T ≤ the rejected
+  /// hits' limit, and the hit is more than the duplicate tolerance behind it; the margin covers the rounding of
+  /// <see cref="First"/>'s difference first.T − last.T.
+  /// </summary>
+  internal static double Zone(MeshBvh b, in Vector3d p1, double len2) => (MeshBvh.RejectLimit(len2) + DuplicateTolerance(b.Extent, p1)) * (1.0 + 1e-9);
+
+  /// <summary>
+  /// Whether <see cref="IAnyHitSolid.FirstRecord"/>'s record exists and is not far (<see cref="PreparedScene.NotFar"/>;
+  /// none beyond <paramref name="tMax"/> is), answered by one early-exit walk in any order instead of the ordered search
+  /// (<see cref="MeshBvh.Any"/> with the zone (0, Z] of <see cref="Zone"/>):
+  /// <list type="bullet">
+  /// <item>It finds an accepted hit H with T in (Z, tMax] and no accepted hit in (0, Z]: the first accepted hit F then has
+  /// T_F &gt; Z, so it is the record, and T_F ≤ T_H (F is first). When H is not far, neither is F (NotFar is monotone in
+  /// T: t − 1, its square and the product with len2 round monotonely): blocked.</item>
+  /// <item>It finds no accepted hit in (0, tMax]: the record, an accepted hit, is beyond tMax or absent: not blocked.</item>
+  /// <item>Otherwise (an accepted hit in the zone, where duplicates may chain and drop it, or H far, in the bound's slack,
+  /// or a zone reaching tMax): the ordered search decides.</item>
+  /// </list>
+  /// </summary>
+  bool IAnyHitSolid.Occluded(in Vector3d p0, in Vector3d p1, double len2, double tMax)
+  {
+    MeshBvh b = Bvh;
+    double zone = Zone(b, p1, len2);
+    if (zone < tMax)
+    {
+      if (b.Any(p0, p1, len2, zone, tMax, false, out MeshHit any, out bool inZone, out _))
+      {
+        if (PreparedScene.NotFar(any.T, len2))
+          return true;
+      }
+      else if (!inZone)
+        return false;
+    }
+    return ((IAnyHitSolid)this).FirstRecord(p0, p1, len2, tMax, out SolidRecord hit) && PreparedScene.NotFar(hit.T, len2);
   }
 
   /// <summary>The record of an accepted hit, as the list lists it.</summary>

@@ -44,7 +44,7 @@ public class MeshQueryAgreementTests
     var rnd = new Random(977);
     var hits = new List<MeshHit>();
     var listed = new List<MeshHit>();
-    int answers = 0, blocked = 0, onlyBack = 0;
+    int answers = 0, blocked = 0, onlyBack = 0, ranged = 0, zoned = 0;
     foreach ((Vector3d o, Vector3d d) in Rays(mesh, all, rnd, rays))
     {
       double len2 = d.LengthSquared;
@@ -72,14 +72,16 @@ public class MeshQueryAgreementTests
         }
       }
 
-      // AnyFront: true with one of the accepted front hits up to tMax; false with onlyBack when only back faces are there.
+      // Any, front faces only (the union's shadow walk): true with one of the accepted front hits up to tMax; false with
+      // onlyBack when only back faces are there.
       double tMax = hits.Count > 0 && rnd.Next(3) > 0 ? hits[rnd.Next(hits.Count)].T : rnd.Next(2) == 0 ? double.PositiveInfinity : 2.0 * rnd.NextDouble();
       bool anyFront = false, anyBack = false;
       foreach (MeshHit h in hits)
         if (ListedHits.Accepted(h.T, len2) && h.T <= tMax)
           (h.Front ? ref anyFront : ref anyBack) = true;
-      bool got = bvh.AnyFront(o, d, len2, tMax, out MeshHit any, out bool back);
-      Assert.True(anyFront == got, $"{ray}, tMax {tMax}: front hit {anyFront}, AnyFront {got}");
+      bool got = bvh.Any(o, d, len2, 0.0, tMax, true, out MeshHit any, out bool inZone, out bool back);
+      Assert.False(inZone);
+      Assert.True(anyFront == got, $"{ray}, tMax {tMax}: front hit {anyFront}, Any (front) {got}");
       if (got)
       {
         Assert.Contains(hits, h => h.T == any.T && h.Triangle == any.Triangle && h.U == any.U && h.V == any.V && h.Front);
@@ -91,8 +93,30 @@ public class MeshQueryAgreementTests
         Assert.True(anyBack == back, $"{ray}, tMax {tMax}: back hit {anyBack}, onlyBack {back}");
         onlyBack += back ? 1 : 0;
       }
+
+      // Any with a zone (0, zone] that must be clear (a lone mesh's occlusion walk): stopped by an accepted hit there, else
+      // true with one of the accepted hits (front faces, or either face) in (zone, tMax].
+      double zone = Math.Min(tMax, hits.Count > 0 && rnd.Next(2) == 0 ? Math.Max(0.0, hits[rnd.Next(hits.Count)].T) : rnd.Next(2) == 0 ? 0.0 : TriangleMesh.Zone(bvh, d, len2));
+      bool frontOnly = rnd.Next(2) == 0;
+      bool zoneHit = hits.Exists(h => ListedHits.Accepted(h.T, len2) && h.T <= zone);
+      bool inRange = hits.Exists(h => ListedHits.Accepted(h.T, len2) && h.T > zone && h.T <= tMax && (h.Front || !frontOnly));
+      bool backInRange = hits.Exists(h => ListedHits.Accepted(h.T, len2) && h.T > zone && h.T <= tMax && !h.Front);
+      got = bvh.Any(o, d, len2, zone, tMax, frontOnly, out any, out inZone, out back);
+      string range = $"{ray}, zone {zone:R}, tMax {tMax:R}, front only {frontOnly}";
+      Assert.True(zoneHit == inZone, $"{range}: zone hit {zoneHit}, Any says {inZone}");
+      Assert.True(zoneHit ? !got : inRange == got, $"{range}: accepted hit in range {inRange}, Any {got}");
+      if (got)
+      {
+        Assert.Contains(hits, h => h.T == any.T && h.Triangle == any.Triangle && h.U == any.U && h.V == any.V && h.Front == any.Front);
+        Assert.True(any.T > zone && any.T <= tMax && ListedHits.Accepted(any.T, len2) && (any.Front || !frontOnly));
+        ranged++;
+      }
+      else if (!zoneHit)
+        Assert.True(back == (frontOnly && backInRange), $"{range}: back hit {backInRange}, onlyBack {back}");
+      zoned += zoneHit ? 1 : 0;
     }
     Assert.True(answers > rays / 3, $"only {answers} answers with a hit: the rays miss the mesh");
+    Assert.True(ranged > rays / 10 && zoned > rays / 20, $"{ranged} any-hits in a range, {zoned} in a zone");
     Assert.True(blocked > rays / 10 && onlyBack > 0, $"{blocked} any-hits, {onlyBack} back-only answers: the any-hit cases are not exercised");
   }
 
@@ -175,7 +199,7 @@ public class MeshQueryAgreementTests
   /// Rays of several kinds, by turns: from outside or inside the mesh's box, towards a vertex or an edge's midpoint (exact
   /// grazing), along an axis or with one zero component, and from a hit point on the surface (the rejected hits matter).
   /// </summary>
-  static IEnumerable<(Vector3d, Vector3d)> Rays(SceneBrep mesh, MeshTriangles all, Random rnd, int count)
+  internal static IEnumerable<(Vector3d, Vector3d)> Rays(SceneBrep mesh, MeshTriangles all, Random rnd, int count)
   {
     Vector3d min = Vector3d.PositiveInfinity, max = Vector3d.NegativeInfinity;
     for (int i = 0; i < mesh.Vertices; i++)
@@ -226,7 +250,7 @@ public class MeshQueryAgreementTests
   /// Flat grids in the three axis planes (leaf boxes flat in x, y and z, crossing one another), triangles with a repeated
   /// vertex, collinear vertices or all three equal, slivers, and random triangles of all sizes; all moved by <paramref name="offset"/>.
   /// </summary>
-  static SceneBrep Awkward(Vector3 offset)
+  internal static SceneBrep Awkward(Vector3 offset)
   {
     var mesh = new SceneBrep();
     var rnd = new Random(5);
