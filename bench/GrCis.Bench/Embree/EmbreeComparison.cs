@@ -134,9 +134,12 @@ public static class EmbreeComparison
         var times = new List<double>[queries.Count];
         for (int q = 0; q < queries.Count; q++)
           times[q] = new List<double>();
-        for (int round = 0; round < options.Repeats; round++)
-          for (int q = 0; q < queries.Count; q++)
-            times[q].Add(Time(queries[q].Worker, rays.Count, threads));
+        for (int k = 0; k < options.Repeats * queries.Count; k++)
+        {
+          // Interleaved: round by round, every query in turn; grouped: every round of a query, then the next query.
+          int q = options.Grouped ? k / options.Repeats : k % queries.Count;
+          times[q].Add(Time(queries[q].Worker, rays.Count, threads));
+        }
         for (int q = 0; q < queries.Count; q++)
         {
           double mrays = rays.Count / Median(times[q]) / 1e6;

@@ -23,6 +23,13 @@ public sealed class EmbreeOptions
 
   public int Seed { get; set; } = 1;
 
+  /// <summary>
+  /// False (default, <c>--order interleaved</c>): each round times every query in turn, so a load that comes and goes
+  /// hits them alike. True (<c>--order grouped</c>): each query's rounds back to back, so no other query's data passes
+  /// through the caches between its rounds.
+  /// </summary>
+  public bool Grouped { get; set; }
+
   public static EmbreeOptions Parse(string[] args)
   {
     var o = new EmbreeOptions();
@@ -37,7 +44,15 @@ public sealed class EmbreeOptions
         case "--threads": o.Threads = value.Split(',').Select(v => Positive(args[i], v)).ToArray(); break;
         case "--repeats": o.Repeats = Positive(args[i], value); break;
         case "--seed": o.Seed = int.Parse(value, CultureInfo.InvariantCulture); break;
-        default: throw new ArgumentException($"unknown option '{args[i]}' (--mesh, --size, --rays, --threads, --repeats, --seed)");
+        case "--order":
+          o.Grouped = value switch
+          {
+            "interleaved" => false,
+            "grouped" => true,
+            _ => throw new ArgumentException($"--order: '{value}' is not interleaved or grouped"),
+          };
+          break;
+        default: throw new ArgumentException($"unknown option '{args[i]}' (--mesh, --size, --rays, --threads, --repeats, --seed, --order)");
       }
       i++;
     }
