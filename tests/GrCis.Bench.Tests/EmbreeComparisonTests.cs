@@ -72,5 +72,21 @@ public sealed class EmbreeComparisonTests
     e = Assert.Throws<ArgumentException>(() => EmbreeOptions.Parse(new[] { "--frobnicate", "1" }));
     Assert.StartsWith("unknown option '--frobnicate'", e.Message);
     Assert.Equal(new[] { 2 }, EmbreeOptions.Parse(new[] { "--threads", "2" }).Threads);
+    Assert.True(EmbreeOptions.Parse(new[] { "--order", "grouped" }).Grouped);
+    Assert.False(EmbreeOptions.Parse(new[] { "--order", "interleaved" }).Grouped);
+    Assert.False(EmbreeOptions.Parse(Array.Empty<string>()).Grouped);
+    e = Assert.Throws<ArgumentException>(() => EmbreeOptions.Parse(new[] { "--order", "random" }));
+    Assert.Equal("--order: 'random' is not interleaved or grouped", e.Message);
+  }
+
+  [SkippableFact]
+  public void Grouped_rounds_time_every_query_as_often_as_interleaved_ones()
+  {
+    RequiredTool.Library("libembree3.so.3", EmbreeComparison.IsAvailable, EmbreeComparison.DebianPackage);
+    var output = new StringWriter();
+    EmbreeReport report = EmbreeComparison.Measure(
+      new EmbreeOptions { MeshFile = RepositoryMesh(), Size = 16, Rays = 400, Threads = new[] { 1 }, Repeats = 2, Grouped = true }, output);
+    Assert.Equal(4 + 3 + 3 + 3, report.Rows.Count);
+    Assert.All(report.Rows, row => Assert.True(row.Mrays > 0.0 && double.IsFinite(row.Mrays) && row.Mismatches == 0, $"{row.Query} on {row.Rays}\n{output}"));
   }
 }
