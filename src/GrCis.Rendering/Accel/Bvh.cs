@@ -47,6 +47,52 @@ internal sealed class Bvh
     return Build(boxes, centers, ids, shape);
   }
 
+  /// <summary>
+  /// The children a wide node over binary node <paramref name="binary"/> takes, in <paramref name="picks"/> (at most its
+  /// length): the binary node's two children, then, while there is room, the inner one of largest surface area replaced
+  /// by its two children, so the lanes stay in the binary tree's left-to-right order; a leaf (only the root can be one
+  /// here) is its own single child. Returns how many. Every collapse to a wider tree (<see cref="WideBvh"/>, the mesh's
+  /// eight-wide tree) picks by this one rule.
+  /// </summary>
+  public int WideChildren(int binary, System.Span<int> picks)
+  {
+    BvhNode[] b = Nodes;
+    if (b[binary].Count > 0)
+    {
+      picks[0] = binary;
+      return 1;
+    }
+    picks[0] = binary + 1;
+    picks[1] = b[binary].Index;
+    int count = 2;
+    while (count < picks.Length)
+    {
+      int widest = -1;
+      double area = -1.0;
+      for (int k = 0; k < count; k++)
+        if (b[picks[k]].Count == 0 && HalfArea(b[picks[k]]) > area)
+        {
+          area = HalfArea(b[picks[k]]);
+          widest = k;
+        }
+      if (widest < 0)
+        break;
+      int inner = picks[widest];
+      for (int k = count; k > widest + 1; k--)
+        picks[k] = picks[k - 1];
+      picks[widest] = inner + 1;
+      picks[widest + 1] = b[inner].Index;
+      count++;
+    }
+    return count;
+  }
+
+  static double HalfArea(in BvhNode n)
+  {
+    double x = n.MaxX - n.MinX, y = n.MaxY - n.MinY, z = n.MaxZ - n.MinZ;
+    return x * y + y * z + z * x;
+  }
+
   static BvhNode Leaf(in Aabb b, int first, int count) => new()
   {
     MinX = b.Min.X, MinY = b.Min.Y, MinZ = b.Min.Z,

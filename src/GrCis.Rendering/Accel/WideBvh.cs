@@ -75,39 +75,7 @@ internal sealed class WideBvh
     {
       BvhNode[] b = tree.Nodes;
       Span<int> picks = stackalloc int[WideNode.Width];
-      int count;
-      if (b[binary].Count > 0)
-      {
-        // Only the root can be a leaf here: a one-lane node over it.
-        picks[0] = binary;
-        count = 1;
-      }
-      else
-      {
-        picks[0] = binary + 1;
-        picks[1] = b[binary].Index;
-        count = 2;
-      }
-      while (count < WideNode.Width)
-      {
-        int widest = -1;
-        double area = -1.0;
-        for (int k = 0; k < count; k++)
-          if (b[picks[k]].Count == 0 && HalfArea(b[picks[k]]) > area)
-          {
-            area = HalfArea(b[picks[k]]);
-            widest = k;
-          }
-        if (widest < 0)
-          break;
-        // Its two children take its place, in order: lanes stay in the binary tree's left-to-right order.
-        int inner = picks[widest];
-        for (int k = count; k > widest + 1; k--)
-          picks[k] = picks[k - 1];
-        picks[widest] = inner + 1;
-        picks[widest + 1] = b[inner].Index;
-        count++;
-      }
+      int count = tree.WideChildren(binary, picks);
 
       int self = used++;
       if (nodes == null)
@@ -131,12 +99,6 @@ internal sealed class WideBvh
           node.Index[lane] = Node(picks[lane], ref used);
       }
       return self;
-    }
-
-    static double HalfArea(in BvhNode n)
-    {
-      double x = n.MaxX - n.MinX, y = n.MaxY - n.MinY, z = n.MaxZ - n.MinZ;
-      return x * y + y * z + z * x;
     }
   }
 }

@@ -98,43 +98,7 @@ internal struct MeshNode
     {
       BvhNode[] b = tree.Nodes;
       Span<int> picks = stackalloc int[Width];
-      Span<double> areas = stackalloc double[Width];   // −1 for a leaf: never opened
-      int count;
-      if (b[binary].Count > 0)
-      {
-        picks[0] = binary;   // only the root can be a leaf here: a one-lane node over it
-        areas[0] = -1.0;
-        count = 1;
-      }
-      else
-      {
-        Add(b, picks, areas, 0, binary + 1);
-        Add(b, picks, areas, 1, b[binary].Index);
-        count = 2;
-      }
-      while (count < Width)
-      {
-        int widest = -1;
-        double area = -1.0;
-        for (int k = 0; k < count; k++)
-          if (areas[k] > area)
-          {
-            area = areas[k];
-            widest = k;
-          }
-        if (widest < 0)
-          break;
-        // Its two children take its place, in order: lanes stay in the binary tree's left-to-right order.
-        int inner = picks[widest];
-        for (int k = count; k > widest + 1; k--)
-        {
-          picks[k] = picks[k - 1];
-          areas[k] = areas[k - 1];
-        }
-        Add(b, picks, areas, widest, inner + 1);
-        Add(b, picks, areas, widest + 1, b[inner].Index);
-        count++;
-      }
+      int count = tree.WideChildren(binary, picks);
 
       int self = used++;
       depth = Math.Max(depth, level);
@@ -160,14 +124,6 @@ internal struct MeshNode
           node.Index[lane] = Node(picks[lane], level + 1, ref used, ref depth);
       }
       return self;
-    }
-
-    static void Add(BvhNode[] b, Span<int> picks, Span<double> areas, int at, int child)
-    {
-      picks[at] = child;
-      ref BvhNode n = ref b[child];
-      double x = n.MaxX - n.MinX, y = n.MaxY - n.MinY, z = n.MaxZ - n.MinZ;
-      areas[at] = n.Count > 0 ? -1.0 : x * y + y * z + z * x;
     }
   }
 }
