@@ -15,6 +15,7 @@ namespace GrCis.Cli.Tests;
 /// (which also catches an error in the script), <c>dotnet run</c> (a quick render of the scene) and the installed
 /// <c>grcis render Scene.cs</c>.
 /// </summary>
+[Collection(RepositoryPacking.Name)]
 public class PackagesTests
 {
 #if DEBUG

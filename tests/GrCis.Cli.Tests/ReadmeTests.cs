@@ -17,6 +17,7 @@ namespace GrCis.Cli.Tests;
 /// files it writes there that were not there before (<c>artifacts/</c>, the image) are removed afterwards. Every
 /// other block runs in one temporary folder, in which <c>scripts</c> is the repository's scripts folder.
 /// </remarks>
+[Collection(RepositoryPacking.Name)]
 public class ReadmeTests
 {
   internal sealed record ShellBlock(int Line, string Text, string? NotRun)
