@@ -23,26 +23,13 @@ internal sealed class WideBvh
   /// <summary>Traversal stack entries that can be live at once (each step pops one and pushes at most four).</summary>
   public readonly int StackSize;
 
-  /// <summary>
-  /// True when every box coordinate is finite (no ±∞, no NaN: a mesh read with such a vertex): for a ray that
-  /// <see cref="WideNode.NoNaN"/> accepts, <see cref="WideNode.Cross"/> may then leave out its NaN lanes.
-  /// </summary>
-  public readonly bool FiniteBoxes;
-
   WideBvh(WideNode[] nodes, BvhNode root, int[] items, int stackSize)
   {
     Nodes = nodes;
     Root = root;
     Items = items;
     StackSize = stackSize;
-    FiniteBoxes = true;
-    foreach (WideNode n in nodes)
-      FiniteBoxes &= Finite(n.MinX) && Finite(n.MaxX) && Finite(n.MinY) && Finite(n.MaxY) && Finite(n.MinZ) && Finite(n.MaxZ);
   }
-
-  // x − x is 0 exactly for a finite x, NaN for ±∞ and NaN (unused lanes hold zeros).
-  static bool Finite(System.Runtime.Intrinsics.Vector256<double> v) =>
-    System.Runtime.Intrinsics.Vector256.EqualsAll(v - v, System.Runtime.Intrinsics.Vector256<double>.Zero);
 
   /// <summary>
   /// Collapses <paramref name="tree"/>. Every box is grown by <paramref name="pad"/>: a padded test may keep a box an

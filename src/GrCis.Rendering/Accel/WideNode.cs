@@ -70,67 +70,33 @@ internal struct WideNode
   }
 
   /// <summary>
-  /// The line o + t·d (inverse direction inv) against the four boxes: <paramref name="near"/> and <paramref name="far"/> get
-  /// each box's parameter interval; returns a mask of the boxes the line crosses. A slab whose parameters are NaN
-  /// (d = 0 with the origin exactly on the slab's plane) does not restrict the line. <paramref name="noNaN"/>: the caller
-  /// knows no parameter can be NaN (<see cref="NoNaN"/>, finite boxes), so the cheaper <see cref="CrossFinite"/> answers,
-  /// the same to the bit.
+  /// The line o + t·d (inverse direction inv) against up to four boxes given by their slabs (lane l of each vector is box l):
+  /// <paramref name="near"/> and <paramref name="far"/> get each box's parameter interval; returns a mask of the boxes the
+  /// line crosses (near ≤ far; the caller masks unused lanes). A slab whose parameters are NaN (d = 0 with the origin
+  /// exactly on the slab's plane) does not restrict the line. The mesh tree's double fallback
+  /// (<see cref="Rendering.DoubleStep"/>) runs it on its float boxes widened, four at a time.
   /// </summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  public readonly int Cross(Vector256<double> ox, Vector256<double> oy, Vector256<double> oz,
-                            Vector256<double> ix, Vector256<double> iy, Vector256<double> iz, bool noNaN,
-                            out Vector256<double> near, out Vector256<double> far)
+  public static int Cross(Vector256<double> minX, Vector256<double> maxX, Vector256<double> minY, Vector256<double> maxY,
+                          Vector256<double> minZ, Vector256<double> maxZ,
+                          Vector256<double> ox, Vector256<double> oy, Vector256<double> oz,
+                          Vector256<double> ix, Vector256<double> iy, Vector256<double> iz,
+                          out Vector256<double> near, out Vector256<double> far)
   {
-    if (noNaN)
-      return CrossFinite(ox, oy, oz, ix, iy, iz, out near, out far);
     Vector256<double> lo = Vector256.Create(double.NegativeInfinity), hi = Vector256.Create(double.PositiveInfinity);
     near = lo;
     far = hi;
-    LineSlab(MinX, MaxX, ox, ix, lo, hi, ref near, ref far);
-    LineSlab(MinY, MaxY, oy, iy, lo, hi, ref near, ref far);
-    LineSlab(MinZ, MaxZ, oz, iz, lo, hi, ref near, ref far);
-    return (int)Vector256.LessThanOrEqual(near, far).ExtractMostSignificantBits() & Valid;
+    LineSlab(minX, maxX, ox, ix, lo, hi, ref near, ref far);
+    LineSlab(minY, maxY, oy, iy, lo, hi, ref near, ref far);
+    LineSlab(minZ, maxZ, oz, iz, lo, hi, ref near, ref far);
+    return (int)Vector256.LessThanOrEqual(near, far).ExtractMostSignificantBits();
   }
 
   /// <summary>
-  /// <see cref="Cross"/> for a line whose origin and inverse direction are finite and whose inverse direction has no zero
-  /// component (<see cref="NoNaN"/>), against finite boxes: no slab parameter can then be NaN, so the NaN lanes' selection is left out and every
-  /// answer is <see cref="Cross"/>'s, bit for bit.
+  /// One axis of <see cref="Cross"/>: narrows [near, far] by the slab [min, max]; a NaN parameter leaves the lane as it is.
   /// </summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  readonly int CrossFinite(Vector256<double> ox, Vector256<double> oy, Vector256<double> oz,
-                           Vector256<double> ix, Vector256<double> iy, Vector256<double> iz,
-                           out Vector256<double> near, out Vector256<double> far)
-  {
-    Vector256<double> t0 = (MinX - ox) * ix, t1 = (MaxX - ox) * ix;
-    near = Vector256.MinNative(t0, t1);
-    far = Vector256.MaxNative(t0, t1);
-    t0 = (MinY - oy) * iy;
-    t1 = (MaxY - oy) * iy;
-    near = Vector256.MaxNative(near, Vector256.MinNative(t0, t1));
-    far = Vector256.MinNative(far, Vector256.MaxNative(t0, t1));
-    t0 = (MinZ - oz) * iz;
-    t1 = (MaxZ - oz) * iz;
-    near = Vector256.MaxNative(near, Vector256.MinNative(t0, t1));
-    far = Vector256.MinNative(far, Vector256.MaxNative(t0, t1));
-    return (int)Vector256.LessThanOrEqual(near, far).ExtractMostSignificantBits() & Valid;
-  }
-
-  /// <summary>
-  /// True when (box − o) · inv cannot be NaN for any finite box: o and inv finite, no inverse component zero (an infinite
-  /// direction component). Then, in a tree of finite boxes (<see cref="WideBvh.FiniteBoxes"/>), <see cref="Cross"/> may
-  /// be told so.
-  /// </summary>
-  public static bool NoNaN(double ox, double oy, double oz, double ix, double iy, double iz) =>
-    double.IsFinite(ox) && double.IsFinite(oy) && double.IsFinite(oz) &&
-    double.IsFinite(ix) && double.IsFinite(iy) && double.IsFinite(iz) && ix != 0.0 && iy != 0.0 && iz != 0.0;
-
-  /// <summary>
-  /// One axis of <see cref="Cross"/>: narrows [near, far] by the slab [min, max]; a NaN parameter leaves the lane as it is
-  /// (also the mesh tree's double fallback, <see cref="Rendering.DoubleStep"/>).
-  /// </summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  internal static void LineSlab(Vector256<double> min, Vector256<double> max, Vector256<double> o, Vector256<double> inv,
+  static void LineSlab(Vector256<double> min, Vector256<double> max, Vector256<double> o, Vector256<double> inv,
                        Vector256<double> lo, Vector256<double> hi, ref Vector256<double> near, ref Vector256<double> far)
   {
     Vector256<double> t0 = (min - o) * inv, t1 = (max - o) * inv;

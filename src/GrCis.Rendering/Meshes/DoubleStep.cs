@@ -22,10 +22,8 @@ internal readonly struct DoubleStep(in MeshLine line) : IMeshBoxStep
     var (maxXl, maxXh) = Vector256.Widen(n.MaxX);
     var (maxYl, maxYh) = Vector256.Widen(n.MaxY);
     var (maxZl, maxZh) = Vector256.Widen(n.MaxZ);
-    Half(minXl, maxXl, minYl, maxYl, minZl, maxZl, out Vector256<double> nearL, out Vector256<double> farL);
-    Half(minXh, maxXh, minYh, maxYh, minZh, maxZh, out Vector256<double> nearH, out Vector256<double> farH);
-    int mask = (int)Vector256.LessThanOrEqual(nearL, farL).ExtractMostSignificantBits() |
-               (int)Vector256.LessThanOrEqual(nearH, farH).ExtractMostSignificantBits() << 4;
+    int mask = WideNode.Cross(minXl, maxXl, minYl, maxYl, minZl, maxZl, ox, oy, oz, ix, iy, iz, out Vector256<double> nearL, out Vector256<double> farL) |
+               WideNode.Cross(minXh, maxXh, minYh, maxYh, minZh, maxZh, ox, oy, oz, ix, iy, iz, out Vector256<double> nearH, out Vector256<double> farH) << 4;
     // Used lanes only (an unused one has min +∞ > max −∞; a NaN-free line could otherwise cross it).
     mask &= (int)Vector256.LessThanOrEqual(n.MinX, n.MaxX).ExtractMostSignificantBits();
     Vector256<float> lo = default, hi = default;
@@ -37,16 +35,5 @@ internal readonly struct DoubleStep(in MeshLine line) : IMeshBoxStep
     near = lo;
     far = hi;
     return mask;
-  }
-
-  void Half(Vector256<double> minX, Vector256<double> maxX, Vector256<double> minY, Vector256<double> maxY,
-            Vector256<double> minZ, Vector256<double> maxZ, out Vector256<double> near, out Vector256<double> far)
-  {
-    Vector256<double> lo = Vector256.Create(double.NegativeInfinity), hi = Vector256.Create(double.PositiveInfinity);
-    near = lo;
-    far = hi;
-    WideNode.LineSlab(minX, maxX, ox, ix, lo, hi, ref near, ref far);
-    WideNode.LineSlab(minY, maxY, oy, iy, lo, hi, ref near, ref far);
-    WideNode.LineSlab(minZ, maxZ, oz, iz, lo, hi, ref near, ref far);
   }
 }

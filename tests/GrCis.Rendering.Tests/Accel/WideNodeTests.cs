@@ -106,62 +106,6 @@ public class WideNodeTests
     return near <= far;
   }
 
-  /// <summary>
-  /// The cheaper line test, for finite boxes and a ray <see cref="WideNode.NoNaN"/> accepts, gives <see cref="WideNode.Cross"/>'s
-  /// mask and intervals to the bit; and <see cref="WideNode.NoNaN"/> refuses every ray with a ±0, ±∞ or NaN in play.
-  /// </summary>
-  [Fact]
-  public void The_finite_line_test_answers_as_the_general_one_to_the_bit()
-  {
-    var r = new Random(4321);
-    var boxes = new BvhNode[WideNode.Width];
-    int compared = 0;
-    for (int n = 0; n < 200_000; n++)
-    {
-      for (int l = 0; l < boxes.Length; l++)
-        boxes[l] = Box(r, special: false);
-      WideNode node = Node(boxes, 1 + n % WideNode.Width);
-      double Pick(double usual) => n % 4 == 0 && r.Next(3) == 0 ? Specials[r.Next(Specials.Length)] : usual;
-      double ox = Pick(r.NextDouble() * 12.0 - 6.0), oy = Pick(r.NextDouble() * 12.0 - 6.0), oz = Pick(r.NextDouble() * 12.0 - 6.0);
-      BvhNode a = boxes[0];
-      // Half of them aimed at the first box's centre; origins also on a box's plane.
-      if (n % 3 == 0)
-        ox = a.MinX;
-      double dx = n % 2 == 0 ? 0.5 * (a.MinX + a.MaxX) - ox : r.NextDouble() * 2.0 - 1.0;
-      double ix = 1.0 / Pick(dx), iy = 1.0 / Pick(r.NextDouble() * 2.0 - 1.0), iz = 1.0 / Pick(r.NextDouble() * 2.0 - 1.0);
-      bool finite = WideNode.NoNaN(ox, oy, oz, ix, iy, iz);
-      bool plain = double.IsFinite(ox) && double.IsFinite(oy) && double.IsFinite(oz) && double.IsFinite(ix) && double.IsFinite(iy) &&
-                   double.IsFinite(iz) && ix != 0.0 && iy != 0.0 && iz != 0.0;
-      Assert.Equal(plain, finite);
-      if (!finite)
-        continue;
-      compared++;
-      Vector256<double> vox = Vector256.Create(ox), voy = Vector256.Create(oy), voz = Vector256.Create(oz);
-      Vector256<double> vix = Vector256.Create(ix), viy = Vector256.Create(iy), viz = Vector256.Create(iz);
-      int general = node.Cross(vox, voy, voz, vix, viy, viz, false, out Vector256<double> near, out Vector256<double> far);
-      int cheap = node.Cross(vox, voy, voz, vix, viy, viz, true, out Vector256<double> near2, out Vector256<double> far2);
-      Assert.Equal(general, cheap);
-      for (int l = 0; l < WideNode.Width; l++)
-      {
-        Assert.Equal(BitConverter.DoubleToInt64Bits(near.GetElement(l)), BitConverter.DoubleToInt64Bits(near2.GetElement(l)));
-        Assert.Equal(BitConverter.DoubleToInt64Bits(far.GetElement(l)), BitConverter.DoubleToInt64Bits(far2.GetElement(l)));
-      }
-    }
-    Assert.True(compared > 150_000, $"only {compared} rays compared");
-  }
-
-  [Fact]
-  public void A_tree_with_a_box_at_infinity_is_not_finite()
-  {
-    foreach (double bad in new[] { double.PositiveInfinity, double.NegativeInfinity })
-    {
-      Vector3d[] centroids = [new(0, 0, 0), new(2, 0, 0), new(4, 0, 0)];
-      Aabb[] boxes = [new(new(-1, -1, -1), new(1, 1, 1)), new(new(1, -1, -1), new(3, 1, 1)), bad > 0 ? new(new(3, -1, -1), new(5, bad, 1)) : new(new(3, bad, -1), new(5, 1, 1))];
-      Assert.True(WideBvh.Collapse(Bvh.Build(boxes[..2], centroids[..2], [0, 1], BvhShape.Triangles)).FiniteBoxes);
-      Assert.False(WideBvh.Collapse(Bvh.Build(boxes, centroids, [0, 1, 2], BvhShape.Triangles)).FiniteBoxes, $"a coordinate {bad}");
-    }
-  }
-
   [Fact]
   public void Four_box_line_test_answers_as_a_scalar_line_test_for_each_box()
   {
@@ -182,8 +126,9 @@ public class WideNodeTests
       double ix = 1.0 / Dir(), iy = 1.0 / Dir(), iz = 1.0 / Dir();
 
       WideNode node = Node(boxes, lanes);
-      int bits = node.Cross(Vector256.Create(ox), Vector256.Create(oy), Vector256.Create(oz),
-                            Vector256.Create(ix), Vector256.Create(iy), Vector256.Create(iz), false, out Vector256<double> near, out Vector256<double> far);
+      int bits = node.Valid & WideNode.Cross(node.MinX, node.MaxX, node.MinY, node.MaxY, node.MinZ, node.MaxZ,
+                                             Vector256.Create(ox), Vector256.Create(oy), Vector256.Create(oz),
+                                             Vector256.Create(ix), Vector256.Create(iy), Vector256.Create(iz), out Vector256<double> near, out Vector256<double> far);
       Assert.Equal(0, bits >> lanes);
       for (int l = 0; l < lanes; l++)
       {

@@ -76,8 +76,8 @@ public class MeshNodeTests
         (l < WideNode.Width ? ref lo : ref hi).SetBox(l % WideNode.Width, boxes[l], 0.0);
       Vector256<double> ox = Vector256.Create(o.X), oy = Vector256.Create(o.Y), oz = Vector256.Create(o.Z);
       Vector256<double> ix = Vector256.Create(line.Ix), iy = Vector256.Create(line.Iy), iz = Vector256.Create(line.Iz);
-      int want = lo.Cross(ox, oy, oz, ix, iy, iz, false, out Vector256<double> nearLo, out Vector256<double> farLo) |
-                 hi.Cross(ox, oy, oz, ix, iy, iz, false, out Vector256<double> nearHi, out Vector256<double> farHi) << 4;
+      int want = lo.Valid & WideNode.Cross(lo.MinX, lo.MaxX, lo.MinY, lo.MaxY, lo.MinZ, lo.MaxZ, ox, oy, oz, ix, iy, iz, out Vector256<double> nearLo, out Vector256<double> farLo) |
+                 (hi.Valid & WideNode.Cross(hi.MinX, hi.MaxX, hi.MinY, hi.MaxY, hi.MinZ, hi.MaxZ, ox, oy, oz, ix, iy, iz, out Vector256<double> nearHi, out Vector256<double> farHi)) << 4;
 
       double mx = 0, my = 0, mz = 0;
       for (int l = 0; l < lanes; l++)
