@@ -89,4 +89,27 @@ public sealed class EmbreeComparisonTests
     Assert.Equal(4 + 3 + 3 + 3, report.Rows.Count);
     Assert.All(report.Rows, row => Assert.True(row.Mrays > 0.0 && double.IsFinite(row.Mrays) && row.Mismatches == 0, $"{row.Query} on {row.Rays}\n{output}"));
   }
+
+  [SkippableFact]
+  public void The_tsv_option_writes_every_measured_row_and_the_build()
+  {
+    RequiredTool.Library("libembree3.so.3", EmbreeComparison.IsAvailable, EmbreeComparison.DebianPackage);
+    string dir = Path.Combine(Path.GetTempPath(), "grcis-embree-" + Guid.NewGuid().ToString("N"));
+    Directory.CreateDirectory(dir);
+    try
+    {
+      string tsv = Path.Combine(dir, "e.tsv");
+      var output = new StringWriter();
+      Assert.Equal(0, EmbreeComparison.Run(new[] { "--mesh", RepositoryMesh(), "--size", "16", "--rays", "400", "--threads", "1", "--repeats", "1", "--tsv", tsv }, output, new StringWriter()));
+      Plots.TsvTable t = Plots.TsvTable.Read(tsv);
+      Assert.Equal(4 + 3 + 3 + 3 + 1, t.Rows.Count);
+      Assert.Equal("embree --mesh <mesh folder>/vase.obj --size 16 --rays 400 --threads 1 --repeats 1 --tsv e.tsv", t.Header["command"]);
+      Assert.All(t.Rows, r => Assert.Equal(0, r.Number("mismatches")));
+      Assert.Equal(new[] { tsv }, Directory.GetFiles(dir));
+    }
+    finally
+    {
+      Directory.Delete(dir, recursive: true);
+    }
+  }
 }

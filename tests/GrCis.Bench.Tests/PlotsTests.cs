@@ -98,18 +98,18 @@ public sealed class PlotsTests : IDisposable
   }
 
   [Fact]
-  public void Plots_from_the_recorded_results_are_four_800_by_500_pngs()
+  public void Plots_from_the_recorded_results_are_five_800_by_500_pngs()
   {
     string output = Path.Combine(dir, "out");
     Assert.Equal(0, PlotsCommand.Run(new[] { "--results", RecordedResults(), "--out", output }));
-    foreach (string name in new[] { "cornell-rmse-vs-time.png", "thread-scaling.png", "mesh-scaling.png", "povray-ratio.png" })
+    foreach (string name in new[] { "cornell-rmse-vs-time.png", "thread-scaling.png", "mesh-scaling.png", "povray-ratio.png", "mesh-embree-ratio.png" })
     {
       byte[] png = File.ReadAllBytes(Path.Combine(output, name));
       Assert.Equal(new byte[] { 0x89, (byte)'P', (byte)'N', (byte)'G' }, png[..4]);
       Assert.Equal(800, BinaryPrimitives.ReadInt32BigEndian(png.AsSpan(16)));
       Assert.Equal(500, BinaryPrimitives.ReadInt32BigEndian(png.AsSpan(20)));
     }
-    Assert.Equal(4, Directory.GetFiles(output).Length);
+    Assert.Equal(5, Directory.GetFiles(output).Length);
   }
 
   [Fact]

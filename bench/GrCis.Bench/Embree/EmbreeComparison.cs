@@ -13,7 +13,7 @@ using Scene3D;
 namespace GrCis.Bench.Embree;
 
 /// <summary>
-/// <c>embree [--mesh FILE.obj[.gz]] [--size N] [--rays N] [--threads 1,2] [--repeats N] [--seed S]</c>:
+/// <c>embree [--mesh FILE.obj[.gz]] [--size N] [--rays N] [--threads 1,2] [--repeats N] [--seed S] [--order interleaved|grouped] [--tsv FILE]</c>:
 /// the library's ray queries against Intel Embree's on the same rays and the same mesh, in one run. The mesh is
 /// placed as <c>grcis bench --mesh</c> places it (centred, box diagonal 3); without <c>--mesh</c>, a procedural
 /// torus of 100,000 triangles. Per ray set and thread count, each implementation is timed once per round, the
@@ -37,7 +37,16 @@ public static class EmbreeComparison
     try
     {
       options = EmbreeOptions.Parse(args);
+      // Checked before the minutes of measuring, not after.
+      if (options.TsvFile != null && Path.GetDirectoryName(Path.GetFullPath(options.TsvFile)) is string folder && !Directory.Exists(folder))
+        throw new ArgumentException($"--tsv: the folder {folder} does not exist");
       EmbreeReport report = Measure(options, output);
+      if (options.TsvFile != null)
+      {
+        EmbreeTsv.Write(report, options.MeshFile != null ? Path.GetFileName(options.MeshFile) : "procedural torus",
+                        "embree " + string.Join(' ', args.Select(a => a == options.MeshFile ? "<mesh folder>/" + Path.GetFileName(a) : a == options.TsvFile ? Path.GetFileName(a) : a)), options.TsvFile);
+        output.WriteLine($"wrote {options.TsvFile}");
+      }
       return report.Mismatches == 0 ? 0 : 3;
     }
     catch (EmbreeMissingException e)
@@ -45,7 +54,7 @@ public static class EmbreeComparison
       error.WriteLine("embree: " + e.Message);
       return 2;
     }
-    catch (Exception e) when (e is MeshFormatException or FileNotFoundException or DirectoryNotFoundException or ArgumentException)
+    catch (Exception e) when (e is MeshFormatException or IOException or UnauthorizedAccessException or ArgumentException)
     {
       error.WriteLine("embree: " + e.Message);
       return 1;
@@ -58,7 +67,7 @@ public static class EmbreeComparison
     EmbreeNative.Require();
     SceneBrep mesh = options.MeshFile != null ? ReadPlaced(options.MeshFile) : Placed(ProceduralMesh.Torus(250, 200));
     var (positions, indices, min, max) = Arrays(mesh);
-    var report = new EmbreeReport { Triangles = mesh.Triangles };
+    var report = new EmbreeReport { Triangles = mesh.Triangles, LoadBefore = EmbreeTsv.LoadAverage() };
     output.WriteLine($"mesh: {(options.MeshFile != null ? Path.GetFileName(options.MeshFile) : "procedural torus")}, {mesh.Triangles} triangles; {Environment.ProcessorCount} logical CPUs; median of {options.Repeats} rounds");
 
     // Builds: the library's mesh BVH (large subtrees on the thread pool: all cores) and Embree's MEDIUM (binned SAH) on one thread and on all.

@@ -30,6 +30,9 @@ public sealed class EmbreeOptions
   /// </summary>
   public bool Grouped { get; set; }
 
+  /// <summary>Also write the report as a table here (<c>--tsv FILE</c>, see <see cref="EmbreeTsv"/>); null: none.</summary>
+  public string? TsvFile { get; set; }
+
   public static EmbreeOptions Parse(string[] args)
   {
     var o = new EmbreeOptions();
@@ -44,6 +47,7 @@ public sealed class EmbreeOptions
         case "--threads": o.Threads = value.Split(',').Select(v => Positive(args[i], v)).ToArray(); break;
         case "--repeats": o.Repeats = Positive(args[i], value); break;
         case "--seed": o.Seed = int.Parse(value, CultureInfo.InvariantCulture); break;
+        case "--tsv": o.TsvFile = value; break;
         case "--order":
           o.Grouped = value switch
           {
@@ -52,7 +56,7 @@ public sealed class EmbreeOptions
             _ => throw new ArgumentException($"--order: '{value}' is not interleaved or grouped"),
           };
           break;
-        default: throw new ArgumentException($"unknown option '{args[i]}' (--mesh, --size, --rays, --threads, --repeats, --seed, --order)");
+        default: throw new ArgumentException($"unknown option '{args[i]}' (--mesh, --size, --rays, --threads, --repeats, --seed, --order, --tsv)");
       }
       i++;
     }

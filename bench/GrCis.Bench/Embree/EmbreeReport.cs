@@ -17,6 +17,9 @@ public sealed class EmbreeReport
   /// <summary>Bytes the library's last build round allocated (all threads; what the mesh keeps included).</summary>
   public long LibraryBuildBytes { get; set; }
 
+  /// <summary>The one-minute load average when the run started (<see cref="EmbreeTsv.LoadAverage"/>), or null.</summary>
+  public string? LoadBefore { get; init; }
+
   public List<EmbreeRow> Rows { get; } = new();
 
   /// <summary>Rays, over all rows' first thread count, whose hit or miss differed from Embree's.</summary>

@@ -270,4 +270,98 @@ public static class Figures
     plt.ShowLegend(Alignment.UpperRight);
     return plt;
   }
+
+  /// <summary>
+  /// (5) Mesh queries against Intel Embree (<c>embree --tsv</c>): per ray set, the time of the library's mesh kernel
+  /// (<c>TriangleMesh</c>), of its scene query (<c>PreparedScene</c>) and of Embree's 16-ray packets over Embree's
+  /// single-ray time, at the table's smallest thread count, and the build; lines at 1 (Embree) and 2 (the goal).
+  /// A row that disagreed with Embree on some ray is refused: its time is not of the same work.
+  /// </summary>
+  public static Plot EmbreeRatio(TsvTable t)
+  {
+    t.Require("rays", "query", "threads", "time_ratio", "mismatches");
+    var plt = NewPlot("Mesh ray queries: time ÷ Intel Embree's single-ray time (below 2: the goal)",
+                      Source(t.Header, t.File) + (t.Header.TryGetValue("mesh", out string? mesh) ? "; " + mesh : ""));
+    double? threads = null;
+    foreach (TsvRow r in t.Rows)
+      if (r.NumberOrNone("threads") is double n)
+        threads = Math.Min(threads ?? n, n);
+    (string prefix, string label)[] series =
+    {
+      ("TriangleMesh", "TriangleMesh (the mesh kernel)"), ("PreparedScene", "PreparedScene (what the renderer calls)"),
+      ("Embree rtcIntersect16", "Embree, 16-ray packets"), ("mesh BVH", "build ÷ Embree MEDIUM, 1 thread"),
+    };
+    var groups = new List<string>();
+    var values = new List<(string group, int series, double ratio)>();
+    foreach (TsvRow r in t.Rows)
+    {
+      if (r.Number("mismatches") != 0)
+        throw r.Error($"{r.Text("query")} disagreed with Embree on {r.Text("mismatches")} rays");
+      bool build = r.Text("rays") == Embree.EmbreeTsv.BuildRays;
+      if (!build && r.NumberOrNone("threads") != threads)
+        continue;
+      int k = Array.FindIndex(series, s => r.Text("query").StartsWith(s.prefix, StringComparison.Ordinal));
+      if (k < 0)
+        continue;   // Embree's single-ray row: the reference, 1 by definition
+      double ratio = r.Number("time_ratio");
+      if (ratio <= 0)
+        throw r.Error("time_ratio must be positive");
+      string group = build ? "build" : Wrap(r.Text("rays"), 16);
+      if (!groups.Contains(group))
+        groups.Add(group);
+      values.Add((group, k, ratio));
+    }
+    if (values.Count == 0)
+      throw new PlotInputException(t.File, 0, "no library rows");
+    int[] used = values.Select(v => v.series).Distinct().Order().ToArray();
+    var bars = new List<Bar>();
+    foreach (int k in used)
+    {
+      Color color = Palette[k % Palette.Length];
+      foreach (var v in values.Where(v => v.series == k))
+      {
+        // Within a group, the series it has, side by side.
+        int[] inGroup = values.Where(w => w.group == v.group).Select(w => w.series).Order().ToArray();
+        double w = 0.8 / Math.Max(inGroup.Length, 2);
+        double x = groups.IndexOf(v.group) + w * (Array.IndexOf(inGroup, k) + 0.5 - 0.5 * inGroup.Length);
+        bars.Add(new Bar { Position = x, Value = v.ratio, FillColor = color, Size = w * 0.9, Label = v.ratio.ToString("0.00", CultureInfo.InvariantCulture) });
+      }
+      plt.Legend.ManualItems.Add(new LegendItem { LabelText = series[k].label, FillColor = color });
+    }
+    var barPlot = plt.Add.Bars(bars);
+    barPlot.ValueLabelStyle.FontSize = 12;
+    foreach ((double y, string label, LinePattern pattern) in new[] { (1.0, "Embree = 1", LinePattern.Dashed), (2.0, "goal: 2", LinePattern.Dotted) })
+    {
+      var line = plt.Add.HorizontalLine(y);
+      line.LineColor = Colors.Black;
+      line.LinePattern = pattern;
+      line.LineWidth = 1.5f;
+      plt.Legend.ManualItems.Add(new LegendItem { LabelText = label, LineColor = Colors.Black, LinePattern = pattern, LineWidth = 1.5f });
+    }
+    plt.Axes.Bottom.SetTicks(Enumerable.Range(0, groups.Count).Select(i => (double)i).ToArray(), groups.ToArray());
+    plt.Axes.Bottom.MajorTickStyle.Length = 0;
+    plt.Axes.SetLimits(-0.6, groups.Count - 0.4, 0, Math.Max(2.5, values.Max(v => v.ratio) * 1.2));
+    plt.YLabel(Inv($"time ÷ Embree's single-ray time, {threads ?? 1} thread{(threads > 1 ? "s" : "")}"));
+    plt.ShowLegend(Alignment.UpperLeft);
+    return plt;
+  }
+
+  /// <summary>The words of <paramref name="text"/> on lines of about <paramref name="width"/> characters (tick labels).</summary>
+  static string Wrap(string text, int width)
+  {
+    var lines = new List<string>();
+    string line = "";
+    foreach (string word in text.Split(' ', StringSplitOptions.RemoveEmptyEntries))
+    {
+      if (line.Length > 0 && line.Length + 1 + word.Length > width)
+      {
+        lines.Add(line);
+        line = word;
+      }
+      else
+        line = line.Length == 0 ? word : line + " " + word;
+    }
+    lines.Add(line);
+    return string.Join('\n', lines);
+  }
 }

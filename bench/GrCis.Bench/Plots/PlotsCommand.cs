@@ -6,7 +6,7 @@ using ScottPlot;
 namespace GrCis.Bench.Plots;
 
 /// <summary>
-/// <c>plots [--results DIR] [--out DIR] [--cornell TSV] [--scaling JSON] [--mesh JSON] [--povray TSV]</c>: draws the
+/// <c>plots [--results DIR] [--out DIR] [--cornell TSV] [--scaling JSON] [--mesh JSON] [--povray TSV] [--embree TSV]</c>: draws the
 /// bench's figures as PNG (<see cref="Figures.Width"/>×<see cref="Figures.Height"/>) from the recorded results.
 /// Every input is read and every plot drawn before the first file is written, so bad input leaves nothing behind.
 /// </summary>
@@ -16,11 +16,12 @@ public static class PlotsCommand
   const string CornellDefault = "2026-11-26-cornell-cycles-mc.tsv",
     ScalingDefault = "2026-11-24-thread-scaling.json",
     MeshDefault = "2026-11-26-mesh-scaling.json",
-    PovRayDefault = "2026-11-24-povray.tsv";
+    PovRayDefault = "2026-11-24-povray.tsv",
+    EmbreeDefault = "2026-12-06-embree-ratio.tsv";
 
   public static int Run(string[] args)
   {
-    string? results = null, outDir = null, cornell = null, scaling = null, mesh = null, povray = null;
+    string? results = null, outDir = null, cornell = null, scaling = null, mesh = null, povray = null, embree = null;
     for (int i = 0; i < args.Length; i++)
     {
       string Value() => i + 1 < args.Length ? args[++i] : throw new ArgumentException($"plots: {args[i]} needs a value");
@@ -34,8 +35,9 @@ public static class PlotsCommand
           case "--scaling": scaling = Value(); break;
           case "--mesh": mesh = Value(); break;
           case "--povray": povray = Value(); break;
+          case "--embree": embree = Value(); break;
           default:
-            Console.Error.WriteLine($"plots: unknown option '{args[i]}'\nusage: plots [--results DIR] [--out DIR] [--cornell TSV] [--scaling JSON] [--mesh JSON] [--povray TSV]");
+            Console.Error.WriteLine($"plots: unknown option '{args[i]}'\nusage: plots [--results DIR] [--out DIR] [--cornell TSV] [--scaling JSON] [--mesh JSON] [--povray TSV] [--embree TSV]");
             return 2;
         }
       }
@@ -57,6 +59,7 @@ public static class PlotsCommand
     scaling ??= Path.Combine(results, ScalingDefault);
     mesh ??= Path.Combine(results, MeshDefault);
     povray ??= Path.Combine(results, PovRayDefault);
+    embree ??= Path.Combine(results, EmbreeDefault);
 
     var images = new List<(string name, byte[] png)>();
     try
@@ -69,6 +72,7 @@ public static class PlotsCommand
       images.Add(("thread-scaling.png", Png(Figures.ThreadScaling(BenchJson.Read(scaling)))));
       images.Add(("mesh-scaling.png", Png(Figures.MeshScaling(BenchJson.Read(mesh)))));
       images.Add(("povray-ratio.png", Png(Figures.PovRayRatio(TsvTable.Read(povray)))));
+      images.Add(("mesh-embree-ratio.png", Png(Figures.EmbreeRatio(TsvTable.Read(embree)))));
     }
     catch (PlotInputException e)
     {
