@@ -33,13 +33,34 @@ public class ReleasePackagesTests
     Assert.Equal(rids.Length, rids.Distinct().Count());
   }
 
+  /// <summary>The release recipe's block in docs/performance.md ("The release packages"), its lines.</summary>
+  internal static string[] ReleaseRecipe()
+  {
+    string page = File.ReadAllText(Path.Combine(RepoPaths.Root, "docs", "performance.md"));
+    int section = page.IndexOf("### The release packages", StringComparison.Ordinal);
+    Assert.True(section >= 0, "docs/performance.md has no section \"The release packages\"");
+    return ReadmeTests.ShellBlocks(page[section..]).First().Text.Split('\n', StringSplitOptions.RemoveEmptyEntries);
+  }
+
+  [Fact]
+  public void Release_recipe_packs_the_tool_and_checks_the_packages_with_this_class()
+  {
+    string[] recipe = ReleaseRecipe();
+    Assert.StartsWith("dotnet pack src/GrCis.Cli -c Release ", recipe[0], StringComparison.Ordinal);
+    Assert.Contains("-p:GrCisToolRids=release", recipe[0].Split(' '));
+    Assert.Contains("GRCIS_RELEASE_ARTIFACTS=", recipe[1], StringComparison.Ordinal);
+    Assert.EndsWith($"--filter {nameof(ReleasePackagesTests)}", recipe[1], StringComparison.Ordinal);
+  }
+
   [Fact]
   public void Release_platforms_restore_with_their_runtime_launcher_and_compiler_packs()
   {
     using var tmp = new TempDirectory();
-    // Only the tool's restore, written to a scratch folder: the repository's obj/ (which tests build from) is left alone.
-    (int code, string output) = Dotnet(RepoPaths.Root, "restore", "src/GrCis.Cli", "-p:GrCisToolRids=release", "-p:RestoreRecursive=false",
-                                       $"-p:RestoreOutputPath={tmp.Path}/", "--force", "--disable-build-servers");
+    // The recipe's properties; only the tool's restore, written to a scratch folder: the repository's obj/ (which
+    // tests build from) is left alone.
+    string[] properties = ReleaseRecipe()[0].Split(' ').Where(a => a.StartsWith("-p:", StringComparison.Ordinal)).ToArray();
+    (int code, string output) = Dotnet(RepoPaths.Root, ["restore", "src/GrCis.Cli", .. properties, "-p:RestoreRecursive=false",
+                                       $"-p:RestoreOutputPath={tmp.Path}/", "--force", "--disable-build-servers"]);
     Assert.True(code == 0, "the release restore failed:\n" + output);
 
     JsonNode assets = JsonNode.Parse(File.ReadAllText(tmp.File("project.assets.json")))!;
