@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The installed tool against the ReadyToRun publish, whole processes: `grcis --version` (start-up), the built-in
-# Five balls at 160x120 and the script scripts/FiveBalls.cs at 160x120 (cached: compiled in a run before). The two
+# Five balls at 160x120, the script scripts/FiveBalls.cs at 160x120 cached (compiled in a run before) and compiled
+# (--no-cache: Roslyn's start, where its ReadyToRun code counts most). The two
 # builds run alternately, one run of each per hyperfine call, the order swapped every call (so a changing load
 # disturbs them alike), each with a cache folder of its own; prints the median wall and CPU time of each, and
 # installed / publish.
@@ -30,14 +31,15 @@ publish=$PWD/src/GrCis.Cli/bin/publish/grcis
 script=$PWD/scripts/FiveBalls.cs
 echo "installed: $(find "$out/tools/.store" -name grcis.dll | sed "s|$out/tools/||")"
 
-for case in version built-in script; do
+for case in version built-in script compile; do
   declare -A cmd=()
   for b in installed publish; do
-    exe=${!b} run="env GRCIS_CACHE_DIR=$out/cache-$b ${!b}"
+    run="env GRCIS_CACHE_DIR=$out/cache-$b ${!b}"
     case $case in
       version) cmd[$b]="$run --version" ;;
       built-in) cmd[$b]="$run render FiveBalls -s 160x120 -o $out/$b.png -q" ;;
       script) cmd[$b]="$run render $script -s 160x120 -o $out/$b-script.png -q" ;;
+      compile) cmd[$b]="$run render $script -s 160x120 -o $out/$b-script.png -q --no-cache" ;;
     esac
     ${cmd[$b]} >/dev/null # warm-up: the script compiled into its cache, the start-up profile recorded
   done
