@@ -161,6 +161,7 @@ public class ReleasePackagesTests
     ToolPackageCheck.PortablePackage(Path.Combine(artifacts, $"GrCis.Cli.any.{version}.nupkg"), "grcis");
   }
 
+  /// <summary>Runs dotnet in <paramref name="folder"/> to its end (at most 3 minutes): exit code and output.</summary>
   static (int Code, string Output) Dotnet(string folder, params string[] args)
   {
     // The test host's MSBuild settings are not the child's; no build servers left running.
