@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
 # The installed tool against the ReadyToRun publish, whole processes: `grcis --version` (start-up), the built-in
 # Five balls at 160x120, the script scripts/FiveBalls.cs at 160x120 cached (compiled in a run before) and compiled
-# (--no-cache: Roslyn's start, where its ReadyToRun code counts most). The two
-# builds run alternately, one run of each per hyperfine call, the order swapped every call (so a changing load
-# disturbs them alike), each with a cache folder of its own; prints the median wall and CPU time of each, and
-# installed / publish.
+# (--no-cache: Roslyn's start, where its ReadyToRun code counts most). The two builds run alternately, one run of
+# each per hyperfine call, the order swapped every call (so a changing load disturbs them alike), each with a cache
+# folder of its own; prints the median wall and CPU time of each, and installed / publish.
 #
 #   bench/installed-tool.sh [RUNS] [ARTIFACTS]
 #
