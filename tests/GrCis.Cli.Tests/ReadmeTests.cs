@@ -150,7 +150,13 @@ public class ReadmeTests
     string tool = Assert.Single(tools);
     Assert.Contains($"{Path.DirectorySeparatorChar}grcis.cli.{rid}{Path.DirectorySeparatorChar}", tool, StringComparison.Ordinal);
     foreach (string dll in new[] { "grcis.dll", "GrCis.Rendering.dll", "GrCis.Hosting.dll", "Microsoft.CodeAnalysis.CSharp.dll" })
-      Assert.True(IsReadyToRun(Path.Combine(Path.GetDirectoryName(tool)!, dll)), $"{dll} of the installed tool is not ReadyToRun");
+    {
+      string path = Path.Combine(Path.GetDirectoryName(tool)!, dll);
+      Assert.True(IsReadyToRun(path), $"{dll} of the installed tool is not ReadyToRun");
+      // Compiled for this system and processor (the PE machine field a ReadyToRun image carries).
+      using var pe = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(path));
+      Assert.Equal(ToolPackageCheck.ReadyToRunMachine(rid), (ushort)pe.PEHeaders.CoffHeader.Machine);
+    }
   }
 
   [Fact]
