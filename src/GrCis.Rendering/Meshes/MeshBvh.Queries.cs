@@ -104,7 +104,7 @@ internal sealed partial class MeshBvh
         {
           int lane = BitOperations.TrailingZeroCount(mask);
           double tl = t.GetElement(lane);
-          int id = ids[TriangleBlock.Width * block + lane];
+          int id = blocks[block].Id[lane];
           bool better = accepted
             ? tl < bestT || (tl == bestT && id < bestTri)
             : tl > bestT || (tl == bestT && id > bestTri);
@@ -214,7 +214,7 @@ internal sealed partial class MeshBvh
         {
           int lane = BitOperations.TrailingZeroCount(mask);
           double tl = t.GetElement(lane);
-          int id = ids[TriangleBlock.Width * block + lane];
+          int id = blocks[block].Id[lane];
           if ((valid >> lane & 1) != 0)
           {
             if (!hasFirst || tl < bestF || (tl == bestF && id < triF))
@@ -332,7 +332,7 @@ internal sealed partial class MeshBvh
           continue;
         }
         int lane = BitOperations.TrailingZeroCount(take);
-        hit = new MeshHit { T = t.GetElement(lane), Triangle = ids[TriangleBlock.Width * block + lane], U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
+        hit = new MeshHit { T = t.GetElement(lane), Triangle = blocks[block].Id[lane], U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
         found = true;
         onlyBack = false;
         if (!(zone > 0.0))
