@@ -14,7 +14,6 @@ internal sealed partial class MeshBvh
   /// An upper bound on the T of every hit <see cref="Intersection.FirstIntersection"/> rejects: those have
   /// T ≤ sqrt(RAY_EPSILON2 / len2) up to rounding (the exact test decides which they are).
   /// </summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static double RejectLimit(double len2)
   {
     double limit = Math.Sqrt(Intersection.RAY_EPSILON2 / len2);
@@ -58,24 +57,17 @@ internal sealed partial class MeshBvh
     ref MeshNode nodes = ref FirstNode();
 
     // Each entry: an inner node (≥ 0) or a leaf lane (~(node·8 + lane)) and the line's parameter interval in its box,
-    // re-checked against the best when popped; the root's interval is that of the whole mesh's box. Three arrays of
-    // plain values, so a push writes and the sort reads the same widths (no store-to-load forwarding stalls).
+    // re-checked against the best when popped; the root's interval is that of the whole mesh's box.
     // On the stack (not zeroed) up to a tree depth of about 70; only a degenerate mesh's tree is deeper.
-    Span<int> stack = stackSize <= 512 ? stackalloc int[stackSize] : new int[stackSize];
-    Span<float> stackNear = stackSize <= 512 ? stackalloc float[stackSize] : new float[stackSize];
-    Span<float> stackFar = stackSize <= 512 ? stackalloc float[stackSize] : new float[stackSize];
+    Span<NodeSpan> stack = stackSize <= 512 ? stackalloc NodeSpan[stackSize] : new NodeSpan[stackSize];
     int sp = 0;
-    stack[0] = 0;
-    stackNear[0] = rootNear;
-    stackFar[0] = rootFar;
-    sp++;
+    stack[sp++] = new NodeSpan(0, rootNear, rootFar);
     while (sp > 0)
     {
-      --sp;
-      float eNear = stackNear[sp], eFar = stackFar[sp];
-      if (accepted ? (eFar <= 0.0 || eNear > bestT) : (eNear > limit || eFar < bestT))
+      NodeSpan e = stack[--sp];
+      if (accepted ? (e.Far <= 0.0 || e.Near > bestT) : (e.Near > limit || e.Far < bestT))
         continue;
-      int code = stack[sp];
+      int code = e.Node;
       if (code >= 0)
       {
         ref MeshNode n = ref Unsafe.Add(ref nodes, code);
@@ -83,27 +75,17 @@ internal sealed partial class MeshBvh
         mask &= accepted
           ? (int)(Vector256.GreaterThan(far, lo) & Vector256.LessThanOrEqual(near, hi)).ExtractMostSignificantBits()
           : (int)(Vector256.GreaterThanOrEqual(far, lo) & Vector256.LessThanOrEqual(near, hi)).ExtractMostSignificantBits();
-        if (mask == 0)
-          continue;
-        Vector256<int> entries = n.Entries(code);
         // The boxes more likely to hold the answer are popped first: nearest entry for the first accepted hit,
         // farthest exit for the last rejected one. Pushed in insertion order, most likely last.
         int first = sp;
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          int sc = entries.GetElement(lane);
-          float sn = near.GetElement(lane), sf = far.GetElement(lane);
+          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
           int k = sp++;
-          for (; k > first && (accepted ? stackNear[k - 1] < sn : stackFar[k - 1] > sf); k--)
-          {
+          for (; k > first && (accepted ? stack[k - 1].Near < s.Near : stack[k - 1].Far > s.Far); k--)
             stack[k] = stack[k - 1];
-            stackNear[k] = stackNear[k - 1];
-            stackFar[k] = stackFar[k - 1];
-          }
-          stack[k] = sc;
-          stackNear[k] = sn;
-          stackFar[k] = sf;
+          stack[k] = s;
         }
         continue;
       }
@@ -187,23 +169,16 @@ internal sealed partial class MeshBvh
     Vector256<float> vlimit = Vector256.Create(MeshNode.Up(limit));
     ref MeshNode nodes = ref FirstNode();
 
-    // Entries as in Nearest.
-    Span<int> stack = stackSize <= 512 ? stackalloc int[stackSize] : new int[stackSize];
-    Span<float> stackNear = stackSize <= 512 ? stackalloc float[stackSize] : new float[stackSize];
-    Span<float> stackFar = stackSize <= 512 ? stackalloc float[stackSize] : new float[stackSize];
+    Span<NodeSpan> stack = stackSize <= 512 ? stackalloc NodeSpan[stackSize] : new NodeSpan[stackSize];
     int sp = 0;
-    stack[0] = 0;
-    stackNear[0] = rootNear;
-    stackFar[0] = rootFar;
-    sp++;
+    stack[sp++] = new NodeSpan(0, rootNear, rootFar);
     while (sp > 0)
     {
-      --sp;
-      float eNear = stackNear[sp], eFar = stackFar[sp];
+      NodeSpan e = stack[--sp];
       // Nearest's two tests: accepted T in (0, bestF], rejected T in [bestB, limit].
-      if ((eFar <= 0.0 || eNear > bestF) && (eNear > limit || eFar < bestB))
+      if ((e.Far <= 0.0 || e.Near > bestF) && (e.Near > limit || e.Far < bestB))
         continue;
-      int code = stack[sp];
+      int code = e.Node;
       if (code >= 0)
       {
         ref MeshNode n = ref Unsafe.Add(ref nodes, code);
@@ -212,27 +187,18 @@ internal sealed partial class MeshBvh
         Vector256<float> zero = Vector256<float>.Zero;
         mask &= (int)((Vector256.GreaterThan(far, zero) & Vector256.LessThanOrEqual(near, hiF)) |
                       (Vector256.LessThanOrEqual(near, vlimit) & Vector256.GreaterThanOrEqual(far, loB))).ExtractMostSignificantBits();
-        if (mask == 0)
-          continue;
-        Vector256<int> entries = n.Entries(code);
         // Distance from the origin along the line (negative for a box around it): the smallest is popped first.
         Vector256<float> key = Vector256.MaxNative(near, -far);
         int pushed = sp;
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          int sc = entries.GetElement(lane);
-          float sn = near.GetElement(lane), sf = far.GetElement(lane), sk = key.GetElement(lane);
+          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
+          float sk = key.GetElement(lane);
           int k = sp++;
-          for (; k > pushed && MathF.Max(stackNear[k - 1], -stackFar[k - 1]) < sk; k--)
-          {
+          for (; k > pushed && MathF.Max(stack[k - 1].Near, -stack[k - 1].Far) < sk; k--)
             stack[k] = stack[k - 1];
-            stackNear[k] = stackNear[k - 1];
-            stackFar[k] = stackFar[k - 1];
-          }
-          stack[k] = sc;
-          stackNear[k] = sn;
-          stackFar[k] = sf;
+          stack[k] = s;
         }
         continue;
       }
@@ -332,13 +298,10 @@ internal sealed partial class MeshBvh
         mask &= (int)(Vector256.GreaterThan(far, Vector256<float>.Zero) & Vector256.LessThanOrEqual(near, Vector256.Create(hiBound))).ExtractMostSignificantBits();
         // In lane order: nearest first opened fewer boxes on segments (11.3 against 13.0 a ray) but measured slower on
         // shadow rays (3.71x against 3.43x Embree's time, bench/results/2026-12-06-occlusion.md).
-        if (mask == 0)
-          continue;
-        Vector256<int> entries = n.Entries(code);
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          stack[sp] = entries.GetElement(lane);
+          stack[sp] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane);
           stackNear[sp++] = near.GetElement(lane);
         }
         continue;
@@ -380,4 +343,7 @@ internal sealed partial class MeshBvh
     }
     return found;
   }
+
+  /// <summary>A stack entry: node code and the line's parameter interval in its box (floats, rounded outward).</summary>
+  readonly record struct NodeSpan(int Node, float Near, float Far);
 }

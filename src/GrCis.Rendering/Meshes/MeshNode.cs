@@ -28,19 +28,6 @@ internal struct MeshNode
     int lane;
   }
 
-  /// <summary>
-  /// Per lane, a walk's stack entry for the child: an inner child's node number (≥ 0), or ~(<paramref name="self"/>·8 +
-  /// lane) for a leaf lane (<paramref name="self"/>: this node's number). All eight at once, so a walk pushes plain ints.
-  /// </summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  public readonly Vector256<int> Entries(int self)
-  {
-    Vector256<int> index = Unsafe.As<Lanes, Vector256<int>>(ref Unsafe.AsRef(in Index));
-    Vector256<int> count = Unsafe.As<Lanes, Vector256<int>>(ref Unsafe.AsRef(in Count));
-    Vector256<int> leaf = ~(Vector256.Create(self * Width) + Vector256.Create(0, 1, 2, 3, 4, 5, 6, 7));
-    return Vector256.ConditionalSelect(Vector256.Equals(count, Vector256<int>.Zero), index, leaf);
-  }
-
   /// <summary>Every lane empty (min +∞, max −∞).</summary>
   public void Clear()
   {
@@ -60,7 +47,6 @@ internal struct MeshNode
   }
 
   /// <summary>The largest float ≤ <paramref name="x"/> (−∞ below the float range; NaN stays NaN).</summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]   // per ray and per hit in the walks
   public static float Down(double x)
   {
     float f = (float)x;
@@ -68,7 +54,6 @@ internal struct MeshNode
   }
 
   /// <summary>The smallest float ≥ <paramref name="x"/> (+∞ above the float range; NaN stays NaN).</summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static float Up(double x)
   {
     float f = (float)x;
