@@ -87,6 +87,23 @@ public class TriangleBlockTests
   }
 
   [Fact]
+  public void Each_triangle_s_vertices_come_back_from_its_block_as_the_mesh_s()
+  {
+    foreach (Scene3D.SceneBrep mesh in new[] { ProceduralMesh.Torus(40, 30), ProceduralMesh.Torus(3, 3, 1e6, 1e-3), ProceduralMesh.Torus(300, 200) })
+    {
+      var bvh = new MeshBvh(mesh);
+      for (int tri = 0; tri < mesh.Triangles; tri++)
+      {
+        mesh.GetTriangleVertices(tri, out Vector3 a, out Vector3 b, out Vector3 c);
+        bvh.Vertices(tri, out Vector3d va, out Vector3d vb, out Vector3d vc);
+        Assert.Equal((Vector3d)a, va);
+        Assert.Equal((Vector3d)b, vb);
+        Assert.Equal((Vector3d)c, vc);
+      }
+    }
+  }
+
+  [Fact]
   public void Cleared_block_never_hits()
   {
     var block = new TriangleBlock();
