@@ -77,6 +77,23 @@ public sealed class EmbreeComparisonTests
     Assert.False(EmbreeOptions.Parse(Array.Empty<string>()).Grouped);
     e = Assert.Throws<ArgumentException>(() => EmbreeOptions.Parse(new[] { "--order", "random" }));
     Assert.Equal("--order: 'random' is not interleaved or grouped", e.Message);
+    Assert.True(EmbreeOptions.Parse(new[] { "--clock", "cpu", "--threads", "1" }).ThreadCpu);
+    Assert.False(EmbreeOptions.Parse(new[] { "--clock", "wall" }).ThreadCpu);
+    e = Assert.Throws<ArgumentException>(() => EmbreeOptions.Parse(new[] { "--clock", "cpu" }));   // default threads 1,2
+    Assert.Equal("--clock cpu measures one thread: use it with --threads 1", e.Message);
+    e = Assert.Throws<ArgumentException>(() => EmbreeOptions.Parse(new[] { "--clock", "tsc" }));
+    Assert.Equal("--clock: 'tsc' is not wall or cpu", e.Message);
+  }
+
+  [SkippableFact]
+  public void Thread_processor_time_gives_positive_rates_and_says_so()
+  {
+    RequiredTool.Library("libembree3.so.3", EmbreeComparison.IsAvailable, EmbreeComparison.DebianPackage);
+    var output = new StringWriter();
+    EmbreeReport report = EmbreeComparison.Measure(
+      new EmbreeOptions { MeshFile = RepositoryMesh(), Size = 16, Rays = 400, Threads = new[] { 1 }, Repeats = 1, ThreadCpu = true }, output);
+    Assert.Contains("thread CPU time", output.ToString());
+    Assert.All(report.Rows, row => Assert.True(row.Mrays > 0.0 && double.IsFinite(row.Mrays) && row.Mismatches == 0, $"{row.Query} on {row.Rays}\n{output}"));
   }
 
   [SkippableFact]

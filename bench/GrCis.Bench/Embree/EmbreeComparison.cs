@@ -68,7 +68,7 @@ public static class EmbreeComparison
     SceneBrep mesh = options.MeshFile != null ? ReadPlaced(options.MeshFile) : Placed(ProceduralMesh.Torus(250, 200));
     var (positions, indices, min, max) = Arrays(mesh);
     var report = new EmbreeReport { Triangles = mesh.Triangles, LoadBefore = EmbreeTsv.LoadAverage() };
-    output.WriteLine($"mesh: {(options.MeshFile != null ? Path.GetFileName(options.MeshFile) : "procedural torus")}, {mesh.Triangles} triangles; {Environment.ProcessorCount} logical CPUs; median of {options.Repeats} rounds");
+    output.WriteLine($"mesh: {(options.MeshFile != null ? Path.GetFileName(options.MeshFile) : "procedural torus")}, {mesh.Triangles} triangles; {Environment.ProcessorCount} logical CPUs; median of {options.Repeats} rounds, {(options.ThreadCpu ? "thread CPU time" : "wall time")}");
 
     // Builds: the library's mesh BVH (large subtrees on the thread pool: all cores) and Embree's MEDIUM (binned SAH) on one thread and on all.
     report.LibraryBuild = Median(options.Repeats, () =>
@@ -147,7 +147,7 @@ public static class EmbreeComparison
         {
           // Interleaved: round by round, every query in turn; grouped: every round of a query, then the next query.
           int q = options.Grouped ? k / options.Repeats : k % queries.Count;
-          times[q].Add(Time(queries[q].Worker, rays.Count, threads));
+          times[q].Add(Time(queries[q].Worker, rays.Count, threads, options.ThreadCpu));
         }
         for (int q = 0; q < queries.Count; q++)
         {
@@ -265,8 +265,11 @@ public static class EmbreeComparison
     };
   }
 
-  /// <summary>Seconds to trace all rays on <paramref name="threads"/> threads, each with its own worker, taking chunks of 256 rays (a multiple of 16).</summary>
-  static double Time(Func<RayRange> worker, int count, int threads)
+  /// <summary>
+  /// Seconds to trace all rays on <paramref name="threads"/> threads, each with its own worker, taking chunks of 256 rays
+  /// (a multiple of 16); with <paramref name="threadCpu"/> (one thread), the processor time of the calling thread.
+  /// </summary>
+  static double Time(Func<RayRange> worker, int count, int threads, bool threadCpu = false)
   {
     const int chunk = 256;
     int next = 0;
@@ -278,6 +281,7 @@ public static class EmbreeComparison
       for (int start; (start = Interlocked.Add(ref next, chunk) - chunk) < count;)
         w(start, Math.Min(count, start + chunk), null);
     }
+    double cpu0 = threadCpu ? ThreadCpuSeconds() : 0.0;
     var clock = Stopwatch.StartNew();
     var running = new Thread[threads - 1];
     for (int t = 1; t < threads; t++)
@@ -289,7 +293,25 @@ public static class EmbreeComparison
     Work(workers[0]);
     foreach (Thread t in running)
       t.Join();
-    return clock.Elapsed.TotalSeconds;
+    return threadCpu ? ThreadCpuSeconds() - cpu0 : clock.Elapsed.TotalSeconds;
+  }
+
+  [StructLayout(LayoutKind.Sequential)]
+  struct Timespec
+  {
+    public long Seconds, Nanoseconds;
+  }
+
+  [DllImport("libc", EntryPoint = "clock_gettime")]
+  static extern int ClockGetTime(int clock, out Timespec time);
+
+  /// <summary>Processor time of the calling thread (Linux CLOCK_THREAD_CPUTIME_ID).</summary>
+  static double ThreadCpuSeconds()
+  {
+    const int ThreadCpuClock = 3;
+    if (ClockGetTime(ThreadCpuClock, out Timespec t) != 0)
+      throw new InvalidOperationException("clock_gettime(CLOCK_THREAD_CPUTIME_ID) failed");
+    return t.Seconds + 1e-9 * t.Nanoseconds;
   }
 
   static double Median(int repeats, Func<double> measure)

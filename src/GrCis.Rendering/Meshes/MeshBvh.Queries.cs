@@ -68,6 +68,7 @@ internal sealed partial class MeshBvh
       if (accepted ? (e.Far <= 0.0 || e.Near > bestT) : (e.Near > limit || e.Far < bestT))
         continue;
       int code = e.Node;
+    Open:
       if (code >= 0)
       {
         ref MeshNode n = ref Unsafe.Add(ref nodes, code);
@@ -75,6 +76,13 @@ internal sealed partial class MeshBvh
         mask &= accepted
           ? (int)(Vector256.GreaterThan(far, lo) & Vector256.LessThanOrEqual(near, hi)).ExtractMostSignificantBits()
           : (int)(Vector256.GreaterThanOrEqual(far, lo) & Vector256.LessThanOrEqual(near, hi)).ExtractMostSignificantBits();
+        if (mask != 0 && (mask & (mask - 1)) == 0)
+        {
+          // One box left: opened at once, not pushed and popped (it met the bounds just now).
+          int only = BitOperations.TrailingZeroCount(mask);
+          code = n.Count[only] == 0 ? n.Index[only] : ~(code * MeshNode.Width + only);
+          goto Open;
+        }
         // The boxes more likely to hold the answer are popped first: nearest entry for the first accepted hit,
         // farthest exit for the last rejected one. Pushed in insertion order, most likely last.
         int first = sp;
@@ -86,6 +94,12 @@ internal sealed partial class MeshBvh
           for (; k > first && (accepted ? stack[k - 1].Near < s.Near : stack[k - 1].Far > s.Far); k--)
             stack[k] = stack[k - 1];
           stack[k] = s;
+        }
+        // The most likely box (on top) is opened at once: it met the bounds just now.
+        if (sp > first)
+        {
+          code = stack[--sp].Node;
+          goto Open;
         }
         continue;
       }
@@ -104,7 +118,7 @@ internal sealed partial class MeshBvh
         {
           int lane = BitOperations.TrailingZeroCount(mask);
           double tl = t.GetElement(lane);
-          int id = ids[TriangleBlock.Width * block + lane];
+          int id = blocks[block].Id[lane];
           bool better = accepted
             ? tl < bestT || (tl == bestT && id < bestTri)
             : tl > bestT || (tl == bestT && id > bestTri);
@@ -179,6 +193,7 @@ internal sealed partial class MeshBvh
       if ((e.Far <= 0.0 || e.Near > bestF) && (e.Near > limit || e.Far < bestB))
         continue;
       int code = e.Node;
+    Open:
       if (code >= 0)
       {
         ref MeshNode n = ref Unsafe.Add(ref nodes, code);
@@ -187,6 +202,13 @@ internal sealed partial class MeshBvh
         Vector256<float> zero = Vector256<float>.Zero;
         mask &= (int)((Vector256.GreaterThan(far, zero) & Vector256.LessThanOrEqual(near, hiF)) |
                       (Vector256.LessThanOrEqual(near, vlimit) & Vector256.GreaterThanOrEqual(far, loB))).ExtractMostSignificantBits();
+        if (mask != 0 && (mask & (mask - 1)) == 0)
+        {
+          // One box left: opened at once (as in Nearest).
+          int only = BitOperations.TrailingZeroCount(mask);
+          code = n.Count[only] == 0 ? n.Index[only] : ~(code * MeshNode.Width + only);
+          goto Open;
+        }
         // Distance from the origin along the line (negative for a box around it): the smallest is popped first.
         Vector256<float> key = Vector256.MaxNative(near, -far);
         int pushed = sp;
@@ -199,6 +221,11 @@ internal sealed partial class MeshBvh
           for (; k > pushed && MathF.Max(stack[k - 1].Near, -stack[k - 1].Far) < sk; k--)
             stack[k] = stack[k - 1];
           stack[k] = s;
+        }
+        if (sp > pushed)
+        {
+          code = stack[--sp].Node;   // the nearest, at once (as in Nearest)
+          goto Open;
         }
         continue;
       }
@@ -214,7 +241,7 @@ internal sealed partial class MeshBvh
         {
           int lane = BitOperations.TrailingZeroCount(mask);
           double tl = t.GetElement(lane);
-          int id = ids[TriangleBlock.Width * block + lane];
+          int id = blocks[block].Id[lane];
           if ((valid >> lane & 1) != 0)
           {
             if (!hasFirst || tl < bestF || (tl == bestF && id < triF))
@@ -291,11 +318,20 @@ internal sealed partial class MeshBvh
       if (stackNear[sp] > hiBound)
         continue;
       int code = stack[sp];
+    Open:
       if (code >= 0)
       {
         ref MeshNode n = ref Unsafe.Add(ref nodes, code);
         int mask = step.Cross(in n, out Vector256<float> near, out Vector256<float> far);
         mask &= (int)(Vector256.GreaterThan(far, Vector256<float>.Zero) & Vector256.LessThanOrEqual(near, Vector256.Create(hiBound))).ExtractMostSignificantBits();
+        if (mask != 0 && (mask & (mask - 1)) == 0)
+        {
+          // One box left: opened at once, as popping it right after its push would (the same bound).
+          int only = BitOperations.TrailingZeroCount(mask);
+          code = n.Count[only] == 0 ? n.Index[only] : ~(code * MeshNode.Width + only);
+          goto Open;
+        }
+        int mask0 = mask;
         // In lane order: nearest first opened fewer boxes on segments (11.3 against 13.0 a ray) but measured slower on
         // shadow rays (3.71x against 3.43x Embree's time, bench/results/2026-12-06-occlusion.md).
         for (; mask != 0; mask &= mask - 1)
@@ -303,6 +339,11 @@ internal sealed partial class MeshBvh
           int lane = BitOperations.TrailingZeroCount(mask);
           stack[sp] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane);
           stackNear[sp++] = near.GetElement(lane);
+        }
+        if (mask0 != 0)
+        {
+          code = stack[--sp];   // the last pushed, at once, as the next pop would (the same bound)
+          goto Open;
         }
         continue;
       }
@@ -332,7 +373,7 @@ internal sealed partial class MeshBvh
           continue;
         }
         int lane = BitOperations.TrailingZeroCount(take);
-        hit = new MeshHit { T = t.GetElement(lane), Triangle = ids[TriangleBlock.Width * block + lane], U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
+        hit = new MeshHit { T = t.GetElement(lane), Triangle = blocks[block].Id[lane], U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
         found = true;
         onlyBack = false;
         if (!(zone > 0.0))

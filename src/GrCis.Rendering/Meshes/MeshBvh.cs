@@ -28,7 +28,7 @@ internal sealed partial class MeshBvh
   readonly BvhNode root;      // the box around every triangle
   readonly double mx, my, mz; // largest |coordinate| of the float boxes per axis, +∞ when a box is not finite in floats
   readonly TriangleBlock[] blocks;
-  readonly int[] ids;         // block·4 + lane → original triangle handle (−1 in unused lanes)
+  readonly int[] slots;       // triangle handle → block·4 + lane
   readonly int triangles, binaryNodes;
 
   public int TriangleCount => triangles;
@@ -76,7 +76,7 @@ internal sealed partial class MeshBvh
       magnitude = Math.Max(magnitude, Math.Max(Math.Abs(rootBox.Min[axis]), Math.Abs(rootBox.Max[axis])));
     double pad = 1e-9 * (Extent + magnitude);
     MeshNode[] nodes = MeshNode.Collapse(tree, pad, out stackSize);
-    (blocks, ids) = Store(mesh, nodes, order);
+    (blocks, slots) = Store(mesh, nodes, order);
     nodeCount = nodes.Length;
     (nodeMemory, nodeStart) = Aligned(nodes);
     // Every float box lies in the root's (boxes nest; outward rounding is monotone): its coordinates bound them all.
@@ -113,9 +113,9 @@ internal sealed partial class MeshBvh
 
   /// <summary>
   /// The triangles in blocks of four, each leaf's from a new block in leaf order; the wide leaf lanes are pointed at
-  /// their first block.
+  /// their first block; and each triangle's place (block·4 + lane).
   /// </summary>
-  static (TriangleBlock[] Blocks, int[] Ids) Store(SceneBrep mesh, MeshNode[] nodes, int[] order)
+  static (TriangleBlock[] Blocks, int[] Slots) Store(SceneBrep mesh, MeshNode[] nodes, int[] order)
   {
     int n = order.Length;
     // Leaves cover [0, n) in leaf order without overlap: a leaf is known by its first item.
@@ -146,8 +146,9 @@ internal sealed partial class MeshBvh
         }
 
     var blocks = new TriangleBlock[used];
-    var ids = new int[TriangleBlock.Width * used];
-    ids.AsSpan().Fill(-1);
+    var slots = new int[n];
+    foreach (ref TriangleBlock block in blocks.AsSpan())
+      block.Clear();
     InChunks(n, (start, end) =>
     {
       for (int k = start; k < end; k++)
@@ -155,13 +156,28 @@ internal sealed partial class MeshBvh
         // The vertices again from the mesh (cheap) rather than three more large arrays for the collector.
         mesh.GetTriangleVertices(order[k], out Vector3 pa, out Vector3 pb, out Vector3 pc);
         int p = place[k];
-        blocks[p / TriangleBlock.Width].Set(p % TriangleBlock.Width, pa, pb, pc);
-        ids[p] = order[k];
+        blocks[p / TriangleBlock.Width].Set(p % TriangleBlock.Width, order[k], pa, pb, pc);
+        slots[order[k]] = p;
       }
     });
     ArrayPool<int>.Shared.Return(countAt);
     ArrayPool<int>.Shared.Return(place);
-    return (blocks, ids);
+    return (blocks, slots);
+  }
+
+  /// <summary>
+  /// The vertices of triangle <paramref name="triangle"/> as its leaf block keeps them: the mesh's floats, widened (so
+  /// the same doubles as <see cref="SceneBrep.GetVertex"/> converted). A hit's block has just been read by the query, so
+  /// this is one load of the triangle's place instead of the mesh's index and three vertex loads.
+  /// </summary>
+  public void Vertices(int triangle, out Vector3d a, out Vector3d b, out Vector3d c)
+  {
+    int slot = slots[triangle];
+    ref readonly TriangleBlock k = ref blocks[slot / TriangleBlock.Width];
+    int lane = slot % TriangleBlock.Width;
+    a = new Vector3d(k.Ax.GetElement(lane), k.Ay.GetElement(lane), k.Az.GetElement(lane));
+    b = new Vector3d(k.Bx.GetElement(lane), k.By.GetElement(lane), k.Bz.GetElement(lane));
+    c = new Vector3d(k.Cx.GetElement(lane), k.Cy.GetElement(lane), k.Cz.GetElement(lane));
   }
 
   /// <summary>body(start, end) over [0, n) cut in chunks, in parallel when there are enough.</summary>
@@ -223,7 +239,7 @@ internal sealed partial class MeshBvh
           hits.Add(new MeshHit
           {
             T = t.GetElement(lane),
-            Triangle = ids[TriangleBlock.Width * block + lane],
+            Triangle = blocks[block].Id[lane],
             U = u.GetElement(lane),
             V = v.GetElement(lane),
             Front = det.GetElement(lane) > 0.0,

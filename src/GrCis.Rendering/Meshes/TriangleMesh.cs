@@ -336,7 +336,16 @@ public class TriangleMesh : DefaultSceneNode, ISolid, IRecordSolid, IAnyHitSolid
   {
     if (inter.SolidData is not HitData d)
       return false;
-    Vector3d normal = ShadingNormal(d, out _, out _, out _);
+    Vector3d normal;
+    MeshBvh? b = Volatile.Read(ref bvh);
+    if (b != null && !(Smooth && mesh.Normals > 0))
+    {
+      // The face normal from the leaf block the query has just read: the same vertices, so the same bits as ShadingNormal.
+      b.Vertices(d.Face, out Vector3d va, out Vector3d vb, out Vector3d vc);
+      normal = Vector3d.Cross(vb - va, vc - va);
+    }
+    else
+      normal = ShadingNormal(d, out _, out _, out _);
     Vector3d world = Vector3d.TransformNormalInverse(normal, worldToLocal);
     if (world.LengthSquared <= 1.0e-24)
       return false;
