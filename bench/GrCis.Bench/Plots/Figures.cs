@@ -340,7 +340,8 @@ public static class Figures
     }
     plt.Axes.Bottom.SetTicks(Enumerable.Range(0, groups.Count).Select(i => (double)i).ToArray(), groups.ToArray());
     plt.Axes.Bottom.MajorTickStyle.Length = 0;
-    plt.Axes.SetLimits(-0.6, groups.Count - 0.4, 0, Math.Max(2.5, values.Max(v => v.ratio) * 1.2));
+    // Head room for the legend (a third of the height) above the tallest bar.
+    plt.Axes.SetLimits(-0.6, groups.Count - 0.4, 0, Math.Max(2.5, values.Max(v => v.ratio) * 1.6));
     plt.YLabel(Inv($"time ÷ Embree's single-ray time, {threads ?? 1} thread{(threads > 1 ? "s" : "")}"));
     plt.ShowLegend(Alignment.UpperLeft);
     return plt;
