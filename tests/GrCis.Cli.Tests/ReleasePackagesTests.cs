@@ -172,6 +172,7 @@ public class ReleasePackagesTests
     env["MSBUILDDISABLENODEREUSE"] = "1";
     env["DOTNET_CLI_USE_MSBUILD_SERVER"] = "0";
     env["UseSharedCompilation"] = "false";
-    return Shell.Run(folder, env, TimeSpan.FromMinutes(3), PackagesTests.Dotnet, args);
+    // Minutes to spare: on a fresh NuGet folder the release restore downloads about 250 MB of runtime packs first.
+    return Shell.Run(folder, env, TimeSpan.FromMinutes(10), PackagesTests.Dotnet, args);
   }
 }
