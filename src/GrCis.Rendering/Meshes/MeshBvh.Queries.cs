@@ -80,7 +80,7 @@ internal sealed partial class MeshBvh
         {
           // One box left: opened at once, not pushed and popped (it met the bounds just now).
           int only = BitOperations.TrailingZeroCount(mask);
-          code = n.Count[only] == 0 ? n.Index[only] : ~(code * MeshNode.Width + only);
+          code = n.Child(code, only);
           goto Open;
         }
         // The boxes more likely to hold the answer are popped first: nearest entry for the first accepted hit,
@@ -89,7 +89,7 @@ internal sealed partial class MeshBvh
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
+          var s = new NodeSpan(n.Child(code, lane), near.GetElement(lane), far.GetElement(lane));
           int k = sp++;
           for (; k > first && (accepted ? stack[k - 1].Near < s.Near : stack[k - 1].Far > s.Far); k--)
             stack[k] = stack[k - 1];
@@ -206,7 +206,7 @@ internal sealed partial class MeshBvh
         {
           // One box left: opened at once (as in Nearest).
           int only = BitOperations.TrailingZeroCount(mask);
-          code = n.Count[only] == 0 ? n.Index[only] : ~(code * MeshNode.Width + only);
+          code = n.Child(code, only);
           goto Open;
         }
         // Distance from the origin along the line (negative for a box around it): the smallest is popped first.
@@ -215,7 +215,7 @@ internal sealed partial class MeshBvh
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          var s = new NodeSpan(n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane), near.GetElement(lane), far.GetElement(lane));
+          var s = new NodeSpan(n.Child(code, lane), near.GetElement(lane), far.GetElement(lane));
           float sk = key.GetElement(lane);
           int k = sp++;
           for (; k > pushed && MathF.Max(stack[k - 1].Near, -stack[k - 1].Far) < sk; k--)
@@ -328,7 +328,7 @@ internal sealed partial class MeshBvh
         {
           // One box left: opened at once, as popping it right after its push would (the same bound).
           int only = BitOperations.TrailingZeroCount(mask);
-          code = n.Count[only] == 0 ? n.Index[only] : ~(code * MeshNode.Width + only);
+          code = n.Child(code, only);
           goto Open;
         }
         int mask0 = mask;
@@ -337,7 +337,7 @@ internal sealed partial class MeshBvh
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          stack[sp] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane);
+          stack[sp] = n.Child(code, lane);
           stackNear[sp++] = near.GetElement(lane);
         }
         if (mask0 != 0)

@@ -224,7 +224,7 @@ internal sealed partial class MeshBvh
         for (int mask = step.Cross(in n, out _, out _); mask != 0; mask &= mask - 1)
         {
           int lane = System.Numerics.BitOperations.TrailingZeroCount(mask);
-          stack[sp++] = n.Count[lane] == 0 ? n.Index[lane] : ~(code * MeshNode.Width + lane);
+          stack[sp++] = n.Child(code, lane);
         }
         continue;
       }

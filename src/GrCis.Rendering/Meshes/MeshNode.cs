@@ -28,6 +28,13 @@ internal struct MeshNode
     int lane;
   }
 
+  /// <summary>
+  /// The walks' code for lane <paramref name="lane"/> of this node, numbered <paramref name="self"/>: an inner child's
+  /// node number (≥ 0), or for a leaf ~(self·8 + lane), from which <see cref="MeshBvh"/> reads the leaf's blocks.
+  /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  public readonly int Child(int self, int lane) => Count[lane] == 0 ? Index[lane] : ~(self * Width + lane);
+
   /// <summary>Every lane empty (min +∞, max −∞).</summary>
   public void Clear()
   {
