@@ -154,7 +154,7 @@ public static class EmbreeComparison
           double mrays = rays.Count / Median(times[q]) / 1e6;
           var row = new EmbreeRow(rays.Name, queries[q].Name, threads, mrays, referenceHits, agreement[q]);
           report.Rows.Add(row);
-          double embreeMrays = report.Rows.First(r => r.Rays == rays.Name && r.Threads == threads).Mrays;
+          double embreeMrays = report.ReferenceMrays(row);
           output.WriteLine($"  {queries[q].Name,-40} {threads} thread{(threads > 1 ? "s" : " ")}: {mrays,8:F2} Mrays/s  ({embreeMrays / mrays:F2}x Embree's time){(q > 0 ? $", {agreement[q]} mismatches" : "")}");
         }
       }

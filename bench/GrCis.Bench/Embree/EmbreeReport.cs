@@ -22,6 +22,12 @@ public sealed class EmbreeReport
 
   public List<EmbreeRow> Rows { get; } = new();
 
+  /// <summary>
+  /// Embree's single-ray rate on <paramref name="row"/>'s rays at its thread count: the first row of that set and count
+  /// (each set's queries are measured with Embree's single-ray query first).
+  /// </summary>
+  public double ReferenceMrays(EmbreeRow row) => Rows.First(r => r.Rays == row.Rays && r.Threads == row.Threads).Mrays;
+
   /// <summary>Rays, over all rows' first thread count, whose hit or miss differed from Embree's.</summary>
   public int Mismatches => Rows.Where(r => r.Threads == Rows[0].Threads).Sum(r => r.Mismatches);
 }

@@ -1,7 +1,6 @@
 using System;
 using System.Globalization;
 using System.IO;
-using System.Linq;
 
 namespace GrCis.Bench.Embree;
 
@@ -35,8 +34,9 @@ public static class EmbreeTsv
     w.NewLine = "\n";
     w.WriteLine($"# date: {DateTime.UtcNow:yyyy-MM-dd HH:mm} UTC");
     w.WriteLine($"# machine: {Environment.ProcessorCount} logical CPUs, {Processor()}, {Environment.OSVersion.VersionString}, .NET {Environment.Version}");
-    if (report.LoadBefore != null || LoadAverage() != null)
-      w.WriteLine($"# load average (1 min): {report.LoadBefore ?? "?"} at the start, {LoadAverage() ?? "?"} at the end (other work on the machine disturbs the ratios)");
+    string? loadAfter = LoadAverage();
+    if (report.LoadBefore != null || loadAfter != null)
+      w.WriteLine($"# load average (1 min): {report.LoadBefore ?? "?"} at the start, {loadAfter ?? "?"} at the end (other work on the machine disturbs the ratios)");
     if (Commit() is string commit)
       w.WriteLine($"# commit: {commit}");
     w.WriteLine($"# mesh: {mesh}, {report.Triangles} triangles");
@@ -46,7 +46,7 @@ public static class EmbreeTsv
     w.WriteLine(string.Join('\t', Columns));
     foreach (EmbreeRow row in report.Rows)
     {
-      double reference = report.Rows.First(r => r.Rays == row.Rays && r.Threads == row.Threads).Mrays;
+      double reference = report.ReferenceMrays(row);
       w.WriteLine(Inv($"{row.Rays}\t{row.Query}\t{row.Threads}\t{row.Mrays:F4}\t{reference:F4}\t{reference / row.Mrays:F4}\t{row.Mismatches}"));
     }
     if (report.EmbreeBuild1 > 0.0)
