@@ -43,41 +43,52 @@ internal readonly struct FloatStep : IMeshBoxStep
   /// <summary>
   /// True when the float step can bound the ray (origin o, inverse direction inv) in a tree whose float boxes reach at
   /// most <paramref name="mx"/>, <paramref name="my"/>, <paramref name="mz"/> in absolute value; false when the ray (or
-  /// the mesh) lies outside the bounds of the proof (see the remarks). Cheap scalar checks, decided once per ray.
+  /// the mesh) lies outside the bounds of the proof (see the remarks). Decided once per ray, the three axes at once.
   /// </summary>
-  public static bool Bounded(in MeshLine line, double mx, double my, double mz) =>
-    InRange(line.Ox, line.Ix, mx) && InRange(line.Oy, line.Iy, my) && InRange(line.Oz, line.Iz, mz);
-
-  // Written so that NaN fails too.
-  static bool InRange(double o, double inv, double m)
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  public static bool Bounded(in MeshLine line, double mx, double my, double mz)
   {
-    double a = Math.Abs(inv), s = (Math.Abs(o) + m) * a;
-    return a >= Lowest && a <= Two100 && s >= Lowest && s <= Two100;
+    // Ordered comparisons, so that NaN fails too; the fourth lane (inverse 1, |o| + m = 1) passes.
+    Vector256<double> a = Vector256.Abs(Vector256.Create(line.Ix, line.Iy, line.Iz, 1.0));
+    Vector256<double> s = (Vector256.Abs(Vector256.Create(line.Ox, line.Oy, line.Oz, 0.0)) + Vector256.Create(mx, my, mz, 1.0)) * a;
+    Vector256<double> low = Vector256.Create(Lowest), high = Vector256.Create(Two100);
+    var inRange = Vector256.GreaterThanOrEqual(a, low) & Vector256.LessThanOrEqual(a, high) &
+                  Vector256.GreaterThanOrEqual(s, low) & Vector256.LessThanOrEqual(s, high);
+    return inRange.ExtractMostSignificantBits() == 0b1111;
   }
 
   /// <summary>The step for a ray <see cref="Bounded"/> accepts (the same bounds).</summary>
+  /// <remarks>
+  /// Per axis (lanes x, y, z of one vector; the same arithmetic in the same order as one axis at a time): the float
+  /// inverse, the near and far offsets cN ≤ −o·invf − pad and cF ≥ −o·invf + pad, the near plane (0 min, 3 max).
+  /// </remarks>
   [SkipLocalsInit]
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public FloatStep(in MeshLine line, double mx, double my, double mz)
   {
-    Axis(line.Ox, line.Ix, mx, out ix, out nx, out fx, out px);
-    Axis(line.Oy, line.Iy, my, out iy, out ny, out fy, out py);
-    Axis(line.Oz, line.Iz, mz, out iz, out nz, out fz, out pz);
-    qx = 3 - px;   // the other plane of the axis (fields 0…2 min, 3…5 max)
-    py += 1;
+    Vector256<double> o = Vector256.Create(line.Ox, line.Oy, line.Oz, 0.0);
+    Vector256<double> inv = Vector256.Create(line.Ix, line.Iy, line.Iz, 1.0);
+    Vector128<float> f = MeshNode.Narrow(inv);
+    Vector256<double> oi = o * MeshNode.Widen(f);
+    Vector256<double> pad = Vector256.Create(Pad) * (Vector256.Abs(o) + Vector256.Create(mx, my, mz, 0.0)) * Vector256.Abs(inv);
+    Vector128<float> near = MeshNode.Down(-oi - pad), far = MeshNode.Up(-oi + pad);
+    ix = Vector256.Create(f.GetElement(0));
+    iy = Vector256.Create(f.GetElement(1));
+    iz = Vector256.Create(f.GetElement(2));
+    nx = Vector256.Create(near.GetElement(0));
+    ny = Vector256.Create(near.GetElement(1));
+    nz = Vector256.Create(near.GetElement(2));
+    fx = Vector256.Create(far.GetElement(0));
+    fy = Vector256.Create(far.GetElement(1));
+    fz = Vector256.Create(far.GetElement(2));
+    // Field numbers (0…2 min, 3…5 max): the near plane is the min plane where inv > 0, the far plane the other one.
+    int negative = (int)Vector256.LessThanOrEqual(inv, Vector256<double>.Zero).ExtractMostSignificantBits();
+    px = (negative & 1) * 3;
+    py = 1 + ((negative >> 1) & 1) * 3;
+    pz = 2 + ((negative >> 2) & 1) * 3;
+    qx = 3 - px;
     qy = 5 - py;
-    pz += 2;
     qz = 7 - pz;
-  }
-
-  // One axis: float inverse, the near and far offsets cN ≤ −o·invf − pad and cF ≥ −o·invf + pad, the near plane (0 min, 3 max).
-  static void Axis(double o, double inv, double m, out Vector256<float> vinv, out Vector256<float> near, out Vector256<float> far, out int plane)
-  {
-    float f = (float)inv;
-    double oi = o * f, pad = Pad * (Math.Abs(o) + m) * Math.Abs(inv);
-    vinv = Vector256.Create(f);
-    near = Vector256.Create(MeshNode.Down(-oi - pad));
-    far = Vector256.Create(MeshNode.Up(-oi + pad));
-    plane = inv > 0.0 ? 0 : 3;
   }
 
   [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -257,7 +257,7 @@ internal sealed partial class MeshBvh
   {
     line = new MeshLine(p0.X, p0.Y, p0.Z, p1.X, p1.Y, p1.Z);
     near = far = 0f;
-    if (triangles == 0 || !LineBox(line, out double tMin, out double tMax))
+    if (triangles == 0 || !LineBox(root, line, out double tMin, out double tMax))
       return false;
     near = MeshNode.Down(tMin);
     far = MeshNode.Up(tMax);
@@ -274,27 +274,36 @@ internal sealed partial class MeshBvh
     end = block + parent.Count[slot & 7];
   }
 
-  static bool Slab(double min, double max, double o, double d, double inv, ref double tMin, ref double tMax)
+  /// <summary>
+  /// Parameter interval of the line in the box around every triangle, the three slabs at once: per axis t0 = (min − o)·inv
+  /// and t1 = (max − o)·inv, ordered (no swap when either is NaN), each widened by 1e-12·(|t0| + |t1|) so that hits on box
+  /// faces (flat boxes) are not lost to rounding; an axis the line runs parallel to (d = 0) keeps the whole line when the
+  /// origin lies within the slab and nothing otherwise. The interval is the intersection (a NaN end leaves it empty).
+  /// Branch-free: which way a slab faces is a coin toss per ray for incoherent rays.
+  /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  internal static bool LineBox(in BvhNode root, in MeshLine l, out double tMin, out double tMax)
   {
-    if (d == 0.0)
-      return o >= min && o <= max;
-    double t0 = (min - o) * inv, t1 = (max - o) * inv;
-    if (t0 > t1)
-      (t0, t1) = (t1, t0);
-    // Widen a little so that hits on box faces (flat boxes) are not lost to rounding.
-    double pad = 1e-12 * (Math.Abs(t0) + Math.Abs(t1));
-    tMin = Math.Max(tMin, t0 - pad);
-    tMax = Math.Min(tMax, t1 + pad);
+    // The fourth lane's slab (−∞, +∞) never restricts the line.
+    Vector256<double> o = Vector256.Create(l.Ox, l.Oy, l.Oz, 0.0), d = Vector256.Create(l.Dx, l.Dy, l.Dz, 1.0);
+    Vector256<double> inv = Vector256.Create(l.Ix, l.Iy, l.Iz, 1.0);
+    Vector256<double> min = Vector256.Create(root.MinX, root.MinY, root.MinZ, double.NegativeInfinity);
+    Vector256<double> max = Vector256.Create(root.MaxX, root.MaxY, root.MaxZ, double.PositiveInfinity);
+    Vector256<double> t0 = (min - o) * inv, t1 = (max - o) * inv;
+    Vector256<double> swap = Vector256.GreaterThan(t0, t1);
+    Vector256<double> a = Vector256.ConditionalSelect(swap, t1, t0), b = Vector256.ConditionalSelect(swap, t0, t1);
+    Vector256<double> pad = Vector256.Create(1e-12) * (Vector256.Abs(a) + Vector256.Abs(b));
+    a -= pad;
+    b += pad;
+    Vector256<double> parallel = Vector256.Equals(d, Vector256<double>.Zero);
+    Vector256<double> within = Vector256.GreaterThanOrEqual(o, min) & Vector256.LessThanOrEqual(o, max);
+    Vector256<double> inf = Vector256.Create(double.PositiveInfinity);
+    a = Vector256.ConditionalSelect(parallel, Vector256.ConditionalSelect(within, -inf, inf), a);
+    b = Vector256.ConditionalSelect(parallel, Vector256.ConditionalSelect(within, inf, -inf), b);
+    // Max and Min as Math.Max and Math.Min (NaN wins, −0 < +0), so the order of the axes does not matter.
+    Vector128<double> a2 = Vector128.Max(a.GetLower(), a.GetUpper()), b2 = Vector128.Min(b.GetLower(), b.GetUpper());
+    tMin = Math.Max(a2.GetElement(0), a2.GetElement(1));
+    tMax = Math.Min(b2.GetElement(0), b2.GetElement(1));
     return tMin <= tMax;
-  }
-
-  /// <summary>Parameter interval of the line in the box around every triangle (widened slabs).</summary>
-  bool LineBox(in MeshLine l, out double tMin, out double tMax)
-  {
-    tMin = double.NegativeInfinity;
-    tMax = double.PositiveInfinity;
-    return Slab(root.MinX, root.MaxX, l.Ox, l.Dx, l.Ix, ref tMin, ref tMax) &&
-           Slab(root.MinY, root.MaxY, l.Oy, l.Dy, l.Iy, ref tMin, ref tMax) &&
-           Slab(root.MinZ, root.MaxZ, l.Oz, l.Dz, l.Iz, ref tMin, ref tMax);
   }
 }
