@@ -34,7 +34,7 @@ namespace Rendering;
 internal readonly struct FloatStep : IMeshBoxStep
 {
   readonly Vector256<float> ix, iy, iz, nx, ny, nz, fx, fy, fz;
-  readonly int px, py, pz, qx, qy, qz;   // near and far plane of each axis (MeshNode field number)
+  readonly nint px, py, pz, qx, qy, qz;   // near and far plane of each axis (byte offset of the MeshNode field)
 
   const double Two100 = (double)(1L << 50) * (1L << 50);
   const double Lowest = 1.0 / Two100;
@@ -59,14 +59,17 @@ internal readonly struct FloatStep : IMeshBoxStep
   [SkipLocalsInit]
   public FloatStep(in MeshLine line, double mx, double my, double mz)
   {
-    Axis(line.Ox, line.Ix, mx, out ix, out nx, out fx, out px);
-    Axis(line.Oy, line.Iy, my, out iy, out ny, out fy, out py);
-    Axis(line.Oz, line.Iz, mz, out iz, out nz, out fz, out pz);
-    qx = 3 - px;   // the other plane of the axis (fields 0…2 min, 3…5 max)
-    py += 1;
-    qy = 5 - py;
-    pz += 2;
-    qz = 7 - pz;
+    Axis(line.Ox, line.Ix, mx, out ix, out nx, out fx, out int x);
+    Axis(line.Oy, line.Iy, my, out iy, out ny, out fy, out int y);
+    Axis(line.Oz, line.Iz, mz, out iz, out nz, out fz, out int z);
+    // Field numbers (0…2 min, 3…5 max; the far plane is the axis's other one) as byte offsets: no index arithmetic per node.
+    int size = Unsafe.SizeOf<Vector256<float>>();
+    px = x * size;
+    qx = (3 - x) * size;
+    py = (y + 1) * size;
+    qy = (4 - y) * size;
+    pz = (z + 2) * size;
+    qz = (5 - z) * size;
   }
 
   // One axis: float inverse, the near and far offsets cN ≤ −o·invf − pad and cF ≥ −o·invf + pad, the near plane (0 min, 3 max).
@@ -84,12 +87,12 @@ internal readonly struct FloatStep : IMeshBoxStep
   public int Cross(ref readonly MeshNode n, out Vector256<float> near, out Vector256<float> far)
   {
     ref Vector256<float> p = ref Unsafe.AsRef(in n.MinX);
-    near = Vector256.MaxNative(Vector256.MaxNative(Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, px), ix, nx),
-                                                   Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, py), iy, ny)),
-                               Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, pz), iz, nz));
-    far = Vector256.MinNative(Vector256.MinNative(Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qx), ix, fx),
-                                                  Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qy), iy, fy)),
-                              Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qz), iz, fz));
+    near = Vector256.MaxNative(Vector256.MaxNative(Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, px), ix, nx),
+                                                   Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, py), iy, ny)),
+                               Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, pz), iz, nz));
+    far = Vector256.MinNative(Vector256.MinNative(Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, qx), ix, fx),
+                                                  Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, qy), iy, fy)),
+                              Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, qz), iz, fz));
     return (int)Vector256.LessThanOrEqual(near, far).ExtractMostSignificantBits();
   }
 }
