@@ -34,7 +34,7 @@ namespace Rendering;
 internal readonly struct FloatStep : IMeshBoxStep
 {
   readonly Vector256<float> ix, iy, iz, nx, ny, nz, fx, fy, fz;
-  readonly int px, py, pz, qx, qy, qz;   // near and far plane of each axis (MeshNode field number)
+  readonly nint px, py, pz, qx, qy, qz;   // near and far plane of each axis (byte offset of the MeshNode field)
 
   const double Two100 = (double)(1L << 50) * (1L << 50);
   const double Lowest = 1.0 / Two100;
@@ -81,26 +81,29 @@ internal readonly struct FloatStep : IMeshBoxStep
     fx = Vector256.Create(far.GetElement(0));
     fy = Vector256.Create(far.GetElement(1));
     fz = Vector256.Create(far.GetElement(2));
-    // Field numbers (0…2 min, 3…5 max): the near plane is the min plane where inv > 0, the far plane the other one.
+    // Field numbers (0…2 min, 3…5 max): the near plane is the min plane where inv > 0, the far plane the axis's other
+    // one; kept as byte offsets, so a node's step needs no index arithmetic.
     int negative = (int)Vector256.LessThanOrEqual(inv, Vector256<double>.Zero).ExtractMostSignificantBits();
-    px = (negative & 1) * 3;
-    py = 1 + ((negative >> 1) & 1) * 3;
-    pz = 2 + ((negative >> 2) & 1) * 3;
-    qx = 3 - px;
-    qy = 5 - py;
-    qz = 7 - pz;
+    int x = (negative & 1) * 3, y = ((negative >> 1) & 1) * 3, z = ((negative >> 2) & 1) * 3;
+    int size = Unsafe.SizeOf<Vector256<float>>();
+    px = x * size;
+    qx = (3 - x) * size;
+    py = (y + 1) * size;
+    qy = (4 - y) * size;
+    pz = (z + 2) * size;
+    qz = (5 - z) * size;
   }
 
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public int Cross(ref readonly MeshNode n, out Vector256<float> near, out Vector256<float> far)
   {
     ref Vector256<float> p = ref Unsafe.AsRef(in n.MinX);
-    near = Vector256.MaxNative(Vector256.MaxNative(Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, px), ix, nx),
-                                                   Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, py), iy, ny)),
-                               Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, pz), iz, nz));
-    far = Vector256.MinNative(Vector256.MinNative(Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qx), ix, fx),
-                                                  Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qy), iy, fy)),
-                              Vector256.FusedMultiplyAdd(Unsafe.Add(ref p, qz), iz, fz));
+    near = Vector256.MaxNative(Vector256.MaxNative(Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, px), ix, nx),
+                                                   Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, py), iy, ny)),
+                               Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, pz), iz, nz));
+    far = Vector256.MinNative(Vector256.MinNative(Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, qx), ix, fx),
+                                                  Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, qy), iy, fy)),
+                              Vector256.FusedMultiplyAdd(Unsafe.AddByteOffset(ref p, qz), iz, fz));
     return (int)Vector256.LessThanOrEqual(near, far).ExtractMostSignificantBits();
   }
 }

@@ -2,12 +2,13 @@ using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
+using System.Runtime.Intrinsics.X86;
 using OpenTK.Mathematics;
 using Rendering.Accel;
 
 namespace Rendering;
 
-/// <summary>The closest-hit and any-hit walks of a <see cref="MeshBvh"/>.</summary>
+/// <summary>The closest-hit walks of a <see cref="MeshBvh"/> (the any-hit walk: <c>MeshBvh.Any.cs</c>).</summary>
 internal sealed partial class MeshBvh
 {
   /// <summary>
@@ -55,11 +56,15 @@ internal sealed partial class MeshBvh
     Vector256<float> lo = Vector256.Create(accepted ? 0f : MeshNode.Down(bestT));
     Vector256<float> hi = Vector256.Create(MeshNode.Up(accepted ? bestT : limit));
     ref MeshNode nodes = ref FirstNode();
+    ref TriangleBlock blocks = ref FirstBlock();
 
     // Each entry: an inner node (≥ 0) or a leaf lane (~(node·8 + lane)) and the line's parameter interval in its box,
     // re-checked against the best when popped; the root's interval is that of the whole mesh's box.
     // On the stack (not zeroed) up to a tree depth of about 70; only a degenerate mesh's tree is deeper.
     Span<NodeSpan> stack = stackSize <= 512 ? stackalloc NodeSpan[stackSize] : new NodeSpan[stackSize];
+    Unsafe.SkipInit(out Vector256<float> spillNear);
+    Unsafe.SkipInit(out Vector256<float> spillFar);
+    Unsafe.SkipInit(out Vector256<int> spillCode);
     int sp = 0;
     stack[sp++] = new NodeSpan(0, rootNear, rootFar);
     while (sp > 0)
@@ -83,30 +88,46 @@ internal sealed partial class MeshBvh
           code = n.Child(code, only);
           goto Open;
         }
+        if (mask == 0)
+          continue;
         // The boxes more likely to hold the answer are popped first: nearest entry for the first accepted hit,
-        // farthest exit for the last rejected one. Pushed in insertion order, most likely last.
+        // farthest exit for the last rejected one. The most likely is opened at once (it met the bounds just now),
+        // the others pushed, most likely last; their memory is prefetched while this subtree is walked. The lanes
+        // are spilled once and read from memory (an element read by a variable lane spills the vector each time).
+        spillNear = near;
+        spillFar = far;
+        spillCode = n.Children(code);
+        for (int m = mask; m != 0; m &= m - 1)
+          Prefetch(ref nodes, ref blocks, Lane(ref spillCode, BitOperations.TrailingZeroCount(m)));
+        int a = BitOperations.TrailingZeroCount(mask);
+        int rest = mask & (mask - 1);
+        if ((rest & (rest - 1)) == 0)
+        {
+          // Two boxes (the most common case): one comparison.
+          int b = BitOperations.TrailingZeroCount(rest);
+          if (accepted ? Lane(ref spillNear, b) < Lane(ref spillNear, a) : Lane(ref spillFar, b) > Lane(ref spillFar, a))
+            (a, b) = (b, a);
+          stack[sp++] = new NodeSpan(Lane(ref spillCode, b), Lane(ref spillNear, b), Lane(ref spillFar, b));
+          code = Lane(ref spillCode, a);
+          goto Open;
+        }
         int first = sp;
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          var s = new NodeSpan(n.Child(code, lane), near.GetElement(lane), far.GetElement(lane));
+          var s = new NodeSpan(Lane(ref spillCode, lane), Lane(ref spillNear, lane), Lane(ref spillFar, lane));
           int k = sp++;
           for (; k > first && (accepted ? stack[k - 1].Near < s.Near : stack[k - 1].Far > s.Far); k--)
             stack[k] = stack[k - 1];
           stack[k] = s;
         }
-        // The most likely box (on top) is opened at once: it met the bounds just now.
-        if (sp > first)
-        {
-          code = stack[--sp].Node;
-          goto Open;
-        }
-        continue;
+        code = stack[--sp].Node;
+        goto Open;
       }
       Leaf(ref nodes, code, out int block, out int end);
       for (; block < end; block++)
       {
-        int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
+        int mask = Unsafe.Add(ref blocks, block).Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
                                      out Vector256<double> v, out Vector256<double> det);
         if (mask == 0)
           continue;
@@ -118,7 +139,7 @@ internal sealed partial class MeshBvh
         {
           int lane = BitOperations.TrailingZeroCount(mask);
           double tl = t.GetElement(lane);
-          int id = blocks[block].Id[lane];
+          int id = Unsafe.Add(ref blocks, block).Id[lane];
           bool better = accepted
             ? tl < bestT || (tl == bestT && id < bestTri)
             : tl > bestT || (tl == bestT && id > bestTri);
@@ -182,8 +203,13 @@ internal sealed partial class MeshBvh
     Vector256<float> hiF = Vector256.Create(float.PositiveInfinity), loB = Vector256.Create(float.NegativeInfinity);
     Vector256<float> vlimit = Vector256.Create(MeshNode.Up(limit));
     ref MeshNode nodes = ref FirstNode();
+    ref TriangleBlock blocks = ref FirstBlock();
 
     Span<NodeSpan> stack = stackSize <= 512 ? stackalloc NodeSpan[stackSize] : new NodeSpan[stackSize];
+    Unsafe.SkipInit(out Vector256<float> spillNear);
+    Unsafe.SkipInit(out Vector256<float> spillFar);
+    Unsafe.SkipInit(out Vector256<float> spillKey);
+    Unsafe.SkipInit(out Vector256<int> spillCode);
     int sp = 0;
     stack[sp++] = new NodeSpan(0, rootNear, rootFar);
     while (sp > 0)
@@ -209,30 +235,45 @@ internal sealed partial class MeshBvh
           code = n.Child(code, only);
           goto Open;
         }
-        // Distance from the origin along the line (negative for a box around it): the smallest is popped first.
-        Vector256<float> key = Vector256.MaxNative(near, -far);
+        if (mask == 0)
+          continue;
+        // Distance from the origin along the line (negative for a box around it): the smallest is popped first; the
+        // nearest opened at once, the others pushed and prefetched (as in Nearest).
+        spillNear = near;
+        spillFar = far;
+        spillKey = Vector256.MaxNative(near, -far);
+        spillCode = n.Children(code);
+        for (int m = mask; m != 0; m &= m - 1)
+          Prefetch(ref nodes, ref blocks, Lane(ref spillCode, BitOperations.TrailingZeroCount(m)));
+        int a = BitOperations.TrailingZeroCount(mask);
+        int rest = mask & (mask - 1);
+        if ((rest & (rest - 1)) == 0)
+        {
+          int b = BitOperations.TrailingZeroCount(rest);
+          if (Lane(ref spillKey, b) < Lane(ref spillKey, a))
+            (a, b) = (b, a);
+          stack[sp++] = new NodeSpan(Lane(ref spillCode, b), Lane(ref spillNear, b), Lane(ref spillFar, b));
+          code = Lane(ref spillCode, a);
+          goto Open;
+        }
         int pushed = sp;
         for (; mask != 0; mask &= mask - 1)
         {
           int lane = BitOperations.TrailingZeroCount(mask);
-          var s = new NodeSpan(n.Child(code, lane), near.GetElement(lane), far.GetElement(lane));
-          float sk = key.GetElement(lane);
+          var s = new NodeSpan(Lane(ref spillCode, lane), Lane(ref spillNear, lane), Lane(ref spillFar, lane));
+          float sk = Lane(ref spillKey, lane);
           int k = sp++;
           for (; k > pushed && MathF.Max(stack[k - 1].Near, -stack[k - 1].Far) < sk; k--)
             stack[k] = stack[k - 1];
           stack[k] = s;
         }
-        if (sp > pushed)
-        {
-          code = stack[--sp].Node;   // the nearest, at once (as in Nearest)
-          goto Open;
-        }
-        continue;
+        code = stack[--sp].Node;
+        goto Open;
       }
       Leaf(ref nodes, code, out int block, out int end);
       for (; block < end; block++)
       {
-        int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
+        int mask = Unsafe.Add(ref blocks, block).Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
                                      out Vector256<double> v, out Vector256<double> det);
         if (mask == 0)
           continue;
@@ -241,7 +282,7 @@ internal sealed partial class MeshBvh
         {
           int lane = BitOperations.TrailingZeroCount(mask);
           double tl = t.GetElement(lane);
-          int id = blocks[block].Id[lane];
+          int id = Unsafe.Add(ref blocks, block).Id[lane];
           if ((valid >> lane & 1) != 0)
           {
             if (!hasFirst || tl < bestF || (tl == bestF && id < triF))
@@ -266,123 +307,31 @@ internal sealed partial class MeshBvh
     }
   }
 
+  /// <summary>Lane <paramref name="lane"/> of a spilled vector (one load, no bounds check: lane is 0…7).</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static T Lane<T>(ref Vector256<T> v, int lane) => Unsafe.Add(ref Unsafe.As<Vector256<T>, T>(ref v), lane);
+
   /// <summary>
-  /// Any-hit with early exit, with a zone near the origin that must be clear: some hit that
-  /// <see cref="Intersection.FirstIntersection"/> accepts with T in (<paramref name="zone"/>, <paramref name="tMax"/>] and,
-  /// when <paramref name="frontOnly"/>, runs against the face (Front), while no accepted hit (either face) lies in
-  /// (0, <paramref name="zone"/>] (0 ≤ zone ≤ tMax). An accepted hit in the zone stops the walk: false with
-  /// <paramref name="inZone"/>. Otherwise true at a hit of the range found in no particular order once the zone is known
-  /// clear (with a zone of 0, at once), or false, with <paramref name="onlyBack"/> true when accepted back-face hits (exits)
-  /// lie in the range. Boxes beyond the bound or behind the origin are never opened.
+  /// A hint to bring the memory of a pushed entry into the cache while the walk goes on elsewhere: an inner node's
+  /// three plane lines (what its box step reads), or a leaf's first triangle block (three lines from its 64-byte
+  /// boundary). Issued for every kept box before the sort, the one opened at once included. No effect on any answer.
   /// </summary>
-  [SkipLocalsInit]   // the float step (300 bytes) is written before it is read
-  public bool Any(in Vector3d p0, in Vector3d p1, double len2, double zone, double tMax, bool frontOnly, out MeshHit hit,
-                  out bool inZone, out bool onlyBack)
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static unsafe void Prefetch(ref MeshNode nodes, ref TriangleBlock blocks, int code)
   {
-    hit = default;
-    inZone = onlyBack = false;
-    if (!Start(p0, p1, out MeshLine line, out float near, out float far) || far <= 0f || near > tMax)
-      return false;
-    return FloatStep.Bounded(line, mx, my, mz)
-      ? Any(new FloatStep(line, mx, my, mz), line, near, len2, zone, tMax, frontOnly, out hit, out inZone, out onlyBack)
-      : Any(new DoubleStep(line), line, near, len2, zone, tMax, frontOnly, out hit, out inZone, out onlyBack);
-  }
-
-  [SkipLocalsInit]   // the stack is written before it is read
-  bool Any<TStep>(in TStep step, in MeshLine line, float rootNear, double len2, double zone, double tMax, bool frontOnly,
-                  out MeshHit hit, out bool inZone, out bool onlyBack) where TStep : struct, IMeshBoxStep
-  {
-    hit = default;
-    inZone = onlyBack = false;
-    Vector256<double> vox = Vector256.Create(line.Ox), voy = Vector256.Create(line.Oy), voz = Vector256.Create(line.Oz);
-    Vector256<double> vdx = Vector256.Create(line.Dx), vdy = Vector256.Create(line.Dy), vdz = Vector256.Create(line.Dz);
-    Vector256<double> vlen2 = Vector256.Create(len2), eps2 = Vector256.Create(Intersection.RAY_EPSILON2);
-    Vector256<double> vzone = Vector256.Create(zone);
-    // The bound drops to the zone once a hit of the range is found: only the zone is searched after it. Its float form
-    // is rounded up, so no box the double bound keeps is lost.
-    double bound = tMax;
-    float hiBound = MeshNode.Up(tMax);
-    bool found = false;
-    ref MeshNode nodes = ref FirstNode();
-
-    // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·8 + lane)) and the line's entry into its box,
-    // re-checked against the bound when popped; only boxes meeting (0, bound] are pushed.
-    Span<int> stack = stackSize <= 1024 ? stackalloc int[stackSize] : new int[stackSize];
-    Span<float> stackNear = stackSize <= 1024 ? stackalloc float[stackSize] : new float[stackSize];
-    int sp = 0;
-    stack[sp] = 0;
-    stackNear[sp++] = rootNear;
-    while (sp > 0)
+    if (!Sse.IsSupported)
+      return;
+    byte* p;
+    if (code >= 0)
+      p = (byte*)Unsafe.AsPointer(ref Unsafe.Add(ref nodes, code));   // the node buffer is pinned
+    else
     {
-      --sp;
-      if (stackNear[sp] > hiBound)
-        continue;
-      int code = stack[sp];
-    Open:
-      if (code >= 0)
-      {
-        ref MeshNode n = ref Unsafe.Add(ref nodes, code);
-        int mask = step.Cross(in n, out Vector256<float> near, out Vector256<float> far);
-        mask &= (int)(Vector256.GreaterThan(far, Vector256<float>.Zero) & Vector256.LessThanOrEqual(near, Vector256.Create(hiBound))).ExtractMostSignificantBits();
-        if (mask != 0 && (mask & (mask - 1)) == 0)
-        {
-          // One box left: opened at once, as popping it right after its push would (the same bound).
-          int only = BitOperations.TrailingZeroCount(mask);
-          code = n.Child(code, only);
-          goto Open;
-        }
-        int mask0 = mask;
-        // In lane order: nearest first opened fewer boxes on segments (11.3 against 13.0 a ray) but measured slower on
-        // shadow rays (3.71x against 3.43x Embree's time, bench/results/2026-12-06-occlusion.md).
-        for (; mask != 0; mask &= mask - 1)
-        {
-          int lane = BitOperations.TrailingZeroCount(mask);
-          stack[sp] = n.Child(code, lane);
-          stackNear[sp++] = near.GetElement(lane);
-        }
-        if (mask0 != 0)
-        {
-          code = stack[--sp];   // the last pushed, at once, as the next pop would (the same bound)
-          goto Open;
-        }
-        continue;
-      }
-      Leaf(ref nodes, code, out int block, out int end);
-      for (; block < end; block++)
-      {
-        int mask = blocks[block].Hit(vox, voy, voz, vdx, vdy, vdz, out Vector256<double> t, out Vector256<double> u,
-                                     out Vector256<double> v, out Vector256<double> det);
-        if (mask == 0)
-          continue;
-        // Accepted (as in Nearest) and not beyond the bound.
-        mask &= (int)(Vector256.GreaterThan(t, Vector256<double>.Zero) & Vector256.GreaterThan(t * t * vlen2, eps2) &
-                      Vector256.LessThanOrEqual(t, Vector256.Create(bound))).ExtractMostSignificantBits();
-        if (mask == 0)
-          continue;
-        if ((mask & (int)Vector256.LessThanOrEqual(t, vzone).ExtractMostSignificantBits()) != 0)
-        {
-          inZone = true;
-          onlyBack = false;
-          return false;
-        }
-        // The first (front face) in triangle order is taken.
-        int take = frontOnly ? mask & (int)Vector256.GreaterThan(det, Vector256<double>.Zero).ExtractMostSignificantBits() : mask;
-        if (take == 0)
-        {
-          onlyBack = true;
-          continue;
-        }
-        int lane = BitOperations.TrailingZeroCount(take);
-        hit = new MeshHit { T = t.GetElement(lane), Triangle = blocks[block].Id[lane], U = u.GetElement(lane), V = v.GetElement(lane), Front = det.GetElement(lane) > 0.0 };
-        found = true;
-        onlyBack = false;
-        if (!(zone > 0.0))
-          return true;
-        bound = zone;
-        hiBound = MeshNode.Up(zone);
-      }
+      Leaf(ref nodes, code, out int block, out _);
+      p = (byte*)Unsafe.AsPointer(ref Unsafe.Add(ref blocks, block));   // pinned
     }
-    return found;
+    Sse.Prefetch0(p);
+    Sse.Prefetch0(p + 64);
+    Sse.Prefetch0(p + 128);
   }
 
   /// <summary>A stack entry: node code and the line's parameter interval in its box (floats, rounded outward).</summary>

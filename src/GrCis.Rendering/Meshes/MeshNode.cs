@@ -36,6 +36,19 @@ internal struct MeshNode
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public readonly int Child(int self, int lane) => Count[lane] == 0 ? Index[lane] : ~(self * Width + lane);
 
+  /// <summary>
+  /// <see cref="Child"/> of all eight lanes at once (a vector select, no branch per lane), for a walk that spills them
+  /// once and pushes several.
+  /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  public readonly Vector256<int> Children(int self)
+  {
+    Vector256<int> index = Unsafe.As<Lanes, Vector256<int>>(ref Unsafe.AsRef(in Index));
+    Vector256<int> count = Unsafe.As<Lanes, Vector256<int>>(ref Unsafe.AsRef(in Count));
+    Vector256<int> leaf = ~(Vector256.Create(self * Width) + Vector256.Create(0, 1, 2, 3, 4, 5, 6, 7));
+    return Vector256.ConditionalSelect(Vector256.Equals(count, Vector256<int>.Zero), index, leaf);
+  }
+
   /// <summary>Every lane empty (min +∞, max −∞).</summary>
   public void Clear()
   {

@@ -176,6 +176,28 @@ public class MeshNodeTests
     a.Min.X >= b.Min.X && a.Min.Y >= b.Min.Y && a.Min.Z >= b.Min.Z && a.Max.X <= b.Max.X && a.Max.Y <= b.Max.Y && a.Max.Z <= b.Max.Z;
 
   [Fact]
+  public void Children_gives_each_lane_s_child_code()
+  {
+    var r = new Random(5);
+    var node = new MeshNode();
+    for (int n = 0; n < 10_000; n++)
+    {
+      for (int lane = 0; lane < MeshNode.Width; lane++)
+      {
+        node.Index[lane] = r.Next(int.MaxValue);
+        node.Count[lane] = r.Next(3) == 0 ? 0 : r.Next(1, 100);
+      }
+      int self = r.Next(n % 2 == 0 ? 1000 : int.MaxValue / MeshNode.Width);
+      Vector256<int> codes = node.Children(self);
+      for (int lane = 0; lane < MeshNode.Width; lane++)
+      {
+        Assert.Equal(node.Child(self, lane), codes.GetElement(lane));
+        Assert.Equal(node.Count[lane] == 0, codes.GetElement(lane) >= 0);
+      }
+    }
+  }
+
+  [Fact]
   public void Outward_rounding_brackets_the_double()
   {
     var r = new Random(5);

@@ -100,6 +100,9 @@ public class TriangleBlockTests
         Assert.Equal((Vector3d)b, vb);
         Assert.Equal((Vector3d)c, vc);
       }
+      // Blocks are 160 bytes from a cache line on: each spans three lines (the prefetch covers three).
+      Assert.Equal(0, bvh.FirstBlockLineOffset);
+      Assert.Equal(160, System.Runtime.CompilerServices.Unsafe.SizeOf<TriangleBlock>());
     }
   }
 
