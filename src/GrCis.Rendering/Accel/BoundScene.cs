@@ -50,7 +50,10 @@ internal sealed class BoundScene
     {
       var lights = new List<BoundLight>(sources.Count);
       foreach (ILightSource source in sources)
-        lights.Add(new BoundLight(source, LibraryTypes.DirectLight(source)));
+      {
+        DirectLight kind = LibraryTypes.DirectLight(source);
+        lights.Add(new BoundLight(source, kind, kind != DirectLight.None ? source.GetHashCode() : 0));
+      }
       Lights = lights.ToArray();
     }
   }

@@ -28,6 +28,11 @@ public sealed partial class PreparedScene
   }
 
   /// <summary>The closed members of a small scene (balls), four at a time; only those the cull cannot dismiss are tested.</summary>
+  /// <remarks>
+  /// Optimized at its first call: its 256-bit vectors keep it out of a ReadyToRun image, so a render's first rays would run
+  /// it as tier-0 code, calling the cull and the span accessors of its group array for every ray.
+  /// </remarks>
+  [MethodImpl(MethodImplOptions.AggressiveOptimization)]
   bool Balls(ref Query q, ref Intersection? list, in Vector3d p0, in Vector3d p1)
   {
     Vector256<double> vox = Vector256.Create(p0.X), voy = Vector256.Create(p0.Y), voz = Vector256.Create(p0.Z);

@@ -122,21 +122,21 @@ internal sealed class WhittedKernel
     {
       i.Material = scratch.Material(i.Material!, surface, depth);
       // The library's Phong model writes into a stack buffer instead of a new array per light.
-      bool phong = LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial && surface.Length <= 16;
+      bool phong = LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && IsPhongMaterial(i.Material) && surface.Length <= 16;
       Span<double> buffer = stackalloc double[16];
 
       if (lights != null)
         foreach (BoundLight light in lights)
-          hash = AddLight(scratch, light.Source, light.Kind, i, viewer, phong, surface, buffer, color, hash);
+          hash = AddLight(scratch, light.Source, light.Kind, light.Hash, i, viewer, phong, surface, buffer, color, hash);
       // A script's own scene class: its lights as it gives them now, a LinkedList (GrCis's type) walked by nodes.
       else if (sources is LinkedList<ILightSource> linked)
       {
         for (LinkedListNode<ILightSource>? n = linked.First; n != null; n = n.Next)
-          hash = AddLight(scratch, n.Value, DirectLight.None, i, viewer, phong, surface, buffer, color, hash);
+          hash = AddLight(scratch, n.Value, DirectLight.None, 0, i, viewer, phong, surface, buffer, color, hash);
       }
       else
         foreach (ILightSource source in sources!)
-          hash = AddLight(scratch, source, DirectLight.None, i, viewer, phong, surface, buffer, color, hash);
+          hash = AddLight(scratch, source, DirectLight.None, 0, i, viewer, phong, surface, buffer, color, hash);
     }
 
     if (depth++ >= f.MaxLevel || (!f.DoReflections && !f.DoRefractions))
@@ -153,7 +153,7 @@ internal sealed class WhittedKernel
       Span<double> ksBuffer = stackalloc double[16];
       scoped ReadOnlySpan<double> ks = default;
       bool have;
-      if (LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && i.Material is PhongMaterial pm && pm.Color.Length is > 0 and <= 16)
+      if (LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && IsPhongMaterial(i.Material) && Unsafe.As<PhongMaterial>(i.Material!) is { Color.Length: > 0 and <= 16 } pm)
       {
         Span<double> k = ksBuffer[..pm.Color.Length];
         if (viewer.X == 0.0 && viewer.Y == 0.0 && viewer.Z == 0.0)
@@ -222,8 +222,11 @@ internal sealed class WhittedKernel
     return hash;
   }
 
-  /// <summary>One light's direct contribution (shadow ray included) added to <paramref name="color"/>; returns the hash.</summary>
-  long AddLight(ShadingScratch scratch, ILightSource source, DirectLight kind, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
+  /// <summary>
+  /// One light's direct contribution (shadow ray included) added to <paramref name="color"/>; returns the hash.
+  /// <paramref name="sourceHash"/> is the source's hash code when <paramref name="kind"/> names a library class.
+  /// </summary>
+  long AddLight(ShadingScratch scratch, ILightSource source, DirectLight kind, int sourceHash, Intersection i, Vector3d viewer, bool phong, double[] surface, Span<double> buffer, double[] color, long hash)
   {
     RayTracing f = function;
     double[]? intensity;
@@ -268,7 +271,7 @@ internal sealed class WhittedKernel
         return hash;
       AddLit(color, transmit, intensity, arr);
     }
-    return hash * RayCasting.HASH_LIGHT + source.GetHashCode();
+    return hash * RayCasting.HASH_LIGHT + (kind != DirectLight.None ? sourceHash : source.GetHashCode());
   }
 
   /// <summary><see cref="RayCasting.FirstHitAt(int, Vector3d, Vector3d)"/> of the function, the library's scene read directly.</summary>
@@ -291,9 +294,18 @@ internal sealed class WhittedKernel
   }
 
   /// <summary>
+  /// <c>material is PhongMaterial</c>, the exact class (the scratch copy's) answered inline: <see cref="Shade"/> is
+  /// compiled without a profile, and the type test otherwise calls the runtime's cast helper per hit.
+  /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static bool IsPhongMaterial(IMaterial? material) =>
+    material != null && (material.GetType() == typeof(PhongMaterial) || material is PhongMaterial);
+
+  /// <summary>
   /// <see cref="RayCasting.PreparedFor"/> of the function, the library's scene read directly: the snapshot this thread
   /// used last when it is still the scene's, else the render's.
   /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]   // a few loads, once per ray
   PreparedScene? Prepared(ShadingScratch scratch)
   {
     RayTracing f = function;

@@ -97,9 +97,12 @@ internal sealed class ShadingScratch
   Intersection?[] intersections = new Intersection?[16];
 
   /// <summary>This thread's reusable intersection of <paramref name="depth"/> (the fast path fills it per hit).</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]   // once per ray
   public Intersection Intersection(int depth)
   {
-    Intersection?[] pool = intersections = Grow(intersections, depth);
+    Intersection?[] pool = intersections;
+    if (depth >= pool.Length)
+      intersections = pool = Grow(pool, depth);
     return pool[depth] ??= new Intersection();
   }
 
@@ -115,16 +118,21 @@ internal sealed class ShadingScratch
       clone.Color = surface;
       return clone;
     }
-    PhongMaterial?[] pool = materials = Grow(materials, depth);
+    PhongMaterial?[] pool = materials;
+    if (depth >= pool.Length)
+      materials = pool = Grow(pool, depth);
     PhongMaterial scratch = pool[depth] ??= new PhongMaterial();
     scratch.CopyFrom((PhongMaterial)m, surface);
     return scratch;
   }
 
   /// <summary>A cleared buffer of <paramref name="bands"/> values owned by <paramref name="depth"/>.</summary>
+  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]   // once per ray
   public double[] Buffer(int depth, int bands)
   {
-    double[]?[] pool = buffers = Grow(buffers, depth);
+    double[]?[] pool = buffers;
+    if (depth >= pool.Length)
+      buffers = pool = Grow(pool, depth);
     double[]? b = pool[depth];
     if (b == null || b.Length != bands)
       pool[depth] = b = new double[bands];
@@ -133,10 +141,9 @@ internal sealed class ShadingScratch
     return b;
   }
 
+  // Called only to grow: storing a pool field on every call cost a GC write barrier per ray.
   static T?[] Grow<T>(T?[] pool, int depth) where T : class
   {
-    if (depth < pool.Length)
-      return pool;
     var bigger = new T?[Math.Max(depth + 1, 2 * pool.Length)];
     pool.CopyTo(bigger, 0);
     return bigger;

@@ -147,6 +147,50 @@ public class WhittedKernelTests
     Assert.NotEqual(first, kernel);
   }
 
+  /// <summary>A library light's subclass with a hash of its own that changes per call: the kernel must ask it per hit.</summary>
+  sealed class OwnHashLight(Vector3d position, double intensity) : PointLightSource(position, intensity)
+  {
+    public int Calls, Total;
+
+    public override int GetHashCode()
+    {
+      Total++;
+      return 1000 + Calls++;
+    }
+  }
+
+  [Fact]
+  public void Kernel_samples_return_the_textbook_hash_with_library_and_other_lights()
+  {
+    // The kernel takes a library light's hash once per frame (BoundLight.Hash) and asks any other light per hit: every
+    // sample's hash must be shade's, which asks each light per hit (the subclass's counter restarts for each sample, so
+    // a sample's second lit hit gets another hash than its first).
+    var scene = (DefaultRayScene)Scenes.Create("Two spheres");
+    var own = new OwnHashLight(new Vector3d(3.0, 5.0, -4.0), 0.5);
+    scene.Sources!.Add(own);
+    scene.Camera!.Width = 40;
+    scene.Camera.Height = 30;
+    var function = new RayTracing(scene);
+    var textbook = new TextbookRayTracing(scene);
+    WhittedKernel kernel = WhittedKernel.For(function)!;
+    var k = new double[3];
+    var t = new double[3];
+    var hashes = new HashSet<long>();
+    for (int y = 0; y < 30; y += 2)
+      for (int x = 0; x < 40; x += 2)
+      {
+        own.Calls = 0;
+        long hash = kernel.Sample(x + 0.5, y + 0.5, k);
+        own.Calls = 0;
+        Assert.Equal(textbook.GetSample(x + 0.5, y + 0.5, t), hash);
+        Assert.Equal(t, k);
+        hashes.Add(hash);
+      }
+    // Lit hits were sampled (the subclass's light was asked for its hash), not only the background.
+    Assert.True(own.Total > 100, $"own light asked {own.Total} times");
+    Assert.True(hashes.Count > 10);
+  }
+
   sealed class WiderMirrorTextbook : RayTracing
   {
     protected internal override bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction)

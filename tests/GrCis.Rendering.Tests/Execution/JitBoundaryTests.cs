@@ -25,6 +25,16 @@ public class JitBoundaryTests
   }
 
   [Fact]
+  public void Ball_cull_is_optimized_at_its_first_call()
+  {
+    // Its 256-bit vectors keep it out of the ReadyToRun image: without the attribute a render's first rays run it as
+    // tier-0 code (docs/performance.md, "A render's first moments").
+    MethodInfo method = Assert.Single(typeof(PreparedScene).GetMethods(BindingFlags.NonPublic | BindingFlags.Instance), m => m.Name == "Balls");
+    Assert.True((method.MethodImplementationFlags & MethodImplAttributes.AggressiveOptimization) != 0,
+                "PreparedScene.Balls lost [MethodImpl(MethodImplOptions.AggressiveOptimization)]");
+  }
+
+  [Fact]
   public void Shadow_query_through_AnyHit_sees_the_ball_between_origin_and_light()
   {
     var root = new CSGInnerNode(SetOperation.Union);
