@@ -78,8 +78,7 @@ internal sealed partial class MeshBvh
       magnitude = Math.Max(magnitude, Math.Max(Math.Abs(rootBox.Min[axis]), Math.Abs(rootBox.Max[axis])));
     double pad = 1e-9 * (Extent + magnitude);
     MeshNode[] nodes = MeshNode.Collapse(tree, pad, out stackSize);
-    (TriangleBlock[] blocks, slots) = Store(mesh, nodes, order);
-    (blockMemory, blockStart) = Aligned(blocks);
+    (blockMemory, blockStart, slots) = Store(mesh, nodes, order);
     nodeCount = nodes.Length;
     (nodeMemory, nodeStart) = Aligned(nodes);
     // Every float box lies in the root's (boxes nest; outward rounding is monotone): its coordinates bound them all.
@@ -88,18 +87,30 @@ internal sealed partial class MeshBvh
     mz = Magnitude(root.MinZ - pad, root.MaxZ + pad);
   }
 
-  static (byte[] Memory, int Start) Aligned<T>(T[] nodes) where T : struct
+  const int Line = 64;
+
+  /// <summary>
+  /// Pinned memory for <paramref name="count"/> items of <typeparamref name="T"/> from a 64-byte boundary on (a managed
+  /// array is only 8-byte aligned): the buffer and the offset of the first item.
+  /// </summary>
+  static (byte[] Memory, int Start) AlignedBuffer<T>(int count) where T : struct
   {
-    const int Line = 64;
-    int size = nodes.Length * Unsafe.SizeOf<T>();
-    byte[] memory = GC.AllocateUninitializedArray<byte>(size + Line, pinned: true);   // never moved
-    int start;
+    byte[] memory = GC.AllocateUninitializedArray<byte>(count * Unsafe.SizeOf<T>() + Line, pinned: true);   // never moved
     unsafe
     {
       fixed (byte* p = memory)
-        start = (int)((Line - (nint)p % Line) % Line);
+        return (memory, (int)((Line - (nint)p % Line) % Line));
     }
-    MemoryMarshal.AsBytes(nodes.AsSpan()).CopyTo(memory.AsSpan(start, size));
+  }
+
+  /// <summary>The items of an <see cref="AlignedBuffer{T}"/>.</summary>
+  static Span<T> Items<T>(byte[] memory, int start, int count) where T : struct =>
+    MemoryMarshal.Cast<byte, T>(memory.AsSpan(start, count * Unsafe.SizeOf<T>()));
+
+  static (byte[] Memory, int Start) Aligned<T>(T[] items) where T : struct
+  {
+    (byte[] memory, int start) = AlignedBuffer<T>(items.Length);
+    items.AsSpan().CopyTo(Items<T>(memory, start, items.Length));
     return (memory, start);
   }
 
@@ -122,10 +133,10 @@ internal sealed partial class MeshBvh
   }
 
   /// <summary>
-  /// The triangles in blocks of four, each leaf's from a new block in leaf order; the wide leaf lanes are pointed at
-  /// their first block; and each triangle's place (block·4 + lane).
+  /// The triangles in blocks of four, each leaf's from a new block in leaf order, written straight into their aligned
+  /// buffer; the wide leaf lanes are pointed at their first block; and each triangle's place (block·4 + lane).
   /// </summary>
-  static (TriangleBlock[] Blocks, int[] Slots) Store(SceneBrep mesh, MeshNode[] nodes, int[] order)
+  static (byte[] Memory, int Start, int[] Slots) Store(SceneBrep mesh, MeshNode[] nodes, int[] order)
   {
     int n = order.Length;
     // Leaves cover [0, n) in leaf order without overlap: a leaf is known by its first item.
@@ -155,12 +166,13 @@ internal sealed partial class MeshBvh
           node.Count[lane] = (node.Count[lane] + TriangleBlock.Width - 1) / TriangleBlock.Width;
         }
 
-    var blocks = new TriangleBlock[used];
+    (byte[] memory, int first) = AlignedBuffer<TriangleBlock>(used);
     var slots = new int[n];
-    foreach (ref TriangleBlock block in blocks.AsSpan())
+    foreach (ref TriangleBlock block in Items<TriangleBlock>(memory, first, used))
       block.Clear();
     InChunks(n, (start, end) =>
     {
+      Span<TriangleBlock> blocks = Items<TriangleBlock>(memory, first, used);
       for (int k = start; k < end; k++)
       {
         // The vertices again from the mesh (cheap) rather than three more large arrays for the collector.
@@ -172,7 +184,7 @@ internal sealed partial class MeshBvh
     });
     ArrayPool<int>.Shared.Return(countAt);
     ArrayPool<int>.Shared.Return(place);
-    return (blocks, slots);
+    return (memory, first, slots);
   }
 
   /// <summary>

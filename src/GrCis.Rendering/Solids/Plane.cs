@@ -170,8 +170,6 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
     target.NormalLocal = Vector3d.UnitZ;
   }
 
-  // Inlined into the prepared query's member test, where it was the one call left on a plane's path.
-  [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
   bool Inside(double x, double y)
   {
     if (x < XMin || y < YMin)
