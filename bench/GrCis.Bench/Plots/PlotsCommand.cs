@@ -17,7 +17,7 @@ public static class PlotsCommand
     ScalingDefault = "2026-11-24-thread-scaling.json",
     MeshDefault = "2026-11-26-mesh-scaling.json",
     PovRayDefault = "2026-11-24-povray.tsv",
-    EmbreeDefault = "2026-12-06-embree-ratio.tsv";
+    EmbreeDefault = "2026-12-06-embree-ratio-evening.tsv";
 
   public static int Run(string[] args)
   {
