@@ -64,6 +64,7 @@ internal sealed partial class MeshBvh
     Span<NodeSpan> stack = stackSize <= 512 ? stackalloc NodeSpan[stackSize] : new NodeSpan[stackSize];
     Unsafe.SkipInit(out Vector256<float> spillNear);
     Unsafe.SkipInit(out Vector256<float> spillFar);
+    Unsafe.SkipInit(out Vector256<float> spillKey);
     Unsafe.SkipInit(out Vector256<int> spillCode);
     int sp = 0;
     stack[sp++] = new NodeSpan(0, rootNear, rootFar);
@@ -96,32 +97,12 @@ internal sealed partial class MeshBvh
         // are spilled once and read from memory (an element read by a variable lane spills the vector each time).
         spillNear = near;
         spillFar = far;
+        spillKey = accepted ? near : -far;
         spillCode = n.Children(code);
         for (int m = mask; m != 0; m &= m - 1)
           Prefetch(ref nodes, ref blocks, Lane(ref spillCode, BitOperations.TrailingZeroCount(m)));
-        int a = BitOperations.TrailingZeroCount(mask);
-        int rest = mask & (mask - 1);
-        if ((rest & (rest - 1)) == 0)
-        {
-          // Two boxes (the most common case): one comparison.
-          int b = BitOperations.TrailingZeroCount(rest);
-          if (accepted ? Lane(ref spillNear, b) < Lane(ref spillNear, a) : Lane(ref spillFar, b) > Lane(ref spillFar, a))
-            (a, b) = (b, a);
-          stack[sp++] = new NodeSpan(Lane(ref spillCode, b), Lane(ref spillNear, b), Lane(ref spillFar, b));
-          code = Lane(ref spillCode, a);
-          goto Open;
-        }
-        int first = sp;
-        for (; mask != 0; mask &= mask - 1)
-        {
-          int lane = BitOperations.TrailingZeroCount(mask);
-          var s = new NodeSpan(Lane(ref spillCode, lane), Lane(ref spillNear, lane), Lane(ref spillFar, lane));
-          int k = sp++;
-          for (; k > first && (accepted ? stack[k - 1].Near < s.Near : stack[k - 1].Far > s.Far); k--)
-            stack[k] = stack[k - 1];
-          stack[k] = s;
-        }
-        code = stack[--sp].Node;
+        code = PushOrdered(stack, ref sp, mask, ref spillCode, ref spillNear, ref spillFar, ref spillKey,
+                           accepted ? SpanOrder.Near : SpanOrder.FarDescending);
         goto Open;
       }
       Leaf(ref nodes, code, out int block, out int end);
@@ -245,29 +226,7 @@ internal sealed partial class MeshBvh
         spillCode = n.Children(code);
         for (int m = mask; m != 0; m &= m - 1)
           Prefetch(ref nodes, ref blocks, Lane(ref spillCode, BitOperations.TrailingZeroCount(m)));
-        int a = BitOperations.TrailingZeroCount(mask);
-        int rest = mask & (mask - 1);
-        if ((rest & (rest - 1)) == 0)
-        {
-          int b = BitOperations.TrailingZeroCount(rest);
-          if (Lane(ref spillKey, b) < Lane(ref spillKey, a))
-            (a, b) = (b, a);
-          stack[sp++] = new NodeSpan(Lane(ref spillCode, b), Lane(ref spillNear, b), Lane(ref spillFar, b));
-          code = Lane(ref spillCode, a);
-          goto Open;
-        }
-        int pushed = sp;
-        for (; mask != 0; mask &= mask - 1)
-        {
-          int lane = BitOperations.TrailingZeroCount(mask);
-          var s = new NodeSpan(Lane(ref spillCode, lane), Lane(ref spillNear, lane), Lane(ref spillFar, lane));
-          float sk = Lane(ref spillKey, lane);
-          int k = sp++;
-          for (; k > pushed && MathF.Max(stack[k - 1].Near, -stack[k - 1].Far) < sk; k--)
-            stack[k] = stack[k - 1];
-          stack[k] = s;
-        }
-        code = stack[--sp].Node;
+        code = PushOrdered(stack, ref sp, mask, ref spillCode, ref spillNear, ref spillFar, ref spillKey, SpanOrder.NearerEnd);
         goto Open;
       }
       Leaf(ref nodes, code, out int block, out int end);
@@ -305,6 +264,55 @@ internal sealed partial class MeshBvh
         }
       }
     }
+  }
+
+  /// <summary>How a closest-hit walk orders the boxes it pushes: the least key is opened first.</summary>
+  enum SpanOrder
+  {
+    /// <summary>Nearest entry first (the first accepted hit): key = near.</summary>
+    Near,
+    /// <summary>Farthest exit first (the last rejected hit): key = −far.</summary>
+    FarDescending,
+    /// <summary>The end nearer the origin first, in front or behind (both searches at once): key = max(near, −far).</summary>
+    NearerEnd,
+  }
+
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static float Key(in NodeSpan e, SpanOrder order) =>
+    order == SpanOrder.Near ? e.Near : order == SpanOrder.FarDescending ? -e.Far : MathF.Max(e.Near, -e.Far);
+
+  /// <summary>
+  /// A node's kept boxes (<paramref name="mask"/>, two or more lanes, their codes, near and far ends and keys spilled):
+  /// returns the code of the box of least key, to be opened at once (it met the bounds just now), and pushes the others
+  /// so that lesser keys are popped first (two boxes: one comparison; more: an insertion sort).
+  /// </summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
+  static int PushOrdered(Span<NodeSpan> stack, ref int sp, int mask, ref Vector256<int> codes, ref Vector256<float> near,
+                         ref Vector256<float> far, ref Vector256<float> key, SpanOrder order)
+  {
+    int a = BitOperations.TrailingZeroCount(mask);
+    int rest = mask & (mask - 1);
+    if ((rest & (rest - 1)) == 0)
+    {
+      // Two boxes (the most common case).
+      int b = BitOperations.TrailingZeroCount(rest);
+      if (Lane(ref key, b) < Lane(ref key, a))
+        (a, b) = (b, a);
+      stack[sp++] = new NodeSpan(Lane(ref codes, b), Lane(ref near, b), Lane(ref far, b));
+      return Lane(ref codes, a);
+    }
+    int pushed = sp;
+    for (; mask != 0; mask &= mask - 1)
+    {
+      int lane = BitOperations.TrailingZeroCount(mask);
+      var s = new NodeSpan(Lane(ref codes, lane), Lane(ref near, lane), Lane(ref far, lane));
+      float sk = Lane(ref key, lane);
+      int k = sp++;
+      for (; k > pushed && Key(stack[k - 1], order) < sk; k--)
+        stack[k] = stack[k - 1];
+      stack[k] = s;
+    }
+    return stack[--sp].Node;
   }
 
   /// <summary>Lane <paramref name="lane"/> of a spilled vector (one load, no bounds check: lane is 0…7).</summary>
