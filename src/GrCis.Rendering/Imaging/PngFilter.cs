@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 
 namespace Rendering.Imaging;
@@ -12,8 +13,10 @@ internal static class PngFilter
   /// <remarks>
   /// Sixteen bytes at a time where the hardware allows: the same bytes as the per-byte definitions, which finish each
   /// row's tail. A render's save in a fresh process filters every row five times (adaptive choice), mostly before the
-  /// JIT has optimised this code, so the vector steps count there most.
+  /// JIT has optimised this code, so the vector steps count there most. Its vector code is not in the ReadyToRun image,
+  /// so it is compiled optimized at its first call: a save in a fresh process otherwise runs it as tier-0 code.
   /// </remarks>
+  [MethodImpl(MethodImplOptions.AggressiveOptimization)]
   public static void Apply(byte type, ReadOnlySpan<byte> row, ReadOnlySpan<byte> prior, int bpp, Span<byte> dest)
   {
     int n = row.Length;
@@ -115,6 +118,7 @@ internal static class PngFilter
   }
 
   /// <summary>Libpng's heuristic: bytes read as signed, smallest sum of magnitudes compresses best.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveOptimization)]   // as Apply: optimized from a fresh process's first save
   public static long Cost(ReadOnlySpan<byte> filtered)
   {
     long sum = 0;
