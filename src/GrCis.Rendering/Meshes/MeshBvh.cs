@@ -40,6 +40,9 @@ internal sealed partial class MeshBvh
   /// <summary>Nodes of the eight-wide tree the queries walk.</summary>
   public int WideNodeCount => nodeCount;
 
+  /// <summary>Triangle blocks stored: each leaf's from a new block, so the sum of the leaves' blocks.</summary>
+  internal int BlockCount => (blockMemory.Length - Line) / Unsafe.SizeOf<TriangleBlock>();
+
   /// <summary>Size of the mesh's box (for relative tolerances).</summary>
   public double Extent { get; }
 
