@@ -80,7 +80,7 @@ internal sealed partial class MeshBvh
     for (int axis = 0; axis < 3 && n > 0; axis++)
       magnitude = Math.Max(magnitude, Math.Max(Math.Abs(rootBox.Min[axis]), Math.Abs(rootBox.Max[axis])));
     double pad = 1e-9 * (Extent + magnitude);
-    MeshNode[] nodes = MeshNode.Collapse(tree, pad, out stackSize);
+    MeshNode[] nodes = MeshCollapse.Collapse(tree, BvhShape.Triangles, pad, out stackSize);
     (blockMemory, blockStart, slots) = Store(mesh, nodes, order);
     nodeCount = nodes.Length;
     (nodeMemory, nodeStart) = Aligned(nodes);
