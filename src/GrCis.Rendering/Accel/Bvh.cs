@@ -51,8 +51,8 @@ internal sealed class Bvh
   /// The children a wide node over binary node <paramref name="binary"/> takes, in <paramref name="picks"/> (at most its
   /// length): the binary node's two children, then, while there is room, the inner one of largest surface area replaced
   /// by its two children, so the lanes stay in the binary tree's left-to-right order; a leaf (only the root can be one
-  /// here) is its own single child. Returns how many. Every collapse to a wider tree (<see cref="WideBvh"/>, the mesh's
-  /// eight-wide tree) picks by this one rule.
+  /// here) is its own single child. Returns how many. <see cref="WideBvh"/> picks by this rule; the mesh's eight-wide
+  /// tree by least expected cost (<see cref="MeshCollapse"/>).
   /// </summary>
   public int WideChildren(int binary, System.Span<int> picks)
   {

@@ -16,8 +16,8 @@ internal sealed partial class BvhBuilder
 
     static abstract Vector256<double> Max(Vector256<double> a, Vector256<double> b);
 
-    /// <summary>Bin of each axis for t = (centre − cmin) · Bins / extent (t ≥ 0 or NaN): min(Bins − 1, (int)t).</summary>
-    static abstract void Bins(Vector256<double> t, out int x, out int y, out int z);
+    /// <summary>Bin of each axis for t = (centre − cmin) · bins / extent (t ≥ 0 or NaN): min(bins − 1, (int)t), bins − 1 in every lane of <paramref name="last"/>.</summary>
+    static abstract void Bins(Vector256<double> t, Vector256<double> last, out int x, out int y, out int z);
   }
 
   /// <summary>As <see cref="Math.Min(double, double)"/>: NaN wins, −0 is below +0 (as <see cref="Aabb"/> unions).</summary>
@@ -27,11 +27,12 @@ internal sealed partial class BvhBuilder
 
     public static Vector256<double> Max(Vector256<double> a, Vector256<double> b) => Vector256.Max(a, b);
 
-    public static void Bins(Vector256<double> t, out int x, out int y, out int z)
+    public static void Bins(Vector256<double> t, Vector256<double> last, out int x, out int y, out int z)
     {
-      x = Math.Min(BvhBuilder.Bins - 1, (int)t.GetElement(0));
-      y = Math.Min(BvhBuilder.Bins - 1, (int)t.GetElement(1));
-      z = Math.Min(BvhBuilder.Bins - 1, (int)t.GetElement(2));
+      int top = (int)last.GetElement(0);
+      x = Math.Min(top, (int)t.GetElement(0));
+      y = Math.Min(top, (int)t.GetElement(1));
+      z = Math.Min(top, (int)t.GetElement(2));
     }
   }
 
@@ -50,14 +51,14 @@ internal sealed partial class BvhBuilder
       Vector256.MaxNative(a, b) & ~Vector256.AndNot(Vector256.Equals(a, b), a);   // a tie: +0 if either is +0
 
     /// <summary>
-    /// All three at once: NaN to 0 and (int) of t ≥ 0 is its floor, as the scalar conversion does; floor(t) ≤ 15 plus
-    /// 2^52 holds the bin in its low mantissa bits.
+    /// All three at once: NaN to 0 and (int) of t ≥ 0 is its floor, as the scalar conversion does; floor(t) ≤ bins − 1
+    /// plus 2^52 holds the bin in its low mantissa bits.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static void Bins(Vector256<double> t, out int x, out int y, out int z)
+    public static void Bins(Vector256<double> t, Vector256<double> last, out int x, out int y, out int z)
     {
       t = Vector256.ConditionalSelect(Vector256.Equals(t, t), t, Vector256<double>.Zero);
-      Vector256<long> bits = (Vector256.MinNative(Vector256.Floor(t), Vector256.Create(BvhBuilder.Bins - 1.0)) +
+      Vector256<long> bits = (Vector256.MinNative(Vector256.Floor(t), last) +
                               Vector256.Create(4503599627370496.0)).AsInt64();
       x = (int)bits.GetElement(0);
       y = (int)bits.GetElement(1);

@@ -1,5 +1,6 @@
 using System;
 using System.Buffers;
+using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
@@ -8,8 +9,9 @@ using System.Threading.Tasks;
 namespace Rendering.Accel;
 
 /// <summary>
-/// The binned SAH build behind <see cref="Bvh"/>: <see cref="Bins"/> bins on the centroids of each axis, the cheapest
-/// bin plane of the three axes, a leaf where splitting costs more (within the <see cref="BvhShape"/>'s sizes).
+/// The binned SAH build behind <see cref="Bvh"/>: the <see cref="BvhShape"/>'s bins on the centroids of each axis, the
+/// cheapest bin plane of the three axes, a leaf where splitting costs more (within the shape's sizes; both costs count
+/// items in the shape's blocks).
 /// Fast because the items are copied once into build order (box and centroid side by side, moved by the partition),
 /// one pass bins all three axes, a child's box is the union of its bins and its centroid box is gathered by the
 /// partition: no node rescans its items. Subtrees of at least <see cref="ParallelItems"/> items are built in parallel.
@@ -19,8 +21,8 @@ namespace Rendering.Accel;
 /// </summary>
 internal sealed partial class BvhBuilder
 {
-  /// <summary>Bin planes per axis.</summary>
-  public const int Bins = 16;
+  /// <summary>Most bin planes per axis a shape may ask for (the scratch on the stack is sized by it).</summary>
+  public const int MaxBins = 32;
 
   const double TraversalCost = 1.0;
 
@@ -35,6 +37,8 @@ internal sealed partial class BvhBuilder
 
   BvhBuilder(Item[] items, int[] ids, BvhShape shape, BvhNode[] slots, bool parallel)
   {
+    if (shape.Bins < 2 || shape.Bins > MaxBins || !BitOperations.IsPow2(shape.Block))
+      throw new ArgumentOutOfRangeException(nameof(shape));
     this.items = items;
     this.ids = ids;
     this.shape = shape;
@@ -100,10 +104,10 @@ internal sealed partial class BvhBuilder
       return level;
 
     Split split = BestSplit<T>(start, end, cbounds, out Box leftBounds, out Box rightBounds);
-    double leafCost = shape.ItemCost * count;
+    double leafCost = shape.BlockCost * shape.Blocks(count);
     double parentArea = bounds.HalfArea;
     double splitCost = split.Axis >= 0 && parentArea > 0.0
-      ? TraversalCost + shape.ItemCost * split.Cost / parentArea
+      ? TraversalCost + shape.BlockCost * split.Cost / parentArea
       : double.PositiveInfinity;
     int mid;
     Box leftCentres = default, rightCentres = default;
@@ -142,39 +146,43 @@ internal sealed partial class BvhBuilder
   }
 
   /// <summary>
-  /// The cheapest of the bin planes on the three axes (SAH, unnormalised), Axis −1 when none separates; the boxes of the
-  /// items on either side of it.
+  /// The cheapest of the bin planes on the three axes (SAH, unnormalised: each side's blocks times its half area), Axis
+  /// −1 when none separates; the boxes of the items on either side of it.
   /// </summary>
   [SkipLocalsInit, MethodImpl(MethodImplOptions.AggressiveOptimization)]
   Split BestSplit<T>(int start, int end, in Box cbounds, out Box left, out Box right) where T : struct, IBinning
   {
-    Span<int> binCount = stackalloc int[3 * Bins];
-    Span<Box> binBox = stackalloc Box[3 * Bins];
-    Span<double> rightArea = stackalloc double[Bins];
-    Span<int> rightCount = stackalloc int[Bins];
+    int bins = shape.Bins;
+    Span<int> binCount = stackalloc int[3 * MaxBins].Slice(0, 3 * bins);
+    Span<Box> binBox = stackalloc Box[3 * MaxBins].Slice(0, 3 * bins);
+    Span<double> rightArea = stackalloc double[MaxBins];
+    Span<int> rightCount = stackalloc int[MaxBins];
     binCount.Clear();
     binBox.Fill(Box.Empty);
+    Vector256<double> last = Vector256.Create(bins - 1.0);
+    // Blocks of n items, (n + block − 1) / block, by a shift: a division per plane would cost the build several per cent.
+    int round = shape.Block - 1, shift = BitOperations.Log2((uint)shape.Block);
 
     // Axes without extent are binned into bin 0 (scale 0) and skipped below.
     Vector256<double> cmin = cbounds.Min, extent = cbounds.Max - cmin;
     Vector256<double> scale = Vector256.Create(
-      extent.GetElement(0) > 0.0 ? Bins / extent.GetElement(0) : 0.0,
-      extent.GetElement(1) > 0.0 ? Bins / extent.GetElement(1) : 0.0,
-      extent.GetElement(2) > 0.0 ? Bins / extent.GetElement(2) : 0.0, 0.0);
+      extent.GetElement(0) > 0.0 ? bins / extent.GetElement(0) : 0.0,
+      extent.GetElement(1) > 0.0 ? bins / extent.GetElement(1) : 0.0,
+      extent.GetElement(2) > 0.0 ? bins / extent.GetElement(2) : 0.0, 0.0);
     Item[] all = items;
     ref int counts0 = ref MemoryMarshal.GetReference(binCount);
     ref Box boxes0 = ref MemoryMarshal.GetReference(binBox);
     for (int k = start; k < end; k++)
     {
       ref Item item = ref all[k];
-      T.Bins((item.Center - cmin) * scale, out int bx, out int by, out int bz);
-      // Bins are in [0, Bins) by construction: no bounds checks in the hottest loop of the build.
+      T.Bins((item.Center - cmin) * scale, last, out int bx, out int by, out int bz);
+      // Bin numbers are in [0, bins) by construction: no bounds checks in the hottest loop of the build.
       Unsafe.Add(ref counts0, bx)++;
-      Unsafe.Add(ref counts0, Bins + by)++;
-      Unsafe.Add(ref counts0, 2 * Bins + bz)++;
+      Unsafe.Add(ref counts0, bins + by)++;
+      Unsafe.Add(ref counts0, 2 * bins + bz)++;
       Unsafe.Add(ref boxes0, bx).Add<T>(item.Min, item.Max);
-      Unsafe.Add(ref boxes0, Bins + by).Add<T>(item.Min, item.Max);
-      Unsafe.Add(ref boxes0, 2 * Bins + bz).Add<T>(item.Min, item.Max);
+      Unsafe.Add(ref boxes0, bins + by).Add<T>(item.Min, item.Max);
+      Unsafe.Add(ref boxes0, 2 * bins + bz).Add<T>(item.Min, item.Max);
     }
 
     var best = new Split(-1, 0, double.PositiveInfinity);
@@ -182,26 +190,26 @@ internal sealed partial class BvhBuilder
     {
       if (!(extent.GetElement(axis) > 0.0))
         continue;
-      Span<int> counts = binCount.Slice(axis * Bins, Bins);
-      Span<Box> bins = binBox.Slice(axis * Bins, Bins);
+      Span<int> counts = binCount.Slice(axis * bins, bins);
+      Span<Box> axisBins = binBox.Slice(axis * bins, bins);
       Box acc = Box.Empty;
       int n = 0;
-      for (int b = Bins - 1; b > 0; b--)
+      for (int b = bins - 1; b > 0; b--)
       {
-        acc.Add<T>(bins[b].Min, bins[b].Max);
+        acc.Add<T>(axisBins[b].Min, axisBins[b].Max);
         n += counts[b];
         rightCount[b] = n;
         rightArea[b] = acc.HalfArea;
       }
       acc = Box.Empty;
       n = 0;
-      for (int b = 1; b < Bins; b++)
+      for (int b = 1; b < bins; b++)
       {
-        acc.Add<T>(bins[b - 1].Min, bins[b - 1].Max);
+        acc.Add<T>(axisBins[b - 1].Min, axisBins[b - 1].Max);
         n += counts[b - 1];
         if (n == 0 || rightCount[b] == 0)
           continue;
-        double cost = n * acc.HalfArea + rightCount[b] * rightArea[b];
+        double cost = ((n + round) >> shift) * acc.HalfArea + ((rightCount[b] + round) >> shift) * rightArea[b];
         if (cost < best.Cost)
           best = new Split(axis, b, cost);
       }
@@ -209,9 +217,9 @@ internal sealed partial class BvhBuilder
 
     left = right = Box.Empty;
     if (best.Axis >= 0)
-      for (int b = 0; b < Bins; b++)
+      for (int b = 0; b < bins; b++)
       {
-        ref Box bin = ref binBox[best.Axis * Bins + b];
+        ref Box bin = ref binBox[best.Axis * bins + b];
         if (b < best.Bin)
           left.Add<T>(bin.Min, bin.Max);
         else
@@ -227,15 +235,15 @@ internal sealed partial class BvhBuilder
   [MethodImpl(MethodImplOptions.AggressiveOptimization)]
   int Partition<T>(int start, int end, in Box cbounds, Split split, out Box leftCentres, out Box rightCentres) where T : struct, IBinning
   {
-    int axis = split.Axis;
-    double cmin = cbounds.Min.GetElement(axis), scale = Bins / (cbounds.Max.GetElement(axis) - cmin);
+    int axis = split.Axis, bins = shape.Bins;
+    double cmin = cbounds.Min.GetElement(axis), scale = bins / (cbounds.Max.GetElement(axis) - cmin);
     Item[] all = items;
     leftCentres = rightCentres = Box.Empty;
     int i = start, j = end - 1;
     while (i <= j)
     {
       Vector256<double> c = all[i].Center;
-      if (Math.Min(Bins - 1, (int)((c.GetElement(axis) - cmin) * scale)) < split.Bin)
+      if (Math.Min(bins - 1, (int)((c.GetElement(axis) - cmin) * scale)) < split.Bin)
       {
         leftCentres.Add<T>(c, c);
         i++;

@@ -40,6 +40,9 @@ internal sealed partial class MeshBvh
   /// <summary>Nodes of the eight-wide tree the queries walk.</summary>
   public int WideNodeCount => nodeCount;
 
+  /// <summary>Triangle blocks stored: each leaf's from a new block, so the sum of the leaves' blocks.</summary>
+  internal int BlockCount => (blockMemory.Length - Line) / Unsafe.SizeOf<TriangleBlock>();
+
   /// <summary>Size of the mesh's box (for relative tolerances).</summary>
   public double Extent { get; }
 
@@ -77,7 +80,7 @@ internal sealed partial class MeshBvh
     for (int axis = 0; axis < 3 && n > 0; axis++)
       magnitude = Math.Max(magnitude, Math.Max(Math.Abs(rootBox.Min[axis]), Math.Abs(rootBox.Max[axis])));
     double pad = 1e-9 * (Extent + magnitude);
-    MeshNode[] nodes = MeshNode.Collapse(tree, pad, out stackSize);
+    MeshNode[] nodes = MeshCollapse.Collapse(tree, BvhShape.Triangles, pad, out stackSize);
     (blockMemory, blockStart, slots) = Store(mesh, nodes, order);
     nodeCount = nodes.Length;
     (nodeMemory, nodeStart) = Aligned(nodes);

@@ -11,7 +11,6 @@ namespace GrCis.Rendering.Tests.Accel;
 /// </summary>
 internal static class ReferenceBvh
 {
-  const int Bins = 16;
   const double TraversalCost = 1.0;
 
   public static (BvhNode[] Nodes, int Depth) Build(Aabb[] boxes, Vector3d[] centers, int[] ids, BvhShape shape)
@@ -49,10 +48,10 @@ internal static class ReferenceBvh
         return self;
 
       Split split = BestSplit(start, end, cbounds);
-      double leafCost = shape.ItemCost * count;
+      double leafCost = shape.BlockCost * shape.Blocks(count);
       double parentArea = bounds.HalfArea;
       double splitCost = split.Axis >= 0 && parentArea > 0.0
-        ? TraversalCost + shape.ItemCost * split.Cost / parentArea
+        ? TraversalCost + shape.BlockCost * split.Cost / parentArea
         : double.PositiveInfinity;
       int mid;
       if (splitCost < leafCost || (count > shape.LargeLeaf && split.Axis >= 0))
@@ -77,28 +76,29 @@ internal static class ReferenceBvh
     /// <summary>The cheapest of the bin planes on the three axes (SAH, unnormalised); Axis −1 when none separates.</summary>
     Split BestSplit(int start, int end, in Aabb cbounds)
     {
-      Span<int> binCount = stackalloc int[Bins];
-      Span<Aabb> binBox = stackalloc Aabb[Bins];
-      Span<double> rightArea = stackalloc double[Bins];
-      Span<int> rightCount = stackalloc int[Bins];
+      int bins = shape.Bins;
+      Span<int> binCount = stackalloc int[bins];
+      Span<Aabb> binBox = stackalloc Aabb[bins];
+      Span<double> rightArea = stackalloc double[bins];
+      Span<int> rightCount = stackalloc int[bins];
       var best = new Split(-1, 0, double.PositiveInfinity);
       for (int axis = 0; axis < 3; axis++)
       {
         double cmin = cbounds.Min[axis], extent = cbounds.Max[axis] - cmin;
         if (!(extent > 0.0))
           continue;
-        double scale = Bins / extent;
+        double scale = bins / extent;
         binCount.Clear();
         binBox.Fill(Aabb.Empty);
         for (int k = start; k < end; k++)
         {
-          int b = Bin(centers[ids[k]][axis], cmin, scale);
+          int b = Bin(centers[ids[k]][axis], cmin, scale, bins);
           binCount[b]++;
           binBox[b].Add(boxes[ids[k]]);
         }
         Aabb acc = Aabb.Empty;
         int n = 0;
-        for (int b = Bins - 1; b > 0; b--)
+        for (int b = bins - 1; b > 0; b--)
         {
           acc.Add(binBox[b]);
           n += binCount[b];
@@ -107,13 +107,13 @@ internal static class ReferenceBvh
         }
         acc = Aabb.Empty;
         n = 0;
-        for (int b = 1; b < Bins; b++)
+        for (int b = 1; b < bins; b++)
         {
           acc.Add(binBox[b - 1]);
           n += binCount[b - 1];
           if (n == 0 || rightCount[b] == 0)
             continue;
-          double cost = n * acc.HalfArea + rightCount[b] * rightArea[b];
+          double cost = shape.Blocks(n) * acc.HalfArea + shape.Blocks(rightCount[b]) * rightArea[b];
           if (cost < best.Cost)
             best = new Split(axis, b, cost);
         }
@@ -124,11 +124,12 @@ internal static class ReferenceBvh
     /// <summary>Items whose centre falls in a bin below the split plane first; returns the first of the rest.</summary>
     int Partition(int start, int end, in Aabb cbounds, Split split)
     {
-      double cmin = cbounds.Min[split.Axis], scale = Bins / (cbounds.Max[split.Axis] - cmin);
+      int bins = shape.Bins;
+      double cmin = cbounds.Min[split.Axis], scale = bins / (cbounds.Max[split.Axis] - cmin);
       int i = start, j = end - 1;
       while (i <= j)
       {
-        if (Bin(centers[ids[i]][split.Axis], cmin, scale) < split.Bin)
+        if (Bin(centers[ids[i]][split.Axis], cmin, scale, bins) < split.Bin)
           i++;
         else
         {
@@ -139,7 +140,7 @@ internal static class ReferenceBvh
       return i;
     }
 
-    static int Bin(double c, double cmin, double scale) => Math.Min(Bins - 1, (int)((c - cmin) * scale));
+    static int Bin(double c, double cmin, double scale, int bins) => Math.Min(bins - 1, (int)((c - cmin) * scale));
   }
 
   readonly record struct Split(int Axis, int Bin, double Cost);

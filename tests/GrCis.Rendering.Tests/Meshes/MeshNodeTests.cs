@@ -131,7 +131,7 @@ public class MeshNodeTests
       for (int i = 0; i < n; i++)
         ids[i] = i;
       Bvh tree = Bvh.Build(boxes, ids, BvhShape.Triangles);
-      MeshNode[] nodes = MeshNode.Collapse(tree, 0.0, out int stackSize);
+      MeshNode[] nodes = MeshCollapse.Collapse(tree, BvhShape.Triangles, 0.0, out int stackSize);
       var seen = new int[n];
       var visited = new bool[nodes.Length];
       int maxDepth = 0;
@@ -161,6 +161,7 @@ public class MeshNodeTests
             Walk(m.Index[l], box, depth + 1);
             continue;
           }
+          Assert.InRange(m.Count[l], 1, BvhShape.Triangles.LargeLeaf);   // a merged subtree is a leaf only within the limit
           for (int k = m.Index[l]; k < m.Index[l] + m.Count[l]; k++)
           {
             int item = tree.Items[k];
