@@ -126,7 +126,7 @@ internal sealed partial class MeshBvh
   ref TriangleBlock FirstBlock() => ref Unsafe.As<byte, TriangleBlock>(ref blockMemory[blockStart]);
 
   /// <summary>Where the first block lies in its cache line (0: on a line, as the walks' prefetch of three lines assumes).</summary>
-  internal unsafe int FirstBlockLineOffset => (int)((nint)Unsafe.AsPointer(ref FirstBlock()) % 64);
+  internal unsafe int FirstBlockLineOffset => (int)((nint)Unsafe.AsPointer(ref FirstBlock()) % Line);
 
   // The largest |coordinate| of the float slab [min, max] rounded outward (+∞ when it leaves the float range or is NaN).
   static double Magnitude(double min, double max)

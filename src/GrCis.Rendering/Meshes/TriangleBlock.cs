@@ -1,6 +1,5 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
-using System.Runtime.Intrinsics.X86;
 using OpenTK.Mathematics;
 
 namespace Rendering;
@@ -47,11 +46,6 @@ internal struct TriangleBlock
 
   static ref float Lane(ref Vector128<float> v, int lane) => ref Unsafe.Add(ref Unsafe.As<Vector128<float>, float>(ref v), lane);
 
-  /// <summary>The four floats as doubles (exact).</summary>
-  [MethodImpl(MethodImplOptions.AggressiveInlining)]
-  static Vector256<double> Wide(Vector128<float> v) =>
-    Avx.IsSupported ? Avx.ConvertToVector256Double(v) : Vector256.Create(Vector128.WidenLower(v), Vector128.WidenUpper(v));
-
   /// <summary>
   /// Möller–Trumbore against the four triangles: bit l set when triangle l is hit, with its t, u, v and determinant
   /// (front: det &gt; 0) in lane l. The edges are b − a and c − a of the vertices widened to doubles, the doubles
@@ -64,9 +58,9 @@ internal struct TriangleBlock
                           Vector256<double> dx, Vector256<double> dy, Vector256<double> dz,
                           out Vector256<double> t, out Vector256<double> u, out Vector256<double> v, out Vector256<double> det)
   {
-    Vector256<double> ax = Wide(Ax), ay = Wide(Ay), az = Wide(Az);
-    Vector256<double> e1x = Wide(Bx) - ax, e1y = Wide(By) - ay, e1z = Wide(Bz) - az;
-    Vector256<double> e2x = Wide(Cx) - ax, e2y = Wide(Cy) - ay, e2z = Wide(Cz) - az;
+    Vector256<double> ax = MeshNode.Widen(Ax), ay = MeshNode.Widen(Ay), az = MeshNode.Widen(Az);
+    Vector256<double> e1x = MeshNode.Widen(Bx) - ax, e1y = MeshNode.Widen(By) - ay, e1z = MeshNode.Widen(Bz) - az;
+    Vector256<double> e2x = MeshNode.Widen(Cx) - ax, e2y = MeshNode.Widen(Cy) - ay, e2z = MeshNode.Widen(Cz) - az;
     Vector256<double> px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
     det = e1x * px + e1y * py + e1z * pz;
     Vector256<double> inv = Vector256<double>.One / det;
