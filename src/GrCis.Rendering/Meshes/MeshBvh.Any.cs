@@ -52,8 +52,10 @@ internal sealed partial class MeshBvh
 
     // Entries as in Nearest: an inner node (≥ 0) or a leaf lane (~(node·8 + lane)) and the line's entry into its box,
     // re-checked against the bound when popped; only boxes meeting (0, bound] are pushed.
-    Span<int> stack = stackSize <= 1024 ? stackalloc int[stackSize] : new int[stackSize];
-    Span<float> stackNear = stackSize <= 1024 ? stackalloc float[stackSize] : new float[stackSize];
+    Unsafe.SkipInit(out FrameInts frameInts);
+    Unsafe.SkipInit(out FrameFloats frameFloats);
+    Span<int> stack = stackSize <= FrameEntries ? frameInts : new int[stackSize];
+    Span<float> stackNear = stackSize <= FrameEntries ? frameFloats : new float[stackSize];
     Unsafe.SkipInit(out Vector256<float> spillNear);
     Unsafe.SkipInit(out Vector256<int> spillCode);
     int sp = 0;

@@ -61,7 +61,8 @@ internal sealed partial class MeshBvh
     // Each entry: an inner node (≥ 0) or a leaf lane (~(node·8 + lane)) and the line's parameter interval in its box,
     // re-checked against the best when popped; the root's interval is that of the whole mesh's box.
     // On the stack (not zeroed) up to a tree depth of about 70; only a degenerate mesh's tree is deeper.
-    Span<NodeSpan> stack = stackSize <= 512 ? stackalloc NodeSpan[stackSize] : new NodeSpan[stackSize];
+    Unsafe.SkipInit(out FrameSpans frameSpans);
+    Span<NodeSpan> stack = stackSize <= FrameSpanEntries ? frameSpans : new NodeSpan[stackSize];
     Unsafe.SkipInit(out Vector256<float> spillNear);
     Unsafe.SkipInit(out Vector256<float> spillFar);
     Unsafe.SkipInit(out Vector256<float> spillKey);
@@ -186,7 +187,8 @@ internal sealed partial class MeshBvh
     ref MeshNode nodes = ref FirstNode();
     ref TriangleBlock blocks = ref FirstBlock();
 
-    Span<NodeSpan> stack = stackSize <= 512 ? stackalloc NodeSpan[stackSize] : new NodeSpan[stackSize];
+    Unsafe.SkipInit(out FrameSpans frameSpans);
+    Span<NodeSpan> stack = stackSize <= FrameSpanEntries ? frameSpans : new NodeSpan[stackSize];
     Unsafe.SkipInit(out Vector256<float> spillNear);
     Unsafe.SkipInit(out Vector256<float> spillFar);
     Unsafe.SkipInit(out Vector256<float> spillKey);

@@ -1,0 +1,94 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Reflection;
+using System.Reflection.Emit;
+using OpenTK.Mathematics;
+using Rendering;
+using Scene3D;
+using Xunit;
+
+namespace GrCis.Rendering.Tests.Meshes;
+
+/// <summary>
+/// The mesh walks keep their stacks in fixed buffers of their frame: a method that uses stackalloc is compiled once,
+/// without a profile, and the walks' triangle test then spills its temporaries (docs/performance.md, "Against Intel
+/// Embree"). The buffers must still hold the stack of every tree the builder makes for real meshes.
+/// </summary>
+public class WalkStackTests
+{
+  static readonly string[] Walks = { "Any", "Nearest", "NearestBoth", "IntersectAll" };
+
+  static IEnumerable<MethodInfo> Bodies() =>
+    typeof(MeshBvh).GetMethods(BindingFlags.Instance | BindingFlags.NonPublic | BindingFlags.Public)
+                   .Where(m => m.IsGenericMethodDefinition && Walks.Contains(m.Name));
+
+  public static IEnumerable<object[]> WalkNames() => Walks.Select(w => new object[] { w });
+
+  [Theory]
+  [MemberData(nameof(WalkNames))]
+  public void Walk_uses_no_stackalloc(string name)
+  {
+    MethodInfo body = Assert.Single(Bodies(), m => m.Name == name);
+    Assert.DoesNotContain(OpCodes.Localloc, Instructions(body.GetMethodBody()!.GetILAsByteArray()!));
+  }
+
+  [Fact]
+  public void Opcode_reader_finds_stackalloc_where_it_is()
+  {
+    // The reader itself: this probe allocates on the stack, so its body must show the opcode.
+    MethodInfo probe = typeof(WalkStackTests).GetMethod(nameof(StackallocProbe), BindingFlags.NonPublic | BindingFlags.Static)!;
+    Assert.Contains(OpCodes.Localloc, Instructions(probe.GetMethodBody()!.GetILAsByteArray()!));
+  }
+
+  [Theory]
+  [InlineData("teapot.obj.gz")]
+  [InlineData("pitcher.obj.gz")]
+  [InlineData("toyplane.obj.gz")]
+  [InlineData("buddha.obj.gz")]
+  public void Frame_buffers_hold_the_stack_of_real_meshes(string file)
+  {
+    var scene = new SceneBrep();
+    new WavefrontObj().ReadBrep(Path.Combine(MeshTestSupport.MeshDir, file), scene);
+    var mesh = new TriangleMesh(scene);
+    mesh.IntersectFirst(new Vector3d(0, 0, -10), Vector3d.UnitZ, 1.0, out _, out _);   // builds the tree
+    int stackSize = (int)typeof(MeshBvh).GetField("stackSize", BindingFlags.Instance | BindingFlags.NonPublic)!.GetValue(mesh.Bvh)!;
+    Assert.InRange(stackSize, 2, Math.Min(MeshBvh.FrameEntries, MeshBvh.FrameSpanEntries));
+  }
+
+  static int StackallocProbe(int n)
+  {
+    Span<int> s = stackalloc int[n];
+    s[0] = n;
+    return s[0];
+  }
+
+  /// <summary>The opcodes of an IL body in order (each operand skipped by its encoded size).</summary>
+  static List<OpCode> Instructions(byte[] il)
+  {
+    var byValue = new Dictionary<short, OpCode>();
+    foreach (FieldInfo f in typeof(OpCodes).GetFields(BindingFlags.Public | BindingFlags.Static))
+    {
+      var op = (OpCode)f.GetValue(null)!;
+      byValue[op.Value] = op;
+    }
+    var ops = new List<OpCode>();
+    for (int i = 0; i < il.Length;)
+    {
+      OpCode op = byValue[il[i] == 0xFE ? (short)(0xFE00 | il[i + 1]) : il[i]];
+      i += op.Size;
+      ops.Add(op);
+      i += op.OperandType switch
+      {
+        OperandType.InlineNone => 0,
+        OperandType.ShortInlineBrTarget or OperandType.ShortInlineI or OperandType.ShortInlineVar => 1,
+        OperandType.InlineVar => 2,
+        OperandType.InlineI8 or OperandType.InlineR => 8,
+        OperandType.InlineSwitch => 4 + 4 * BitConverter.ToInt32(il, i),
+        _ => 4,
+      };
+    }
+    return ops;
+  }
+}
