@@ -96,7 +96,7 @@ internal sealed partial class MeshBvh
   // that uses stackalloc once, at its first call, optimized but without a profile (it cannot patch such a method while
   // it runs), and without the profile the walks' triangle test spilled its temporaries to the stack. With fixed buffers
   // the walks tier up as other methods do: their first calls run unoptimized code (the process's first ~100,000 queries
-  // take about twice as long), and the final code, compiled with the profile, keeps the test in registers: 10–13 % less
+  // take about twice as long), and the final code, compiled with the profile, keeps the test in registers: 4–16 % less
   // time per query after that (docs/performance.md, "Against Intel Embree"). The limits are those the stackalloc buffers
   // had; deeper trees (a degenerate mesh's) get heap arrays, as before.
   internal const int FrameEntries = 1024, FrameSpanEntries = 512;
