@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Runtime.InteropServices;
 using System.Threading;
 
 namespace GrCis.Cli;
@@ -10,6 +11,11 @@ namespace GrCis.Cli;
 /// (a scene script stuck in a loop never looks at the token, nor does a tile with huge spp), the
 /// process exits with 130 anyway. Nothing is half-written either way: images are saved through a
 /// temporary file that <see cref="Rendering.Imaging.AtomicFile"/> removes on exit.
+/// <para>
+/// The signals are taken with <see cref="PosixSignalRegistration"/> (SIGINT for Ctrl+C, SIGQUIT for Ctrl+\ or Ctrl+Break,
+/// the two <see cref="Console.CancelKeyPress"/> reports, on Windows too): subscribing to that event sets up the terminal
+/// first, which cost every run about 10 ms of its start.
+/// </para>
 /// </summary>
 internal sealed class InterruptGuard : IDisposable
 {
@@ -18,19 +24,21 @@ internal sealed class InterruptGuard : IDisposable
 
   readonly CancellationTokenSource cts = new();
   readonly TextWriter error;
+  readonly PosixSignalRegistration interrupt, quit;
   Timer? deadline;
 
   public InterruptGuard(TextWriter error)
   {
     this.error = error;
-    Console.CancelKeyPress += OnCancelKeyPress;
+    interrupt = PosixSignalRegistration.Create(PosixSignal.SIGINT, OnSignal);
+    quit = PosixSignalRegistration.Create(PosixSignal.SIGQUIT, OnSignal);
   }
 
   public CancellationToken Token => cts.Token;
 
-  void OnCancelKeyPress(object? sender, ConsoleCancelEventArgs e)
+  void OnSignal(PosixSignalContext context)
   {
-    e.Cancel = true;
+    context.Cancel = true;
     if (cts.IsCancellationRequested)
     {
       Stop("interrupted twice");   // a second Ctrl+C: no more waiting
@@ -55,7 +63,8 @@ internal sealed class InterruptGuard : IDisposable
 
   public void Dispose()
   {
-    Console.CancelKeyPress -= OnCancelKeyPress;
+    interrupt.Dispose();
+    quit.Dispose();
     deadline?.Dispose();
     cts.Dispose();
   }

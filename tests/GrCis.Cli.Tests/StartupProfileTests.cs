@@ -79,6 +79,35 @@ public class StartupProfileTests
     }
   }
 
+  [Fact]
+  public void A_run_that_adds_a_profile_leaves_the_newest_ones_up_to_the_limit()
+  {
+    using var dir = new TempDirectory();
+    string cache = dir.File("cache");
+    string startup = Directory.CreateDirectory(Path.Combine(cache, "startup")).FullName;
+    if (!OperatingSystem.IsWindows())
+    {
+      File.SetUnixFileMode(cache, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute);
+      File.SetUnixFileMode(startup, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute);
+    }
+    DateTime now = DateTime.UtcNow;
+    for (int i = 0; i < StartupProfile.Kept + 4; i++)
+    {
+      string f = Path.Combine(startup, StartupProfile.FileName("bench", $"{i:x16}"));
+      File.WriteAllText(f, "x");
+      File.SetLastWriteTimeUtc(f, now.AddMinutes(-1 - i));
+    }
+
+    var r = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, new Dictionary<string, string> { [ScriptCache.DirectoryVariable] = cache },
+                                                   "render", "fiveballs", "--size", "16x12", "-q", "-o", "a.png"));
+
+    Assert.True(r.Code == 0, r.Error);
+    string[] left = Directory.GetFiles(startup, "*" + StartupProfile.Extension).Select(Path.GetFileName).Order().ToArray()!;
+    string[] expected = [StartupProfile.FileName("render", StartupProfile.BuildId()),
+                         .. Enumerable.Range(0, StartupProfile.Kept - 1).Select(i => StartupProfile.FileName("bench", $"{i:x16}"))];
+    Assert.Equal(expected.Order(), left);
+  }
+
   [Theory]
   [InlineData(true, false)]
   [InlineData(false, true)]
