@@ -51,6 +51,13 @@ public sealed record CliEnvironment
   /// </summary>
   public ScriptCache? ScriptCache { get; init; } = ScriptCache.FromEnvironment();
 
+  /// <summary>
+  /// Called before a scene script or module is compiled (a miss of both caches): <c>Main</c> starts the compiler's
+  /// multicore JIT profile there (<see cref="StartupProfile.StartCompiling"/>); null in tests that run grcis in their
+  /// own process, and with <c>--no-cache</c>.
+  /// </summary>
+  public Action? BeforeCompile { get; init; }
+
   /// <summary>The same environment with another cancellation (one pass of <c>--watch</c>, cancelled by the next save).</summary>
   public CliEnvironment WithCancel(CancellationToken cancel) => this with { Cancel = cancel };
 

@@ -23,6 +23,7 @@ public static class Program
                     Environment.GetEnvironmentVariable("TERM") is not "dumb",
       Cancel = interrupt.Token,
       OwnsProcess = true,
+      BeforeCompile = StartupProfile.CompileHook(args),
     };
     return Run(args, env);
   }

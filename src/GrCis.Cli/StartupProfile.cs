@@ -2,6 +2,7 @@ using System;
 using System.IO;
 using System.Linq;
 using System.Runtime;
+using System.Threading;
 using GrCis.Scripting.Caching;
 
 namespace GrCis.Cli;
@@ -12,8 +13,9 @@ namespace GrCis.Cli;
 /// parses the command line, builds the scene and starts the render, instead of each waiting for the JIT when it is
 /// first called. The profiles live in the <c>startup</c> folder of the compiled-script cache, one per command and
 /// build, the newest <see cref="Kept"/> kept (pruned when a run adds one). Off when the cache is (<c>GRCIS_NO_CACHE=1</c>, <c>--no-cache</c>, no
-/// cache folder), for <c>studio</c> and <c>init</c>, and for scene scripts: a run that compiles a script would record
-/// the compiler, and replaying that would load it in a later run that finds the script compiled in the cache.
+/// cache folder) and for <c>studio</c> and <c>init</c>. A scene script's run gets one only when it compiles the script
+/// or a module (<see cref="CompileHook"/>), named apart: a run that finds its script compiled in the cache must not
+/// replay the compiler.
 /// A profile that is missing, another build's or unreadable only costs its speed-up; a folder another user could write
 /// (as the cache's trust rule says) is not used.
 /// </summary>
@@ -29,7 +31,37 @@ static class StartupProfile
   /// <summary>Starts recording, and replaying the last profile of this command and build, when the cache is on.</summary>
   public static void Start(string[] args)
   {
-    if (!Applies(args) || ScriptCache.FromEnvironment() is not ScriptCache cache)
+    if (Applies(args))
+      Begin(args[0]);
+  }
+
+  /// <summary>
+  /// What <see cref="CliEnvironment.BeforeCompile"/> does in a real process that runs a scene script: its first compilation
+  /// starts the profile <c>&lt;command&gt;-compile</c>, so only runs that compile record and replay the compiler (about
+  /// 3,000 methods JIT-compiled in a fresh process, most of its start), and a run that finds its script compiled in the
+  /// cache never loads it. Null where <see cref="Start"/> decides (no script), for commands without profiles and with
+  /// <c>--no-cache</c>.
+  /// </summary>
+  public static Action? CompileHook(string[] args)
+  {
+    if (args.Length == 0 || Array.IndexOf(commands, args[0]) < 0 || Array.IndexOf(args, "--no-cache") >= 0 || Applies(args))
+      return null;
+    string name = args[0] + CompileSuffix;
+    int started = 0;
+    return () =>
+    {
+      if (Interlocked.Exchange(ref started, 1) == 0)
+        Begin(name);
+    };
+  }
+
+  /// <summary>The profile name's suffix for a run that compiles a scene script or module.</summary>
+  internal const string CompileSuffix = "-compile";
+
+  /// <summary>Records the profile <paramref name="name"/> of this build, replaying the last one, when the cache is on.</summary>
+  static void Begin(string name)
+  {
+    if (ScriptCache.FromEnvironment() is not ScriptCache cache)
       return;
     try
     {
@@ -40,12 +72,12 @@ static class StartupProfile
       // says so when a script asks it).
       if (ScriptCache.WhyUntrusted(cache.Directory) != null || ScriptCache.WhyUntrusted(folder) != null)
         return;
-      string name = FileName(args[0], BuildId());
+      string file = FileName(name, BuildId());
       // Only a run that adds a profile can take the folder past Kept; listing it costs a run ~10 ms of its start.
-      if (!File.Exists(Path.Combine(folder, name)))
+      if (!File.Exists(Path.Combine(folder, file)))
         Prune(folder, Kept - 1);
       ProfileOptimization.SetProfileRoot(folder);
-      ProfileOptimization.StartProfile(name);
+      ProfileOptimization.StartProfile(file);
     }
     catch (Exception e) when (e is IOException or UnauthorizedAccessException)
     {

@@ -65,6 +65,13 @@ public sealed class ScriptHost : IDisposable
   /// <summary>The compiled-script cache on disk this host reads and fills (null: none).</summary>
   public ScriptCache? DiskCache { get; }
 
+  /// <summary>
+  /// Called on the compiling thread before each compilation of a script or module this host performs (not when either
+  /// cache has it): a front end can start what only a compiling run needs. <c>grcis</c> starts the multicore JIT profile of
+  /// the compiler there, which a run that finds its script compiled never loads.
+  /// </summary>
+  public Action? BeforeCompile { get; init; }
+
   /// <summary>Number of script compilations this host has performed (hits of either cache do not count).</summary>
   public int CompilationCount => Volatile.Read(ref compilations);
 
@@ -143,7 +150,7 @@ public sealed class ScriptHost : IDisposable
         return existing;
       ScriptModule[] earlier = modules.ToArray();
       string key = CacheKeys.Module(contentHash, earlier, OptimizeScripts);
-      (ScriptModule module, bool compiled) = CachedBuilds.Module(DiskCache, dirs, candidates, contentHash, key, earlier, OptimizeScripts);
+      (ScriptModule module, bool compiled) = CachedBuilds.Module(DiskCache, dirs, candidates, contentHash, key, earlier, OptimizeScripts, BeforeCompile);
       if (compiled)
         Interlocked.Increment(ref moduleCompilations);
       modules.Add(module);
@@ -201,7 +208,7 @@ public sealed class ScriptHost : IDisposable
         string memoryKey = key;
         entry = new Lazy<CompiledScript>(() =>
         {
-          (CompiledScript script, bool compiled) = CachedBuilds.Script(disk, full, source, memoryKey, mods, OptimizeScripts);
+          (CompiledScript script, bool compiled) = CachedBuilds.Script(disk, full, source, memoryKey, mods, OptimizeScripts, BeforeCompile);
           if (compiled)
             Interlocked.Increment(ref compilations);
           return script;

@@ -27,6 +27,20 @@ public class StartupProfileTests
     Assert.Equal(expected, StartupProfile.Applies(args));
   }
 
+  [Theory]
+  [InlineData(true, "render", "scene.cs", "-o", "a.png")]
+  [InlineData(true, "animate", "Anim.CS")]
+  [InlineData(true, "info", "scene.cs")]
+  [InlineData(false, "render", "fiveballs")]
+  [InlineData(false, "render", "scene.cs", "--no-cache")]
+  [InlineData(false, "studio", "scene.cs")]
+  [InlineData(false, "export", "scene.cs")]
+  [InlineData(false)]
+  public void Script_runs_of_profiled_commands_start_a_profile_when_they_compile(bool expected, params string[] args)
+  {
+    Assert.Equal(expected, StartupProfile.CompileHook(args) != null);
+  }
+
   [Fact]
   public void Profile_is_named_by_the_command_and_the_build()
   {
@@ -106,6 +120,38 @@ public class StartupProfileTests
     string[] expected = [StartupProfile.FileName("render", StartupProfile.BuildId()),
                          .. Enumerable.Range(0, StartupProfile.Kept - 1).Select(i => StartupProfile.FileName("bench", $"{i:x16}"))];
     Assert.Equal(expected.Order(), left);
+  }
+
+  [Fact]
+  public void Only_a_run_that_compiles_its_script_records_the_compile_profile()
+  {
+    using var dir = new TempDirectory();
+    string cache = dir.File("cache");
+    string startup = Path.Combine(cache, "startup");
+    var env = new Dictionary<string, string> { [ScriptCache.DirectoryVariable] = cache };
+    File.WriteAllText(dir.File("s.cs"), "scene.Intersectable = new Sphere();\n");
+    string[] render = ["render", "s.cs", "--size", "16x12", "-q", "-o", "a.png"];
+
+    var compiled = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, env, render));
+    Assert.True(compiled.Code == 0, compiled.Error);
+    string profile = Path.Combine(startup, StartupProfile.FileName("render" + StartupProfile.CompileSuffix, StartupProfile.BuildId()));
+    Assert.Equal([profile], Directory.GetFiles(startup));
+    Assert.True(new FileInfo(profile).Length > 0);
+
+    // The next run finds the script compiled: it records nothing, so the compiler's profile stays as it was.
+    File.SetLastWriteTimeUtc(profile, DateTime.UtcNow.AddHours(-1));
+    byte[] before = File.ReadAllBytes(profile);
+    var cached = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, env, render));
+    Assert.True(cached.Code == 0, cached.Error);
+    Assert.Equal([profile], Directory.GetFiles(startup));
+    Assert.Equal(before, File.ReadAllBytes(profile));
+    Assert.True(File.GetLastWriteTimeUtc(profile) < DateTime.UtcNow.AddMinutes(-30));
+
+    // An edited script compiles again, replaying and rewriting the profile.
+    File.AppendAllText(dir.File("s.cs"), "// edited\n");
+    var edited = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, env, render));
+    Assert.True(edited.Code == 0, edited.Error);
+    Assert.True(File.GetLastWriteTimeUtc(profile) > DateTime.UtcNow.AddMinutes(-30));
   }
 
   [Theory]

@@ -118,6 +118,29 @@ public sealed class DiskCacheTests : IDisposable
   }
 
   [Fact]
+  public void The_compile_hook_runs_before_each_compilation_and_never_for_a_cache_hit()
+  {
+    string module = Path.Combine(scratch.Path, "mod");
+    scratch.Write("mod/Numbers.cs", "namespace Mod { public static class Numbers { public static int Answer() => 41; } }\n");
+    string script = scratch.Write("Scene.cs", "scene.Intersectable = new Sphere();\ncontext[\"n\"] = Mod.Numbers.Answer();\n");
+
+    (int Calls, int Compiled) Run()
+    {
+      int calls = 0;
+      using var host = new ScriptHost(diskCache: NewCache()) { BeforeCompile = () => calls++ };
+      host.AddModule(module);
+      host.Load(script);
+      host.Load(script);   // the memory cache's hit
+      return (calls, host.ModuleCompilationCount + host.CompilationCount);
+    }
+
+    Assert.Equal((2, 2), Run());   // the module and the script compiled
+    Assert.Equal((0, 0), Run());   // both from the disk cache
+    File.AppendAllText(script, "// edited\n");
+    Assert.Equal((1, 1), Run());   // the script again, the module from the cache
+  }
+
+  [Fact]
   public void Other_compiler_options_or_another_library_build_do_not_use_the_entry()
   {
     string path = scratch.Write("Scene.cs", Versioned(3));

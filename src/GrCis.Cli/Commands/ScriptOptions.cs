@@ -58,5 +58,6 @@ public sealed class ScriptOptions
   /// <summary>The scene source for the scene argument, with the script options applied.</summary>
   public ISceneSource Resolve(ParseResult parse, string? scene, CliEnvironment env) =>
     new SceneResolver(env.WorkingDirectory).Resolve(scene, parse.GetValue(Param), parse.GetValue(Modules) ?? Array.Empty<string>(),
-                                                    parse.GetValue(NoCache) ? null : env.ScriptCache);
+                                                    parse.GetValue(NoCache) ? null : env.ScriptCache,
+                                                    parse.GetValue(NoCache) ? null : env.BeforeCompile);
 }

@@ -31,11 +31,13 @@ public sealed class SceneResolver
 
   /// <summary>As <see cref="Resolve(string?)"/>; a script gets <paramref name="param"/> and the module folders.</summary>
   /// <param name="diskCache">Where a script's compiled code is kept between runs (null: compiled afresh).</param>
+  /// <param name="beforeCompile">Called before the script or a module is compiled (<see cref="GrCis.Scripting.ScriptHost.BeforeCompile"/>).</param>
   /// <exception cref="UsageException">Unknown scene, missing script or module folder, or script options for a built-in scene.</exception>
-  public ISceneSource Resolve(string? spec, string? param, IReadOnlyList<string> modules, ScriptCache? diskCache = null)
+  public ISceneSource Resolve(string? spec, string? param, IReadOnlyList<string> modules, ScriptCache? diskCache = null,
+                              Action? beforeCompile = null)
   {
     if (!string.IsNullOrWhiteSpace(spec) && !spec.StartsWith('-') && IsScriptPath(spec))
-      return ResolveScript(spec, param, modules, diskCache);
+      return ResolveScript(spec, param, modules, diskCache, beforeCompile);
     if (modules.Count > 0)
       throw new UsageException("--module works only with a scene script (*.cs)");
     return ResolveBuiltIn(spec, param);
@@ -102,7 +104,7 @@ public sealed class SceneResolver
 
   static bool IsScriptPath(string spec) => spec.EndsWith(".cs", StringComparison.OrdinalIgnoreCase);
 
-  ISceneSource ResolveScript(string spec, string? param, IReadOnlyList<string> modules, ScriptCache? diskCache)
+  ISceneSource ResolveScript(string spec, string? param, IReadOnlyList<string> modules, ScriptCache? diskCache, Action? beforeCompile)
   {
     string path = Path.GetFullPath(spec, workingDirectory);
     if (Directory.Exists(path))
@@ -119,7 +121,7 @@ public sealed class SceneResolver
         throw new UsageException($"module folder '{m}' not found (looked for '{dir}')");
       dirs.Add(dir);
     }
-    return new ScriptSceneSource(path, param, dirs, diskCache);
+    return new ScriptSceneSource(path, param, dirs, diskCache, beforeCompile);
   }
 
   static IEnumerable<string> Quote(IEnumerable<string> names)

@@ -44,8 +44,9 @@ public sealed class ScriptSceneSource : ISceneSource, IDisposable
   /// <param name="param">The text passed to the script as <c>param</c>.</param>
   /// <param name="modules">Full paths of existing module folders, in the order given.</param>
   /// <param name="diskCache">The compiled-script cache the source's own host reads and fills (null: none).</param>
-  public ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules, ScriptCache? diskCache)
-    : this(path, param, modules, new ScriptHost(cacheCapacity: 4, diskCache: diskCache), ownsHost: true)
+  /// <param name="beforeCompile">The host's <see cref="ScriptHost.BeforeCompile"/>.</param>
+  public ScriptSceneSource(string path, string? param, IReadOnlyList<string> modules, ScriptCache? diskCache, Action? beforeCompile = null)
+    : this(path, param, modules, new ScriptHost(cacheCapacity: 4, diskCache: diskCache) { BeforeCompile = beforeCompile }, ownsHost: true)
   {
   }
 

@@ -12,9 +12,10 @@ namespace GrCis.Scripting.Caching;
 /// </summary>
 internal static class CachedBuilds
 {
+  /// <param name="beforeCompile">Called just before the script is compiled (not on a hit).</param>
   /// <returns>The loaded script, and whether it was compiled (false: loaded from the cache).</returns>
   public static (CompiledScript Script, bool Compiled) Script(ScriptCache? cache, string path, string source, string memoryKey,
-                                                              IReadOnlyList<ScriptModule> modules, bool optimize)
+                                                              IReadOnlyList<ScriptModule> modules, bool optimize, Action? beforeCompile = null)
   {
     string? key = cache == null ? null : CacheKeys.Script(path, source, modules, optimize);
     if (key != null && cache!.ReadScript(key) is ScriptImage cached)
@@ -28,16 +29,19 @@ internal static class CachedBuilds
         cache.Reject(key);
       }
     }
+    beforeCompile?.Invoke();
     ScriptImage image = CompileScript(path, source, memoryKey, modules, optimize);
     if (key != null)
       cache!.Write(key, image);
     return (ScriptLoader.LoadScript(path, memoryKey, image, modules), true);
   }
 
+  /// <param name="beforeCompile">Called just before the module is compiled (not on a hit).</param>
   /// <returns>The loaded module, and whether it was compiled (false: loaded from the cache).</returns>
   public static (ScriptModule Module, bool Compiled) Module(ScriptCache? cache, IReadOnlyList<string> directories,
                                                             IReadOnlyList<ModuleFiles.Candidate> candidates, string contentHash,
-                                                            string key, IReadOnlyList<ScriptModule> earlier, bool optimize)
+                                                            string key, IReadOnlyList<ScriptModule> earlier, bool optimize,
+                                                            Action? beforeCompile = null)
   {
     if (cache?.ReadModule(key) is ModuleImage cached)
     {
@@ -50,6 +54,7 @@ internal static class CachedBuilds
         cache.Reject(key);
       }
     }
+    beforeCompile?.Invoke();
     ModuleImage image = CompileModule(directories, candidates, key, earlier, optimize);
     cache?.Write(key, image);
     return (ScriptLoader.LoadModule(directories, contentHash, key, image, earlier), true);
