@@ -13,9 +13,9 @@ namespace GrCis.Cli;
 /// parses the command line, builds the scene and starts the render, instead of each waiting for the JIT when it is
 /// first called. The profiles live in the <c>startup</c> folder of the compiled-script cache, one per command and
 /// build, the newest <see cref="Kept"/> kept (pruned when a run adds one). Off when the cache is (<c>GRCIS_NO_CACHE=1</c>, <c>--no-cache</c>, no
-/// cache folder) and for <c>studio</c> and <c>init</c>. A scene script's run gets one only when it compiles the script
-/// or a module (<see cref="CompileHook"/>), named apart: a run that finds its script compiled in the cache must not
-/// replay the compiler.
+/// cache folder) and for <c>studio</c> and <c>init</c>. A scene script's run has two, one until it compiles the script
+/// or a module and one from then on (<see cref="CompileHook"/>): a run that finds its script compiled in the cache must
+/// not replay the compiler.
 /// A profile that is missing, another build's or unreadable only costs its speed-up; a folder another user could write
 /// (as the cache's trust rule says) is not used.
 /// </summary>
@@ -28,23 +28,29 @@ static class StartupProfile
 
   static readonly string[] commands = { "render", "animate", "merge", "list", "info", "bench" };
 
-  /// <summary>Starts recording, and replaying the last profile of this command and build, when the cache is on.</summary>
+  /// <summary>
+  /// Starts recording, and replaying the last profile of this command and build, when the cache is on: the command's own
+  /// for a built-in scene, <c>&lt;command&gt;-script</c> for a scene script (see <see cref="CompileHook"/>).
+  /// </summary>
   public static void Start(string[] args)
   {
     if (Applies(args))
       Begin(args[0]);
+    else if (RunsScript(args))
+      Begin(args[0] + ScriptSuffix);
   }
 
   /// <summary>
   /// What <see cref="CliEnvironment.BeforeCompile"/> does in a real process that runs a scene script: its first compilation
-  /// starts the profile <c>&lt;command&gt;-compile</c>, so only runs that compile record and replay the compiler (about
-  /// 3,000 methods JIT-compiled in a fresh process, most of its start), and a run that finds its script compiled in the
-  /// cache never loads it. Null where <see cref="Start"/> decides (no script), for commands without profiles and with
-  /// <c>--no-cache</c>.
+  /// switches from the profile <c>&lt;command&gt;-script</c> to <c>&lt;command&gt;-compile</c> (a new start stops the
+  /// recording in progress and writes it). So only runs that compile record and replay the compiler (about 3,000
+  /// methods JIT-compiled in a fresh process, most of its start), and a run that finds its script in the cache replays
+  /// the script profile without the compiler. Null where <see cref="Start"/> uses the command's profile (no script),
+  /// for commands without profiles and with <c>--no-cache</c>.
   /// </summary>
   public static Action? CompileHook(string[] args)
   {
-    if (args.Length == 0 || Array.IndexOf(commands, args[0]) < 0 || Array.IndexOf(args, "--no-cache") >= 0 || Applies(args))
+    if (!RunsScript(args))
       return null;
     string name = args[0] + CompileSuffix;
     int started = 0;
@@ -57,6 +63,13 @@ static class StartupProfile
 
   /// <summary>The profile name's suffix for a run that compiles a scene script or module.</summary>
   internal const string CompileSuffix = "-compile";
+
+  /// <summary>The profile name's suffix for a scene script's run, until it compiles.</summary>
+  internal const string ScriptSuffix = "-script";
+
+  /// <summary>A command with profiles running a scene script (an argument ending in <c>.cs</c>), the cache not bypassed.</summary>
+  static bool RunsScript(string[] args) =>
+    args.Length > 0 && Array.IndexOf(commands, args[0]) >= 0 && Array.IndexOf(args, "--no-cache") < 0 && !Applies(args);
 
   /// <summary>Records the profile <paramref name="name"/> of this build, replaying the last one, when the cache is on.</summary>
   static void Begin(string name)
@@ -94,7 +107,7 @@ static class StartupProfile
       Directory.CreateDirectory(folder, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute);
   }
 
-  /// <summary>Whether a run with these arguments gets a profile: one of <see cref="commands"/>, no script, no <c>--no-cache</c>.</summary>
+  /// <summary>Whether a run with these arguments gets its command's profile: one of <see cref="commands"/>, no script, no <c>--no-cache</c>.</summary>
   internal static bool Applies(string[] args)
   {
     if (args.Length == 0 || Array.IndexOf(commands, args[0]) < 0 || Array.IndexOf(args, "--no-cache") >= 0)

@@ -123,7 +123,7 @@ public class StartupProfileTests
   }
 
   [Fact]
-  public void Only_a_run_that_compiles_its_script_records_the_compile_profile()
+  public void Only_a_run_that_compiles_its_script_records_the_compile_profile_and_a_cached_run_its_own()
   {
     using var dir = new TempDirectory();
     string cache = dir.File("cache");
@@ -135,17 +135,20 @@ public class StartupProfileTests
     var compiled = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, env, render));
     Assert.True(compiled.Code == 0, compiled.Error);
     string profile = Path.Combine(startup, StartupProfile.FileName("render" + StartupProfile.CompileSuffix, StartupProfile.BuildId()));
-    Assert.Equal([profile], Directory.GetFiles(startup));
+    string script = Path.Combine(startup, StartupProfile.FileName("render" + StartupProfile.ScriptSuffix, StartupProfile.BuildId()));
+    Assert.Equal([profile, script], Directory.GetFiles(startup).Order());
     Assert.True(new FileInfo(profile).Length > 0);
 
-    // The next run finds the script compiled: it records nothing, so the compiler's profile stays as it was.
+    // The next run finds the script compiled: it records its own profile, and the compiler's stays as it was.
     File.SetLastWriteTimeUtc(profile, DateTime.UtcNow.AddHours(-1));
+    File.SetLastWriteTimeUtc(script, DateTime.UtcNow.AddHours(-1));
     byte[] before = File.ReadAllBytes(profile);
     var cached = GrcisProcess.Finish(GrcisProcess.Start(dir.Path, env, render));
     Assert.True(cached.Code == 0, cached.Error);
-    Assert.Equal([profile], Directory.GetFiles(startup));
+    Assert.Equal([profile, script], Directory.GetFiles(startup).Order());
     Assert.Equal(before, File.ReadAllBytes(profile));
     Assert.True(File.GetLastWriteTimeUtc(profile) < DateTime.UtcNow.AddMinutes(-30));
+    Assert.True(File.GetLastWriteTimeUtc(script) > DateTime.UtcNow.AddMinutes(-30));
 
     // An edited script compiles again, replaying and rewriting the profile.
     File.AppendAllText(dir.File("s.cs"), "// edited\n");
