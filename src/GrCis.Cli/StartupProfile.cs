@@ -13,7 +13,8 @@ namespace GrCis.Cli;
 /// parses the command line, builds the scene and starts the render, instead of each waiting for the JIT when it is
 /// first called. The profiles live in the <c>startup</c> folder of the compiled-script cache, one per command and
 /// build, the newest <see cref="Kept"/> kept (pruned when a run adds one). Off when the cache is (<c>GRCIS_NO_CACHE=1</c>, <c>--no-cache</c>, no
-/// cache folder) and for <c>studio</c> and <c>init</c>. A scene script's run has two, one until it compiles the script
+/// cache folder) and for <c>init</c>; <c>studio</c> has one for its supervisor and one for the studio process
+/// (<see cref="StudioProfile"/>). A scene script's run has two, one until it compiles the script
 /// or a module and one from then on (<see cref="CompileHook"/>): a run that finds its script compiled in the cache must
 /// not replay the compiler.
 /// A profile that is missing, another build's or unreadable only costs its speed-up; a folder another user could write
@@ -38,7 +39,18 @@ static class StartupProfile
       Begin(args[0]);
     else if (RunsScript(args))
       Begin(args[0] + ScriptSuffix);
+    else if (StudioProfile(args) is string studio)
+      Begin(studio);
   }
+
+  /// <summary>
+  /// The profile of a <c>studio</c> run: <c>studio</c> for the supervisor the user starts, <c>studio-server</c> for the
+  /// studio process it runs (ASP.NET Core, the editor's language services and the compiler, always loaded there, so
+  /// scripts change nothing). Null for other commands.
+  /// </summary>
+  internal static string? StudioProfile(string[] args) =>
+    args.Length == 0 || args[0] != "studio" ? null
+    : Array.IndexOf(args, GrCis.Studio.StudioSupervisor.PublicPortOption) >= 0 ? "studio-server" : "studio";
 
   /// <summary>
   /// What <see cref="CliEnvironment.BeforeCompile"/> does in a real process that runs a scene script: its first compilation
@@ -60,6 +72,12 @@ static class StartupProfile
         Begin(name);
     };
   }
+
+  /// <summary>
+  /// Stops the recording in progress and writes its profile now (nothing when none is recording): for a process that
+  /// will not end on its own, as the studio process, which its supervisor ends by killing it.
+  /// </summary>
+  public static void Finish() => ProfileOptimization.StartProfile(null);
 
   /// <summary>The profile name's suffix for a run that compiles a scene script or module.</summary>
   internal const string CompileSuffix = "-compile";

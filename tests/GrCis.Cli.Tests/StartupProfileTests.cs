@@ -41,6 +41,17 @@ public class StartupProfileTests
     Assert.Equal(expected, StartupProfile.CompileHook(args) != null);
   }
 
+  [Theory]
+  [InlineData("studio", "studio")]
+  [InlineData("studio", "studio", "scripts", "--port", "8800")]
+  [InlineData("studio-server", "studio", "scripts", "--host", "127.0.0.1", "--no-open", "--public-port", "8800")]
+  [InlineData(null, "render", "fiveballs")]
+  [InlineData(null)]
+  public void The_studio_s_supervisor_and_its_studio_process_have_profiles_of_their_own(string? expected, params string[] args)
+  {
+    Assert.Equal(expected, StartupProfile.StudioProfile(args));
+  }
+
   [Fact]
   public void Profile_is_named_by_the_command_and_the_build()
   {

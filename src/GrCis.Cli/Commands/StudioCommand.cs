@@ -193,6 +193,8 @@ public sealed class StudioCommand
       }
       env.Out.WriteLine(server.Url);
       env.Out.Flush();
+      // The start is recorded: its supervisor ends this process by killing it, which would write no profile.
+      StartupProfile.Finish();
       server.WaitAsync(env.Cancel).GetAwaiter().GetResult();
     }
     finally
