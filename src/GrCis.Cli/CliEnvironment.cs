@@ -53,8 +53,8 @@ public sealed record CliEnvironment
 
   /// <summary>
   /// Called before a scene script or module is compiled (a miss of both caches): <c>Main</c> starts the compiler's
-  /// multicore JIT profile there (<see cref="StartupProfile.StartCompiling"/>); null in tests that run grcis in their
-  /// own process, and with <c>--no-cache</c>.
+  /// multicore JIT profile there (<see cref="StartupProfile.CompileHook"/>); null when grcis runs inside a test's
+  /// process. Not used with <c>--no-cache</c>.
   /// </summary>
   public Action? BeforeCompile { get; init; }
 

@@ -12,11 +12,11 @@ namespace GrCis.Cli;
 /// it compiled into a profile; the next run of that command compiles them on a second core while the first one
 /// parses the command line, builds the scene and starts the render, instead of each waiting for the JIT when it is
 /// first called. The profiles live in the <c>startup</c> folder of the compiled-script cache, one per command and
-/// build, the newest <see cref="Kept"/> kept (pruned when a run adds one). Off when the cache is (<c>GRCIS_NO_CACHE=1</c>, <c>--no-cache</c>, no
-/// cache folder) and for <c>init</c>; <c>studio</c> has one for its supervisor and one for the studio process
-/// (<see cref="StudioProfile"/>). A scene script's run has two, one until it compiles the script
-/// or a module and one from then on (<see cref="CompileHook"/>): a run that finds its script compiled in the cache must
-/// not replay the compiler.
+/// build, the newest <see cref="Kept"/> kept (pruned when a run adds one). Off when the cache is
+/// (<c>GRCIS_NO_CACHE=1</c>, <c>--no-cache</c>, no cache folder) and for <c>init</c>; <c>studio</c> has one for its
+/// supervisor and one for the studio process (<see cref="StudioProfile"/>). A scene script's run has two, one until it
+/// compiles the script or a module and one from then on (<see cref="CompileHook"/>): a run that finds its script
+/// compiled in the cache must not replay the compiler.
 /// A profile that is missing, another build's or unreadable only costs its speed-up; a folder another user could write
 /// (as the cache's trust rule says) is not used.
 /// </summary>
