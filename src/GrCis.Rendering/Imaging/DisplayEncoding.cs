@@ -64,15 +64,21 @@ public readonly record struct DisplayEncoding
 
   /// <summary>Encodes <paramref name="source"/> value by value into <paramref name="destination"/> (same length).</summary>
   /// <remarks>
-  /// Renders repeat values (a background, flat colours), and each encoding is a power: a small direct-mapped memo of
-  /// this call keeps the byte of the last value seen in each slot, so a repeated value costs a look-up. The bytes are
-  /// those of <see cref="Encode(float)"/>, value by value.
+  /// The bytes are those of <see cref="Encode(float)"/>, value by value; each encoding is a power, so this avoids most of
+  /// them. An image's worth of values goes through a <see cref="StepTable"/> of the encoding; fewer values through a
+  /// small direct-mapped memo of this call, which keeps the byte of the last value seen in each slot (renders repeat
+  /// values: a background, flat colours).
   /// </remarks>
   [SkipLocalsInit]
   public void Encode(ReadOnlySpan<float> source, Span<byte> destination)
   {
     if (destination.Length != source.Length)
       throw new ArgumentException($"Destination has {destination.Length} bytes for {source.Length} values.", nameof(destination));
+    if (source.Length >= StepTable.WorthFrom)
+    {
+      new StepTable(this).Encode(source, destination);
+      return;
+    }
     const int MemoBits = 10;
     Span<uint> keys = stackalloc uint[1 << MemoBits];
     Span<byte> bytes = stackalloc byte[1 << MemoBits];
@@ -91,6 +97,87 @@ public readonly record struct DisplayEncoding
         bytes[slot] = Encode(v);
       }
       destination[i] = bytes[slot];
+    }
+  }
+
+  /// <summary>
+  /// The bytes of an encoding for every float in [0, 1), from the float's top bits. The encoding never decreases as the
+  /// value grows, and a positive float's bits order as its value, so it is a staircase: byte k from the first float whose
+  /// byte is at least k, found for each k by bisection (about 7,700 powers). A bucket of 2^15 consecutive floats (sign,
+  /// exponent and the first 8 mantissa bits alike) holds one byte, or one byte and, from a first float on, the next; the
+  /// table keeps both. A bucket with two steps or more (only a gamma below 1 makes them) is encoded value by value. So
+  /// every byte equals <see cref="DisplayEncoding.Encode(float)"/>'s.
+  /// </summary>
+  sealed class StepTable
+  {
+    /// <summary>The values from which the table's powers cost less than the memo's.</summary>
+    public const int WorthFrom = 1 << 16;
+
+    const int Shift = 15;
+    const uint One = 0x3F800000u;   // the bits of 1f: every float below it is in a bucket
+    const uint Direct = 0;          // a bucket encoded value by value (no true step is at a bucket's first float)
+
+    readonly DisplayEncoding encoding;
+    readonly byte[] low = new byte[One >> Shift];
+    readonly uint[] next = new uint[One >> Shift];   // bits of the first float with byte low + 1; uint.MaxValue: none
+
+    public StepTable(DisplayEncoding encoding)
+    {
+      this.encoding = encoding;
+      // steps[k]: the bits of the first float whose byte is at least k + 1 (at most One, whose byte is 255).
+      Span<uint> steps = stackalloc uint[255];
+      uint from = 0;
+      for (int k = 0; k < steps.Length; k++)
+      {
+        uint lo = from, hi = One;   // Byte(lo) <= k < Byte(hi), unless lo is 0 and its byte already more
+        if (Byte(lo) > k)
+        {
+          steps[k] = lo;
+          continue;
+        }
+        while (hi - lo > 1)
+        {
+          uint mid = lo + (hi - lo) / 2;
+          if (Byte(mid) > k)
+            hi = mid;
+          else
+            lo = mid;
+        }
+        steps[k] = from = hi;
+      }
+      int passed = 0;   // steps at or before the bucket's first float: its first byte
+      for (uint b = 0; b < low.Length; b++)
+      {
+        uint first = b << Shift, end = first + (1u << Shift);
+        while (passed < steps.Length && steps[passed] <= first)
+          passed++;
+        low[b] = (byte)passed;
+        int inside = 0;
+        while (passed + inside < steps.Length && steps[passed + inside] < end)
+          inside++;
+        next[b] = inside switch { 0 => uint.MaxValue, 1 => steps[passed], _ => Direct };
+      }
+    }
+
+    byte Byte(uint bits) => encoding.Encode(BitConverter.UInt32BitsToSingle(bits));
+
+    public void Encode(ReadOnlySpan<float> source, Span<byte> destination)
+    {
+      for (int i = 0; i < source.Length; i++)
+      {
+        uint bits = BitConverter.SingleToUInt32Bits(source[i]);
+        if (bits < One)
+        {
+          uint b = bits >> Shift, step = next[b];
+          if (step != Direct)
+          {
+            destination[i] = (byte)(low[b] + (bits >= step ? 1 : 0));
+            continue;
+          }
+        }
+        // Negative, NaN, 1 or more, or a bucket of several bytes.
+        destination[i] = encoding.Encode(source[i]);
+      }
     }
   }
 

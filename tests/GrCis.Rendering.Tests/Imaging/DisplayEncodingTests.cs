@@ -112,4 +112,52 @@ public class DisplayEncodingTests
   [InlineData(double.PositiveInfinity)]
   public void Explicit_gamma_must_be_positive_and_finite(double gamma) =>
     Assert.Throws<ArgumentOutOfRangeException>(() => new DisplayEncoding(gamma, Quantization.Round));
+
+  [Theory]
+  [InlineData(2.2, Quantization.Truncate)]
+  [InlineData(1.0, Quantization.Truncate)]
+  [InlineData(1.0, Quantization.Round)]
+  [InlineData(2.4, Quantization.Round)]
+  [InlineData(0.45, Quantization.Round)]
+  [InlineData(0.05, Quantization.Truncate)]
+  public void An_image_s_worth_of_values_gets_the_bytes_of_the_value_by_value_encoding(double gamma, Quantization quantization)
+  {
+    // Large enough for the step table: every float next to every step of the encoding (found here by bisection on the
+    // value-by-value rule), whole runs of 2^15 consecutive floats (one table bucket) at random, and random values with
+    // the specials.
+    var e = new DisplayEncoding(gamma, quantization);
+    var values = new System.Collections.Generic.List<float>();
+    for (int k = 1; k <= 255; k++)
+    {
+      uint from = 0, to = 0x3F800000u;   // Encode(from) < k <= Encode(to) = 255
+      if (e.Encode(BitConverter.UInt32BitsToSingle(from)) >= k)
+        continue;
+      while (to - from > 1)
+      {
+        uint mid = from + (to - from) / 2;
+        if (e.Encode(BitConverter.UInt32BitsToSingle(mid)) >= k)
+          to = mid;
+        else
+          from = mid;
+      }
+      for (uint bits = to - 4; bits <= to + 4; bits++)
+        values.Add(BitConverter.UInt32BitsToSingle(bits));
+    }
+    var random = new Random(17);
+    for (int run = 0; run < 12; run++)
+    {
+      uint first = (uint)random.Next(0x3F800000 >> 15) << 15;
+      for (uint bits = first; bits < first + (1u << 15); bits++)
+        values.Add(BitConverter.UInt32BitsToSingle(bits));
+    }
+    values.AddRange([0f, -0f, 1f, float.Epsilon, BitConverter.UInt32BitsToSingle(0x3F7FFFFFu), float.NaN, -1f, 2f]);
+    while (values.Count < 1 << 19)
+      values.Add(BitConverter.UInt32BitsToSingle((uint)random.Next(0x3F800000)));
+
+    byte[] bytes = new byte[values.Count];
+    e.Encode(values.ToArray(), bytes);
+    for (int i = 0; i < bytes.Length; i++)
+      if (bytes[i] != e.Encode(values[i]))
+        Assert.Fail($"value {values[i]:R} (bits 0x{BitConverter.SingleToUInt32Bits(values[i]):X8}): {bytes[i]}, not {e.Encode(values[i])}");
+  }
 }
