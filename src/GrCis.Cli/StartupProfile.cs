@@ -85,9 +85,8 @@ static class StartupProfile
   /// <summary>The profile name's suffix for a scene script's run, until it compiles.</summary>
   internal const string ScriptSuffix = "-script";
 
-  /// <summary>A command with profiles running a scene script (an argument ending in <c>.cs</c>), the cache not bypassed.</summary>
-  static bool RunsScript(string[] args) =>
-    args.Length > 0 && Array.IndexOf(commands, args[0]) >= 0 && Array.IndexOf(args, "--no-cache") < 0 && !Applies(args);
+  /// <summary>A command with profiles running a scene script, the cache not bypassed.</summary>
+  static bool RunsScript(string[] args) => Profiled(args) && HasScript(args);
 
   /// <summary>Records the profile <paramref name="name"/> of this build, replaying the last one, when the cache is on.</summary>
   static void Begin(string name)
@@ -126,14 +125,19 @@ static class StartupProfile
   }
 
   /// <summary>Whether a run with these arguments gets its command's profile: one of <see cref="commands"/>, no script, no <c>--no-cache</c>.</summary>
-  internal static bool Applies(string[] args)
+  internal static bool Applies(string[] args) => Profiled(args) && !HasScript(args);
+
+  /// <summary>One of <see cref="commands"/>, without <c>--no-cache</c>.</summary>
+  static bool Profiled(string[] args) =>
+    args.Length > 0 && Array.IndexOf(commands, args[0]) >= 0 && Array.IndexOf(args, "--no-cache") < 0;
+
+  /// <summary>An argument ending in <c>.cs</c>: the scene is a script.</summary>
+  static bool HasScript(string[] args)
   {
-    if (args.Length == 0 || Array.IndexOf(commands, args[0]) < 0 || Array.IndexOf(args, "--no-cache") >= 0)
-      return false;
     foreach (string a in args)
       if (a.EndsWith(".cs", StringComparison.OrdinalIgnoreCase))
-        return false;
-    return true;
+        return true;
+    return false;
   }
 
   /// <summary>The profile's file name: the command and the build.</summary>
