@@ -125,6 +125,7 @@ public class ReadmeTests
           Assert.True(File.Exists(o) || Directory.Exists(o), $"README.md:{block.Line}: {o} was not written\n{output}");
       }
       InstalledToolIsCompiledAheadOfTime(home);
+      InstalledToolStartsWithItsStaticProfile(home, work);
     }
     finally
     {
@@ -157,6 +158,25 @@ public class ReadmeTests
       using var pe = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(path));
       Assert.Equal(ToolPackageCheck.ReadyToRunMachine(rid), (ushort)pe.PEHeaders.CoffHeader.Machine);
     }
+  }
+
+  /// <summary>
+  /// The installed tool's hot methods are optimized with the counts of its training renders (the static profile
+  /// embedded in its ReadyToRun images) and are never compiled with instrumentation: the runtime's own account of each
+  /// compilation (<c>JitDisasmSummary</c>) of a render says so.
+  /// </summary>
+  static void InstalledToolStartsWithItsStaticProfile(string home, string work)
+  {
+    string tool = Directory.GetFiles(Path.Combine(home, ".dotnet", "tools", ".store"), "grcis.dll", SearchOption.AllDirectories).Single();
+    string runtimeConfig = File.ReadAllText(Path.ChangeExtension(tool, ".runtimeconfig.json"));
+    Assert.Contains("\"System.Runtime.TieredPGO\": false", runtimeConfig, StringComparison.Ordinal);
+    string log = Path.Combine(work, "jit-summary.txt");
+    var env = new Dictionary<string, string?> { ["DOTNET_JitDisasmSummary"] = "1", ["DOTNET_JitStdOutFile"] = log };
+    (int code, string output) = PackagesTests.Exec(work, env, PackagesTests.Dotnet, tool, "render", "fiveballs", "-s", "640x480", "--spp", "4", "-o", "static-profile.png");
+    Assert.True(code == 0, output);
+    string[] library = File.ReadAllLines(log).Where(l => l.Contains(" Rendering.", StringComparison.Ordinal)).ToArray();
+    Assert.Contains(library, l => l.Contains("Tier1 with Static PGO", StringComparison.Ordinal));
+    Assert.DoesNotContain(library, l => l.Contains("Instrumented", StringComparison.Ordinal));
   }
 
   [Fact]

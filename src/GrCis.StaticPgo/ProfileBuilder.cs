@@ -1,0 +1,66 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Reflection.Metadata;
+
+namespace GrCis.StaticPgo;
+
+/// <summary>
+/// Joins text dumps of training runs into one profile of the given assemblies: the same method's counts add up across
+/// runs (<see cref="ProfiledMethod.Add"/>), each is found in its assembly by name, IL size and parameter count, and
+/// methods of other assemblies (the framework's, which has its own profile) are left out.
+/// </summary>
+internal sealed class ProfileBuilder
+{
+  readonly Dictionary<string, ProfiledMethod> methods = new(StringComparer.Ordinal);
+
+  public void AddDump(IEnumerable<ProfiledMethod> dump)
+  {
+    foreach (ProfiledMethod method in dump)
+      if (methods.TryGetValue(method.Key, out ProfiledMethod? seen)) seen.Add(method);
+      else methods[method.Key] = method;
+  }
+
+  public int DumpedMethods => methods.Count;
+
+  /// <summary>Writes the profile of <paramref name="assemblyPaths"/>' methods; returns how many it holds.</summary>
+  public int Write(IEnumerable<string> assemblyPaths, Stream output, string name, TextWriter log)
+  {
+    var writer = new MibcWriter();
+    var opened = new List<ProfiledAssembly>();
+    try
+    {
+      var byName = new Dictionary<string, List<(ProfiledAssembly Assembly, MethodDefinitionHandle Handle, int IlSize)>>(StringComparer.Ordinal);
+      foreach (string path in assemblyPaths)
+      {
+        var assembly = new ProfiledAssembly(path);
+        opened.Add(assembly);
+        foreach ((string methodName, MethodDefinitionHandle handle, int ilSize) in assembly.Methods())
+        {
+          if (!byName.TryGetValue(methodName, out var list)) byName[methodName] = list = [];
+          list.Add((assembly, handle, ilSize));
+        }
+      }
+      foreach (ProfiledMethod method in methods.Values.OrderBy(m => m.Key, StringComparer.Ordinal))
+      {
+        if (!byName.TryGetValue(method.Name, out var candidates)) continue;
+        var match = candidates.Where(c => c.IlSize == method.IlSize).ToList();
+        if (match.Count > 1) match = match.Where(c => c.Assembly.ParameterCount(c.Handle) == method.ParameterCount).ToList();
+        if (match.Count != 1)
+        {
+          log.WriteLine($"left out {method.Name} {method.Signature}: {(match.Count == 0 ? "no method with its IL size" : "overloads of the same IL size")}");
+          continue;
+        }
+        try { writer.Add(match[0].Assembly, match[0].Handle, method); }
+        catch (NotSupportedException e) { log.WriteLine($"left out {method.Name}: its signature has {e.Message}"); }
+      }
+      writer.Write(output, name);
+      return writer.MethodCount;
+    }
+    finally
+    {
+      foreach (ProfiledAssembly assembly in opened) assembly.Dispose();
+    }
+  }
+}

@@ -1,0 +1,65 @@
+using System;
+using System.CommandLine;
+using System.IO;
+using System.Linq;
+
+namespace GrCis.StaticPgo;
+
+/// <summary>
+/// <c>train</c>: runs the training commands with a JIT-compiled grcis and writes the static profile of the given
+/// assemblies; <c>convert</c>: writes it from text dumps made elsewhere.
+/// </summary>
+internal static class Program
+{
+  static int Main(string[] args)
+  {
+    var output = new Option<FileInfo>("--output", "-o") { Description = "The profile to write (.mibc)", Required = true };
+    var assemblies = new Option<FileInfo[]>("--assembly", "-a")
+    {
+      Description = "An assembly whose methods the profile describes (repeatable)", Required = true,
+    };
+
+    var dumps = new Argument<FileInfo[]>("dumps") { Description = "Text dumps (DOTNET_WritePGOData)", Arity = ArgumentArity.OneOrMore };
+    var convert = new Command("convert", "Write the profile from text dumps") { output, assemblies, dumps };
+    convert.SetAction(parse => Write(parse.GetValue(dumps)!.Select(f => f.FullName).ToArray(), parse.GetValue(assemblies)!, parse.GetValue(output)!));
+
+    var runs = new Option<FileInfo>("--runs") { Description = "The training commands, one a line", Required = true };
+    var grcis = new Option<FileInfo>("--grcis") { Description = "The JIT-compiled grcis.dll to train", Required = true };
+    var dotnet = new Option<string>("--dotnet") { Description = "The dotnet host", DefaultValueFactory = _ => "dotnet" };
+    var work = new Option<DirectoryInfo>("--work") { Description = "A folder for the dumps and the runs' files", Required = true };
+    var root = new Option<DirectoryInfo>("--root") { Description = "The folder the runs start in (paths in the commands)", Required = true };
+    var train = new Command("train", "Run the training and write the profile") { output, assemblies, runs, grcis, dotnet, work, root };
+    train.SetAction(parse =>
+    {
+      var dumped = TrainingRuns.Run(parse.GetValue(dotnet)!, parse.GetValue(grcis)!.FullName, TrainingRuns.Read(parse.GetValue(runs)!.FullName),
+        parse.GetValue(work)!.FullName, parse.GetValue(root)!.FullName, Console.Out);
+      return Write(dumped.ToArray(), parse.GetValue(assemblies)!, parse.GetValue(output)!);
+    });
+
+    var command = new RootCommand("grcis's static profile for its ReadyToRun compilation") { train, convert };
+    try
+    {
+      return command.Parse(args).Invoke(new InvocationConfiguration { EnableDefaultExceptionHandler = false });
+    }
+    catch (Exception e) when (e is InvalidOperationException or FormatException or IOException or BadImageFormatException)
+    {
+      Console.Error.WriteLine("static profile: " + e.Message);
+      return 1;
+    }
+  }
+
+  static int Write(string[] dumps, FileInfo[] assemblies, FileInfo output)
+  {
+    var builder = new ProfileBuilder();
+    foreach (string dump in dumps) builder.AddDump(PgoTextDump.Read(dump));
+    // Written beside and moved, so an interrupted run leaves no half profile for the compiler.
+    string partial = output.FullName + ".partial";
+    Directory.CreateDirectory(output.DirectoryName!);
+    int count;
+    using (var file = File.Create(partial))
+      count = builder.Write(assemblies.Select(a => a.FullName), file, Path.GetFileNameWithoutExtension(output.Name), TextWriter.Null);
+    File.Move(partial, output.FullName, overwrite: true);
+    Console.WriteLine($"static profile: {count} of {builder.DumpedMethods} profiled methods, {output.FullName}");
+    return 0;
+  }
+}
