@@ -28,11 +28,19 @@ internal static class Program
     var dotnet = new Option<string>("--dotnet") { Description = "The dotnet host", DefaultValueFactory = _ => "dotnet" };
     var work = new Option<DirectoryInfo>("--work") { Description = "A folder for the dumps and the runs' files", Required = true };
     var root = new Option<DirectoryInfo>("--root") { Description = "The folder the runs start in (paths in the commands)", Required = true };
-    var train = new Command("train", "Run the training and write the profile") { output, assemblies, runs, grcis, dotnet, work, root };
+    var crossgen = new Option<FileInfo?>("--crossgen")
+    {
+      Description = "The ReadyToRun compiler: the training runs a copy of grcis with the assemblies compiled ahead of time",
+    };
+    var train = new Command("train", "Run the training and write the profile") { output, assemblies, runs, grcis, dotnet, work, root, crossgen };
     train.SetAction(parse =>
     {
-      var dumped = TrainingRuns.Run(parse.GetValue(dotnet)!, parse.GetValue(grcis)!.FullName, TrainingRuns.Read(parse.GetValue(runs)!.FullName),
-        parse.GetValue(work)!.FullName, parse.GetValue(root)!.FullName, Console.Out);
+      string trained = parse.GetValue(grcis)!.FullName, folder = parse.GetValue(work)!.FullName;
+      if (parse.GetValue(crossgen) is { } compiler)
+        trained = TrainingBuild.Prepare(compiler.FullName, Path.GetDirectoryName(trained)!,
+          parse.GetValue(assemblies)!.Select(a => a.FullName).ToArray(), Path.Combine(folder, "app"), Console.Out);
+      var dumped = TrainingRuns.Run(parse.GetValue(dotnet)!, trained, TrainingRuns.Read(parse.GetValue(runs)!.FullName),
+        folder, parse.GetValue(root)!.FullName, Console.Out);
       return Write(dumped.ToArray(), parse.GetValue(assemblies)!, parse.GetValue(output)!);
     });
 

@@ -125,7 +125,6 @@ public class ReadmeTests
           Assert.True(File.Exists(o) || Directory.Exists(o), $"README.md:{block.Line}: {o} was not written\n{output}");
       }
       InstalledToolIsCompiledAheadOfTime(home);
-      InstalledToolStartsWithItsStaticProfile(home, work);
     }
     finally
     {
@@ -160,25 +159,6 @@ public class ReadmeTests
     }
   }
 
-  /// <summary>
-  /// The installed tool's hot methods are optimized with the counts of its training renders (the static profile
-  /// embedded in its ReadyToRun images) and are never compiled with instrumentation: the runtime's own account of each
-  /// compilation (<c>JitDisasmSummary</c>) of a render says so.
-  /// </summary>
-  static void InstalledToolStartsWithItsStaticProfile(string home, string work)
-  {
-    string tool = Directory.GetFiles(Path.Combine(home, ".dotnet", "tools", ".store"), "grcis.dll", SearchOption.AllDirectories).Single();
-    string runtimeConfig = File.ReadAllText(Path.ChangeExtension(tool, ".runtimeconfig.json"));
-    Assert.Contains("\"System.Runtime.TieredPGO\": false", runtimeConfig, StringComparison.Ordinal);
-    string log = Path.Combine(work, "jit-summary.txt");
-    var env = new Dictionary<string, string?> { ["DOTNET_JitDisasmSummary"] = "1", ["DOTNET_JitStdOutFile"] = log };
-    (int code, string output) = PackagesTests.Exec(work, env, PackagesTests.Dotnet, tool, "render", "fiveballs", "-s", "640x480", "--spp", "4", "-o", "static-profile.png");
-    Assert.True(code == 0, output);
-    string[] library = File.ReadAllLines(log).Where(l => l.Contains(" Rendering.", StringComparison.Ordinal)).ToArray();
-    Assert.Contains(library, l => l.Contains("Tier1 with Static PGO", StringComparison.Ordinal));
-    Assert.DoesNotContain(library, l => l.Contains("Instrumented", StringComparison.Ordinal));
-  }
-
   [Fact]
   public void Precompiled_assemblies_are_told_from_plain_ones()
   {
@@ -193,7 +173,7 @@ public class ReadmeTests
     return reader.PEHeaders.CorHeader is { ManagedNativeHeaderDirectory.Size: > 0 };
   }
 
-  static string GlobalPackagesFolder()
+  internal static string GlobalPackagesFolder()
   {
     (int code, string output) = PackagesTests.Exec(Path.GetTempPath(), null, PackagesTests.Dotnet, "nuget", "locals", "global-packages", "--list");
     Assert.True(code == 0, output);

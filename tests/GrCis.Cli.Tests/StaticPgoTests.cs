@@ -155,6 +155,45 @@ public class StaticPgoTests
     Assert.Equal(written, read.Select(r => (r.Type, r.Name, r.Signature)).Distinct().Count());
   }
 
+  /// <summary>
+  /// The whole way on real counts: a training render of the built grcis writes the runtime's text profile, the writer
+  /// turns it into a profile of the library, and the ReadyToRun compiler of this machine reads it and embeds it
+  /// (its map lists the instrumentation data table the runtime reads, which a compilation without it lacks).
+  /// </summary>
+  [Fact]
+  public void The_ReadyToRun_compiler_embeds_a_profile_written_from_a_training_render()
+  {
+    string rid = System.Runtime.InteropServices.RuntimeInformation.RuntimeIdentifier;
+    string packs = Path.Combine(ReadmeTests.GlobalPackagesFolder(), $"microsoft.netcore.app.crossgen2.{rid}");
+    string? crossgen = Directory.Exists(packs)
+      ? Directory.GetFiles(packs, OperatingSystem.IsWindows() ? "crossgen2.exe" : "crossgen2", SearchOption.AllDirectories).OrderDescending().FirstOrDefault()
+      : null;
+    Assert.True(crossgen != null, $"no ReadyToRun compiler in {packs} (the restore of src/GrCis.Cli fetches it)");
+
+    using var tmp = new TempDirectory();
+    File.WriteAllText(tmp.File("runs.txt"), "# one render\nrender fiveballs --size 160x120 --spp 4 -o {work}/f.png\n");
+    List<string> dumps = TrainingRuns.Run(GrcisProcess.Dotnet, GrcisProcess.Dll, TrainingRuns.Read(tmp.File("runs.txt")),
+      tmp.File("work"), tmp.Path, TextWriter.Null);
+    Assert.True(File.Exists(tmp.File("work/f.png")));
+    var builder = new ProfileBuilder();
+    builder.AddDump(PgoTextDump.Read(Assert.Single(dumps)));
+    string library = typeof(Rendering.Sphere).Assembly.Location;
+    using (FileStream file = File.Create(tmp.File("grcis.mibc")))
+      Assert.True(builder.Write([library], file, "grcis", TextWriter.Null) > 20);
+
+    string framework = Path.GetDirectoryName(typeof(object).Assembly.Location)!;
+    string Compile(string name, params string[] extra)
+    {
+      (int code, string output) = Shell.Run(tmp.Path, null, TimeSpan.FromMinutes(3), crossgen,
+        [library, "-o", tmp.File(name + ".dll"), "-r:" + Path.Combine(framework, "*.dll"),
+         "-r:" + Path.Combine(Path.GetDirectoryName(library)!, "*.dll"), "-O", "--map", .. extra]);
+      Assert.True(code == 0, output);
+      return File.ReadAllText(tmp.File(name + ".map"));
+    }
+    Assert.Contains("__ReadyToRunInstrumentationDataTable", Compile("with", "--mibc", tmp.File("grcis.mibc"), "--embed-pgo-data"), StringComparison.Ordinal);
+    Assert.DoesNotContain("__ReadyToRunInstrumentationDataTable", Compile("without"), StringComparison.Ordinal);
+  }
+
   /// <summary>A method's records: an edge count, a four-byte count above int.MaxValue, an eight-byte one, a histogram.</summary>
   static List<SchemaEntry> Records(int seed) =>
   [
