@@ -6,7 +6,7 @@ using System.Linq;
 namespace GrCis.StaticPgo;
 
 /// <summary>
-/// <c>train</c>: runs the training commands with a JIT-compiled grcis and writes the static profile of the given
+/// <c>train</c>: runs the training commands with grcis (a copy precompiled for this machine, given the ReadyToRun compiler) and writes the static profile of the given
 /// assemblies; <c>convert</c>: writes it from text dumps made elsewhere.
 /// </summary>
 internal static class Program
@@ -24,7 +24,7 @@ internal static class Program
     convert.SetAction(parse => Write(parse.GetValue(dumps)!.Select(f => f.FullName).ToArray(), parse.GetValue(assemblies)!, parse.GetValue(output)!));
 
     var runs = new Option<FileInfo>("--runs") { Description = "The training commands, one a line", Required = true };
-    var grcis = new Option<FileInfo>("--grcis") { Description = "The JIT-compiled grcis.dll to train", Required = true };
+    var grcis = new Option<FileInfo>("--grcis") { Description = "The built grcis.dll to train (copied and precompiled with --crossgen)", Required = true };
     var dotnet = new Option<string>("--dotnet") { Description = "The dotnet host", DefaultValueFactory = _ => "dotnet" };
     var work = new Option<DirectoryInfo>("--work") { Description = "A folder for the dumps and the runs' files", Required = true };
     var root = new Option<DirectoryInfo>("--root") { Description = "The folder the runs start in (paths in the commands)", Required = true };

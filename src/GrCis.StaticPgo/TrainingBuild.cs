@@ -34,7 +34,7 @@ internal static class TrainingBuild
     var clock = Stopwatch.StartNew();
     Parallel.ForEach(assemblies, new ParallelOptions { MaxDegreeOfParallelism = Environment.ProcessorCount }, assembly =>
     {
-      var start = new ProcessStartInfo(crossgen) { RedirectStandardOutput = true, RedirectStandardError = true };
+      var start = new ProcessStartInfo(crossgen);
       start.ArgumentList.Add(assembly);
       start.ArgumentList.Add("-o");
       start.ArgumentList.Add(Path.Combine(target, Path.GetFileName(assembly)));
@@ -42,12 +42,7 @@ internal static class TrainingBuild
       start.ArgumentList.Add("--targetos:" + os);
       start.ArgumentList.Add("--targetarch:" + arch);
       start.ArgumentList.Add("-O");
-      using Process process = Process.Start(start) ?? throw new InvalidOperationException($"could not start {crossgen}");
-      Task<string> stderr = process.StandardError.ReadToEndAsync();
-      string stdout = process.StandardOutput.ReadToEnd();
-      process.WaitForExit();
-      if (process.ExitCode != 0)
-        throw new InvalidOperationException($"the ReadyToRun compiler failed on {assembly} (exit {process.ExitCode}):\n{stdout}{stderr.Result}");
+      ChildProcess.Run(start, $"the ReadyToRun compiler on {assembly}");
     });
     log.WriteLine($"training build: {assemblies.Count} assemblies compiled ahead of time ({clock.Elapsed.TotalSeconds:0.0} s)");
     return Path.Combine(target, "grcis.dll");

@@ -6,7 +6,7 @@ using System.IO;
 namespace GrCis.StaticPgo;
 
 /// <summary>
-/// The training: grcis commands (one a line in a text file; '#' starts a comment) run by the JIT-compiled grcis with
+/// The training: grcis commands (one a line in a text file; '#' starts a comment) run by the given grcis with
 /// dynamic profiling on and the runtime's profile written as text at exit, one dump per run. "{work}" in a line is the
 /// work folder (for the runs' output files); the runs' script cache and start-up profiles stay in it too.
 /// </summary>
@@ -35,26 +35,16 @@ internal static class TrainingRuns
     {
       string dump = Path.Combine(work, $"run-{i + 1}.txt");
       File.Delete(dump);
-      var start = new ProcessStartInfo(dotnet)
-      {
-        WorkingDirectory = repositoryRoot,
-        RedirectStandardOutput = true,
-        RedirectStandardError = true,
-      };
+      var start = new ProcessStartInfo(dotnet) { WorkingDirectory = repositoryRoot };
       start.ArgumentList.Add(grcis);
       foreach (string word in runs[i]) start.ArgumentList.Add(word.Replace("{work}", work, StringComparison.Ordinal));
       start.Environment["DOTNET_TieredPGO"] = "1";
       start.Environment["DOTNET_WritePGOData"] = "1";
       start.Environment["DOTNET_PGODataPath"] = dump;
       start.Environment["GRCIS_CACHE_DIR"] = Path.Combine(work, "cache");
-      var clock = Stopwatch.StartNew();
-      using Process process = Process.Start(start) ?? throw new InvalidOperationException($"could not start {dotnet}");
-      var stderr = process.StandardError.ReadToEndAsync();
-      string stdout = process.StandardOutput.ReadToEnd();
-      process.WaitForExit();
       string command = "grcis " + string.Join(' ', runs[i]);
-      if (process.ExitCode != 0)
-        throw new InvalidOperationException($"training run '{command}' failed (exit {process.ExitCode}):\n{stdout}{stderr.Result}");
+      var clock = Stopwatch.StartNew();
+      ChildProcess.Run(start, $"training run '{command}'");
       if (!File.Exists(dump))
         throw new InvalidOperationException($"training run '{command}' wrote no profile: this runtime does not write DOTNET_PGODataPath");
       log.WriteLine($"trained: {command} ({clock.Elapsed.TotalSeconds:0.0} s)");
