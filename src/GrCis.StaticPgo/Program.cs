@@ -54,6 +54,12 @@ internal static class Program
       Console.Error.WriteLine("static profile: " + e.Message);
       return 1;
     }
+    catch (AggregateException e) when (e.InnerExceptions.All(inner => inner is InvalidOperationException))
+    {
+      // The training build's compilations run in parallel: each failure's own message.
+      foreach (Exception inner in e.InnerExceptions) Console.Error.WriteLine("static profile: " + inner.Message);
+      return 1;
+    }
   }
 
   static int Write(string[] dumps, FileInfo[] assemblies, FileInfo output)
