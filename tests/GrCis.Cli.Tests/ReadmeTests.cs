@@ -140,7 +140,7 @@ public class ReadmeTests
 
   /// <summary>
   /// What README's <c>dotnet tool install</c> gave is this machine's platform package of the tool (not the portable
-  /// fallback), and its code, the library's and Roslyn's, is compiled ahead of time (ReadyToRun).
+  /// fallback), and its code, the library's and Roslyn's, is compiled ahead of time (ReadyToRun) with grcis's options.
   /// </summary>
   static void InstalledToolIsCompiledAheadOfTime(string home)
   {
@@ -156,6 +156,8 @@ public class ReadmeTests
       // Compiled for this system and processor (the PE machine field a ReadyToRun image carries).
       using var pe = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(path));
       Assert.Equal(ToolPackageCheck.ReadyToRunMachine(rid), (ushort)pe.PEHeaders.CoffHeader.Machine);
+      // With grcis's options: inlining across assemblies, other assemblies' generic code in the image.
+      ToolPackageCheck.CompiledAcrossAssemblies(pe, $"{dll} of the installed tool");
     }
   }
 

@@ -135,6 +135,23 @@ public class ReleasePackagesTests
   }
 
   [Fact]
+  public void ReadyToRun_options_are_told_by_the_image()
+  {
+    // The runtime's own libraries are per-assembly images: no other assembly's code inlined or held.
+    foreach (Type t in new[] { typeof(object), typeof(System.Collections.Generic.LinkedList<int>), typeof(System.Text.Json.JsonDocument) })
+    {
+      using var pe = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(t.Assembly.Location));
+      var traits = ToolPackageCheck.ReadyToRunTraits(pe);
+      Assert.NotNull(traits);
+      Assert.False(traits.Value.InlinesOtherAssemblies, t.Assembly.GetName().Name);
+      Assert.Equal(0u, traits.Value.Flags & ToolPackageCheck.HoldsOtherAssemblysGenerics);
+      Assert.Throws<Xunit.Sdk.TrueException>(() => ToolPackageCheck.CompiledAcrossAssemblies(pe, t.Assembly.GetName().Name!));
+    }
+    using var plain = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(typeof(ReleasePackagesTests).Assembly.Location));
+    Assert.Null(ToolPackageCheck.ReadyToRunTraits(plain));
+  }
+
+  [Fact]
   public void Launchers_are_told_by_their_headers()
   {
     // This process's launcher (dotnet or the test host's apphost) is for this platform.

@@ -71,6 +71,9 @@ internal static class ToolPackageCheck
       Assert.True(pe.PEHeaders.CorHeader is { ManagedNativeHeaderDirectory.Size: > 0 }, $"{dll} in {Path.GetFileName(nupkg)} is not ReadyToRun");
       Assert.True(ReadyToRunMachine(rid) == (ushort)pe.PEHeaders.CoffHeader.Machine,
                   $"{dll} in {Path.GetFileName(nupkg)} is compiled for machine 0x{(ushort)pe.PEHeaders.CoffHeader.Machine:X4}, not {rid}'s 0x{ReadyToRunMachine(rid):X4}");
+      // The library inlines its vector operations (another assembly's) in every platform's images.
+      if (dll == "GrCis.Rendering.dll")
+        CompiledAcrossAssemblies(pe, $"{dll} in {Path.GetFileName(nupkg)}");
     }
   }
 
@@ -93,6 +96,74 @@ internal static class ToolPackageCheck
     Assert.Equal(10, config["runtimeOptions"]?["configProperties"]?["System.Runtime.TieredCompilation.CallCountingDelayMs"]?.GetValue<int>());
     using var pe = new PEReader(new MemoryStream(Read(zip, Folder + tool + ".dll")));
     Assert.False(pe.PEHeaders.CorHeader is { ManagedNativeHeaderDirectory.Size: > 0 }, "the portable package's tool is ReadyToRun");
+  }
+
+  /// <summary>
+  /// The header flag (READYTORUN_FLAG_UNRELATED_R2R_CODE) of an image that holds generic code whose definitions live in
+  /// other assemblies (crossgen2's <c>--non-local-generics-module</c>).
+  /// </summary>
+  internal const uint HoldsOtherAssemblysGenerics = 0x80;
+
+  /// <summary>
+  /// The fixup kind (READYTORUN_FIXUP_Check_IL_Body) the runtime resolves for each method of another assembly inlined
+  /// into precompiled code (crossgen2's <c>--opt-cross-module</c>): the inlinee's IL is compared with the one loaded.
+  /// </summary>
+  const byte CheckInlineeBody = 0x35;
+
+  /// <summary>
+  /// What a ReadyToRun image was compiled with, read from its header: the header's flags, and whether its code
+  /// inlines methods of other assemblies (a fixup that checks an inlinee's IL). Null for plain code.
+  /// </summary>
+  internal static (uint Flags, bool InlinesOtherAssemblies)? ReadyToRunTraits(PEReader pe)
+  {
+    DirectoryEntry native = pe.PEHeaders.CorHeader?.ManagedNativeHeaderDirectory ?? default;
+    if (native.Size == 0)
+      return null;
+    byte[] image = pe.GetEntireImage().GetContent().ToArray();
+    int Offset(int rva)
+    {
+      foreach (SectionHeader s in pe.PEHeaders.SectionHeaders)
+        if (rva >= s.VirtualAddress && rva < s.VirtualAddress + Math.Max(s.VirtualSize, s.SizeOfRawData))
+          return rva - s.VirtualAddress + s.PointerToRawData;
+      throw new Xunit.Sdk.XunitException($"address 0x{rva:X} is in no section");
+    }
+    // READYTORUN_HEADER: signature "RTR", version, flags, section count, then (type, address, size) per section.
+    int header = Offset(native.RelativeVirtualAddress);
+    Assert.Equal(0x00525452, BitConverter.ToInt32(image, header));
+    uint flags = BitConverter.ToUInt32(image, header + 8);
+    int sections = BitConverter.ToInt32(image, header + 12);
+    bool inlines = false;
+    for (int i = 0; i < sections && !inlines; i++)
+    {
+      int entry = header + 16 + 12 * i;
+      const int ImportSections = 101;
+      if (BitConverter.ToInt32(image, entry) != ImportSections)
+        continue;
+      int start = Offset(BitConverter.ToInt32(image, entry + 4)), end = start + BitConverter.ToInt32(image, entry + 8);
+      // Each import section (20 bytes): its cells (address, size), flags, type, cell size, and the address of an array
+      // of signature addresses, one per cell; a signature's first byte is its fixup kind (0x80: another module's).
+      for (int s = start; s < end && !inlines; s += 20)
+      {
+        int size = BitConverter.ToInt32(image, s + 4), cell = image[s + 11], signatures = BitConverter.ToInt32(image, s + 12);
+        if (signatures == 0 || cell == 0)
+          continue;
+        int array = Offset(signatures);
+        for (int k = 0; k < size / cell && !inlines; k++)
+          inlines = (image[Offset(BitConverter.ToInt32(image, array + 4 * k))] & 0x7F) == CheckInlineeBody;
+      }
+    }
+    return (flags, inlines);
+  }
+
+  /// <summary>
+  /// Asserts that <paramref name="dll"/> was compiled with grcis's ReadyToRun options (src/GrCis.Cli/ToolPackages.props):
+  /// its code inlines other assemblies' methods and the image may hold their generic code.
+  /// </summary>
+  internal static void CompiledAcrossAssemblies(PEReader pe, string dll)
+  {
+    var traits = ReadyToRunTraits(pe);
+    Assert.True(traits is { InlinesOtherAssemblies: true }, $"{dll} inlines no method of another assembly (compiled without --opt-cross-module)");
+    Assert.True((traits!.Value.Flags & HoldsOtherAssemblysGenerics) != 0, $"{dll} holds no generic code of other assemblies (compiled without --non-local-generics-module)");
   }
 
   /// <summary>The platform a launcher's bytes are for (<c>win-x64</c>, <c>linux-arm64</c>, <c>osx-arm64</c>...), from its header.</summary>
