@@ -65,7 +65,7 @@ internal static class Program
   static int Write(string[] dumps, FileInfo[] assemblies, FileInfo output)
   {
     var builder = new ProfileBuilder();
-    foreach (string dump in dumps) builder.AddDump(PgoTextDump.Read(dump));
+    foreach (string dump in dumps) builder.AddRun(PgoTextDump.Read(dump));
     // Written beside and moved, so an interrupted run leaves no half profile for the compiler.
     string partial = output.FullName + ".partial";
     Directory.CreateDirectory(output.DirectoryName!);

@@ -8,7 +8,8 @@ namespace GrCis.StaticPgo;
 /// <summary>
 /// The training: grcis commands (one a line in a text file; '#' starts a comment) run by the given grcis with
 /// dynamic profiling on and the runtime's profile written as text at exit, one dump per run. "{work}" in a line is the
-/// work folder (for the runs' output files); the runs' script cache and start-up profiles stay in it too.
+/// work folder (for the runs' output files); the runs' script cache and start-up profiles are kept in it, emptied
+/// first, so every training compiles its scripts (the compiler is profiled too) whatever an earlier training left.
 /// </summary>
 internal static class TrainingRuns
 {
@@ -30,6 +31,9 @@ internal static class TrainingRuns
   public static List<string> Run(string dotnet, string grcis, IReadOnlyList<string[]> runs, string work, string repositoryRoot, TextWriter log)
   {
     Directory.CreateDirectory(work);
+    string cache = Path.Combine(work, "cache");
+    if (Directory.Exists(cache))
+      Directory.Delete(cache, recursive: true);
     var dumps = new List<string>();
     for (int i = 0; i < runs.Count; i++)
     {
@@ -41,7 +45,7 @@ internal static class TrainingRuns
       start.Environment["DOTNET_TieredPGO"] = "1";
       start.Environment["DOTNET_WritePGOData"] = "1";
       start.Environment["DOTNET_PGODataPath"] = dump;
-      start.Environment["GRCIS_CACHE_DIR"] = Path.Combine(work, "cache");
+      start.Environment["GRCIS_CACHE_DIR"] = cache;
       string command = "grcis " + string.Join(' ', runs[i]);
       var clock = Stopwatch.StartNew();
       ChildProcess.Run(start, $"training run '{command}'");

@@ -140,7 +140,8 @@ public class ReadmeTests
 
   /// <summary>
   /// What README's <c>dotnet tool install</c> gave is this machine's platform package of the tool (not the portable
-  /// fallback), and its code, the library's and Roslyn's, is compiled ahead of time (ReadyToRun) with grcis's options.
+  /// fallback), and its code, the library's and Roslyn's, is compiled ahead of time (ReadyToRun) with grcis's options
+  /// and the static profile.
   /// </summary>
   static void InstalledToolIsCompiledAheadOfTime(string home)
   {
@@ -159,6 +160,12 @@ public class ReadmeTests
       // With grcis's options: inlining across assemblies, other assemblies' generic code in the image.
       ToolPackageCheck.CompiledAcrossAssemblies(pe, $"{dll} of the installed tool");
     }
+    // The static profile of the training renders: in the library's image, and the instrumented tier turned off.
+    using (var library = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(Path.Combine(Path.GetDirectoryName(tool)!, "GrCis.Rendering.dll"))))
+      Assert.True(ToolPackageCheck.ReadyToRunTraits(library) is { EmbedsProfile: true }, "the installed tool's GrCis.Rendering.dll embeds no profile");
+    var config = System.Text.Json.Nodes.JsonNode.Parse(File.ReadAllText(Path.ChangeExtension(tool, ".runtimeconfig.json")))!;
+    Assert.False(config["runtimeOptions"]?["configProperties"]?["System.Runtime.TieredPGO"]?.GetValue<bool>() ?? true,
+      "the installed tool's runtimeconfig keeps the instrumented tier (System.Runtime.TieredPGO)");
   }
 
   [Fact]

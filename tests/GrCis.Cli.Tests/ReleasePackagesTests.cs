@@ -145,6 +145,8 @@ public class ReleasePackagesTests
       Assert.NotNull(traits);
       Assert.False(traits.Value.InlinesOtherAssemblies, t.Assembly.GetName().Name);
       Assert.Equal(0u, traits.Value.Flags & ToolPackageCheck.HoldsOtherAssemblysGenerics);
+      // Microsoft compiles them with the profiles of its own training, embedded.
+      Assert.True(traits.Value.EmbedsProfile, t.Assembly.GetName().Name);
       Assert.Throws<Xunit.Sdk.TrueException>(() => ToolPackageCheck.CompiledAcrossAssemblies(pe, t.Assembly.GetName().Name!));
     }
     using var plain = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(typeof(ReleasePackagesTests).Assembly.Location));

@@ -94,6 +94,37 @@ public class StaticPgoTests
   }
 
   [Fact]
+  public void Each_training_run_weighs_alike_whatever_its_length()
+  {
+    // A long run (billions of counts) and a short one (a few) of the same method, with other shapes.
+    List<ProfiledMethod> longRun = PgoTextDump.Read(new StringReader(Dump), "long");
+    List<ProfiledMethod> shortRun = PgoTextDump.Read(new StringReader(Dump.Replace("4000000000", "4", StringComparison.Ordinal)
+      .Replace("5 1", "1 0", StringComparison.Ordinal)), "short");
+    double longTotal = 4_000_000_000.0 + ((1L << 32) + 5), shortTotal = 4 + 1;
+    var builder = new ProfileBuilder();
+
+    builder.AddRun(longRun);
+    builder.AddRun(shortRun);
+
+    // The sum holds each run's counts as fractions of its own total, at the same weight: the short run is not lost.
+    ProfiledMethod merged = longRun[0];
+    double w = ProfileBuilder.RunWeight;
+    Assert.Equal(w * (4e9 / longTotal + 4 / shortTotal), merged.Schema[0].Values[0], 2.0);
+    Assert.Equal(w * (((1L << 32) + 5) / longTotal + 1 / shortTotal), merged.Schema[3].Values[0], 2.0);
+    // A histogram's call count is weighed the same way (it decides which run's histogram is kept).
+    Assert.Equal(Math.Max(1L, (long)Math.Round(7 * w / shortTotal)), merged.Schema[1].Values[0]);
+  }
+
+  [Fact]
+  public void A_block_a_run_reached_stays_reached_when_weighed()
+  {
+    List<ProfiledMethod> run = PgoTextDump.Read(new StringReader(Dump.Replace("5 1", "1 0", StringComparison.Ordinal)), "run");
+    new ProfileBuilder().AddRun(run);
+    // One count beside four billion: below one after scaling, kept at one.
+    Assert.Equal(1, run[0].Schema[3].Values[0]);
+  }
+
+  [Fact]
   public void A_run_with_another_schema_is_left_out_of_the_sum()
   {
     ProfiledMethod first = PgoTextDump.Read(new StringReader(Dump), "a")[0];
@@ -172,9 +203,13 @@ public class StaticPgoTests
 
     using var tmp = new TempDirectory();
     File.WriteAllText(tmp.File("runs.txt"), "# one render\nrender fiveballs --size 160x120 --spp 4 -o {work}/f.png\n");
+    // What an earlier training cached is dropped: a script cached then would not be compiled, nor the compiler profiled.
+    Directory.CreateDirectory(tmp.File("work/cache/scripts"));
+    File.WriteAllText(tmp.File("work/cache/scripts/stale.bin"), "an earlier training's entry");
     List<string> dumps = TrainingRuns.Run(GrcisProcess.Dotnet, GrcisProcess.Dll, TrainingRuns.Read(tmp.File("runs.txt")),
       tmp.File("work"), tmp.Path, TextWriter.Null);
     Assert.True(File.Exists(tmp.File("work/f.png")));
+    Assert.False(File.Exists(tmp.File("work/cache/scripts/stale.bin")));
     var builder = new ProfileBuilder();
     builder.AddDump(PgoTextDump.Read(Assert.Single(dumps)));
     string library = typeof(Rendering.Sphere).Assembly.Location;

@@ -111,10 +111,11 @@ internal static class ToolPackageCheck
   const byte CheckInlineeBody = 0x35;
 
   /// <summary>
-  /// What a ReadyToRun image was compiled with, read from its header: the header's flags, and whether its code
-  /// inlines methods of other assemblies (a fixup that checks an inlinee's IL). Null for plain code.
+  /// What a ReadyToRun image was compiled with, read from its header: the header's flags, whether its code inlines
+  /// methods of other assemblies (a fixup that checks an inlinee's IL), and whether it embeds a profile (a section of
+  /// instrumentation data, crossgen2's <c>--embed-pgo-data</c>). Null for plain code.
   /// </summary>
-  internal static (uint Flags, bool InlinesOtherAssemblies)? ReadyToRunTraits(PEReader pe)
+  internal static (uint Flags, bool InlinesOtherAssemblies, bool EmbedsProfile)? ReadyToRunTraits(PEReader pe)
   {
     DirectoryEntry native = pe.PEHeaders.CorHeader?.ManagedNativeHeaderDirectory ?? default;
     if (native.Size == 0)
@@ -132,11 +133,12 @@ internal static class ToolPackageCheck
     Assert.Equal(0x00525452, BitConverter.ToInt32(image, header));
     uint flags = BitConverter.ToUInt32(image, header + 8);
     int sections = BitConverter.ToInt32(image, header + 12);
-    bool inlines = false;
-    for (int i = 0; i < sections && !inlines; i++)
+    bool inlines = false, profile = false;
+    for (int i = 0; i < sections; i++)
     {
       int entry = header + 16 + 12 * i;
-      const int ImportSections = 101;
+      const int ImportSections = 101, PgoInstrumentationData = 117;
+      profile |= BitConverter.ToInt32(image, entry) == PgoInstrumentationData && BitConverter.ToInt32(image, entry + 8) > 0;
       if (BitConverter.ToInt32(image, entry) != ImportSections)
         continue;
       int start = Offset(BitConverter.ToInt32(image, entry + 4)), end = start + BitConverter.ToInt32(image, entry + 8);
@@ -152,7 +154,7 @@ internal static class ToolPackageCheck
           inlines = (image[Offset(BitConverter.ToInt32(image, array + 4 * k))] & 0x7F) == CheckInlineeBody;
       }
     }
-    return (flags, inlines);
+    return (flags, inlines, profile);
   }
 
   /// <summary>
