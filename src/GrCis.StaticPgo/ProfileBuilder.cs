@@ -8,8 +8,9 @@ namespace GrCis.StaticPgo;
 
 /// <summary>
 /// Joins text dumps of training runs into one profile of the given assemblies: each run weighs alike
-/// (<see cref="AddRun"/>), the same method's counts add up across runs (<see cref="ProfiledMethod.Add"/>), each is found in its assembly by name, IL size and parameter count, and
-/// methods of other assemblies (the framework's, which has its own profile) are left out.
+/// (<see cref="AddRun"/>), the same method's counts add up across runs (<see cref="ProfiledMethod.Add"/>), each is
+/// found in its assembly by name, IL size and parameter count, and methods of other assemblies (the framework's, which
+/// has its own profile) are left out.
 /// </summary>
 internal sealed class ProfileBuilder
 {
