@@ -96,7 +96,7 @@ public sealed class ScriptValuesTests(StudioFixture studio) : IClassFixture<Stud
     string name = await AddScript();
     async Task<int> Frames(double? start, double? end, double? fps)
     {
-      using HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation",
+      using HttpResponseMessage started = await studio.StartAnimation(
         new { scene = name, settings = Settings, given = new[] { "Size", "SamplesPerPixel" }, start, end, fps });
       Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
       JsonElement done = await studio.PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the end of the animation");

@@ -82,9 +82,27 @@ public sealed class StudioFixture : IAsyncLifetime
   /// <summary>Asks for an animation and waits until it has finished; returns the animation's status then.</summary>
   public async Task<JsonElement> AnimateAndWait(object body)
   {
-    using (HttpResponseMessage started = await Client.PostAsJsonAsync("/api/animation", body))
+    using (HttpResponseMessage started = await StartAnimation(body))
       Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
     return await PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the end of the animation");
+  }
+
+  /// <summary>
+  /// Asks for an animation once the studio is free: the studio answers 409 while a render still runs, and a render the
+  /// status already shows as ended may still be finishing its last step (a loaded machine showed it). Other answers
+  /// (accepted, bad request) are returned at once.
+  /// </summary>
+  public async Task<HttpResponseMessage> StartAnimation(object body)
+  {
+    var deadline = DateTime.UtcNow + TimeSpan.FromSeconds(30);
+    while (true)
+    {
+      HttpResponseMessage answer = await Client.PostAsJsonAsync("/api/animation", body);
+      if (answer.StatusCode != HttpStatusCode.Conflict || DateTime.UtcNow > deadline)
+        return answer;
+      answer.Dispose();
+      await Task.Delay(50);
+    }
   }
 
   public async Task DisposeAsync()
