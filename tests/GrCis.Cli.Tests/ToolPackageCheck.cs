@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using System.IO.Compression;
 using System.Linq;
+using System.Reflection.Metadata;
 using System.Reflection.PortableExecutable;
 using System.Text.Json.Nodes;
 using System.Xml.Linq;
@@ -120,38 +121,36 @@ internal static class ToolPackageCheck
     DirectoryEntry native = pe.PEHeaders.CorHeader?.ManagedNativeHeaderDirectory ?? default;
     if (native.Size == 0)
       return null;
-    byte[] image = pe.GetEntireImage().GetContent().ToArray();
-    int Offset(int rva)
-    {
-      foreach (SectionHeader s in pe.PEHeaders.SectionHeaders)
-        if (rva >= s.VirtualAddress && rva < s.VirtualAddress + Math.Max(s.VirtualSize, s.SizeOfRawData))
-          return rva - s.VirtualAddress + s.PointerToRawData;
-      throw new Xunit.Sdk.XunitException($"address 0x{rva:X} is in no section");
-    }
     // READYTORUN_HEADER: signature "RTR", version, flags, section count, then (type, address, size) per section.
-    int header = Offset(native.RelativeVirtualAddress);
-    Assert.Equal(0x00525452, BitConverter.ToInt32(image, header));
-    uint flags = BitConverter.ToUInt32(image, header + 8);
-    int sections = BitConverter.ToInt32(image, header + 12);
+    BlobReader header = pe.GetSectionData(native.RelativeVirtualAddress).GetReader();
+    Assert.Equal(0x00525452, header.ReadInt32());
+    header.ReadUInt32();   // major and minor version
+    uint flags = header.ReadUInt32();
+    int sections = header.ReadInt32();
     bool inlines = false, profile = false;
     for (int i = 0; i < sections; i++)
     {
-      int entry = header + 16 + 12 * i;
+      int type = header.ReadInt32(), address = header.ReadInt32(), length = header.ReadInt32();
       const int ImportSections = 101, PgoInstrumentationData = 117;
-      profile |= BitConverter.ToInt32(image, entry) == PgoInstrumentationData && BitConverter.ToInt32(image, entry + 8) > 0;
-      if (BitConverter.ToInt32(image, entry) != ImportSections)
+      profile |= type == PgoInstrumentationData && length > 0;
+      if (type != ImportSections)
         continue;
-      int start = Offset(BitConverter.ToInt32(image, entry + 4)), end = start + BitConverter.ToInt32(image, entry + 8);
       // Each import section (20 bytes): its cells (address, size), flags, type, cell size, and the address of an array
       // of signature addresses, one per cell; a signature's first byte is its fixup kind (0x80: another module's).
-      for (int s = start; s < end && !inlines; s += 20)
+      BlobReader imports = pe.GetSectionData(address).GetReader(0, length);
+      while (imports.RemainingBytes >= 20 && !inlines)
       {
-        int size = BitConverter.ToInt32(image, s + 4), cell = image[s + 11], signatures = BitConverter.ToInt32(image, s + 12);
+        imports.ReadInt32();
+        int size = imports.ReadInt32();
+        imports.ReadUInt16();
+        imports.ReadByte();
+        int cell = imports.ReadByte(), signatures = imports.ReadInt32();
+        imports.ReadInt32();
         if (signatures == 0 || cell == 0)
           continue;
-        int array = Offset(signatures);
+        BlobReader array = pe.GetSectionData(signatures).GetReader();
         for (int k = 0; k < size / cell && !inlines; k++)
-          inlines = (image[Offset(BitConverter.ToInt32(image, array + 4 * k))] & 0x7F) == CheckInlineeBody;
+          inlines = (pe.GetSectionData(array.ReadInt32()).GetReader().ReadByte() & 0x7F) == CheckInlineeBody;
       }
     }
     return (flags, inlines, profile);
