@@ -27,20 +27,15 @@ internal sealed class ProfileBuilder
   /// <summary>Adds a training run's dump at the weight of every other run (<see cref="RunWeight"/>).</summary>
   public void AddRun(IReadOnlyList<ProfiledMethod> dump)
   {
-    long total = 0;
-    foreach (ProfiledMethod method in dump)
-      foreach (SchemaEntry entry in method.Schema)
-        if (entry.Descriptor is SchemaEntry.BlockCount or SchemaEntry.EdgeCount)
-          foreach (long v in entry.Values) total += v;
+    long total = dump.SelectMany(m => m.Schema).Where(e => e.IsCount).Sum(e => e.Values.Sum());
     if (total > 0)
     {
       double scale = (double)RunWeight / total;
-      foreach (ProfiledMethod method in dump)
-        foreach (SchemaEntry entry in method.Schema)
-          if (entry.Descriptor is SchemaEntry.BlockCount or SchemaEntry.EdgeCount or SchemaEntry.HistogramCount or SchemaEntry.ValueHistogramCount)
-            for (int i = 0; i < entry.Values.Length; i++)
-              // A block the run reached stays reached (at least 1), however rarely.
-              entry.Values[i] = entry.Values[i] > 0 ? Math.Max(1L, (long)Math.Round(entry.Values[i] * scale)) : entry.Values[i];
+      foreach (SchemaEntry entry in dump.SelectMany(m => m.Schema))
+        if (entry.IsCount || entry.IsHistogramCount)
+          for (int i = 0; i < entry.Values.Length; i++)
+            // A block the run reached stays reached (at least 1), however rarely.
+            entry.Values[i] = entry.Values[i] > 0 ? Math.Max(1L, (long)Math.Round(entry.Values[i] * scale)) : entry.Values[i];
     }
     AddDump(dump);
   }

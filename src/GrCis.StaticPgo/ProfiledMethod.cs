@@ -1,4 +1,5 @@
 using System.Collections.Generic;
+using System.Linq;
 
 namespace GrCis.StaticPgo;
 
@@ -48,25 +49,14 @@ internal sealed class ProfiledMethod
     for (int i = 0; i < Schema.Count; i++)
     {
       SchemaEntry mine = Schema[i], theirs = other.Schema[i];
-      switch (mine.Descriptor)
+      if (mine.IsCount)
+        for (int v = 0; v < mine.Values.Length; v++) mine.Values[v] += theirs.Values[v];
+      else if (mine.IsHistogramCount && i + 1 < Schema.Count && Schema[i + 1].IlOffset == mine.IlOffset && theirs.Values.Sum() > mine.Values.Sum())
       {
-        case SchemaEntry.BlockCount or SchemaEntry.EdgeCount:
-          for (int v = 0; v < mine.Values.Length; v++) mine.Values[v] += theirs.Values[v];
-          break;
-        case SchemaEntry.HistogramCount or SchemaEntry.ValueHistogramCount
-          when i + 1 < Schema.Count && Schema[i + 1].IlOffset == mine.IlOffset && Total(theirs) > Total(mine):
-          Schema[i] = theirs;
-          Schema[i + 1] = other.Schema[i + 1];
-          i++;
-          break;
+        Schema[i] = theirs;
+        Schema[i + 1] = other.Schema[i + 1];
+        i++;
       }
     }
-  }
-
-  static long Total(SchemaEntry entry)
-  {
-    long sum = 0;
-    foreach (long v in entry.Values) sum += v;
-    return sum;
   }
 }

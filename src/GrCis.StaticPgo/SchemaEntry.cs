@@ -27,6 +27,12 @@ internal sealed class SchemaEntry
   public int Marshal => Kind & 0xF;
   public int Descriptor => Kind >> 6;
 
+  /// <summary>A block or edge count: counts that add up across runs.</summary>
+  public bool IsCount => Descriptor is BlockCount or EdgeCount;
+
+  /// <summary>The call count of a histogram (the records after it are its slots).</summary>
+  public bool IsHistogramCount => Descriptor is HistogramCount or ValueHistogramCount;
+
   public bool SameSlotAs(SchemaEntry other) =>
     Kind == other.Kind && IlOffset == other.IlOffset && Count == other.Count && Other == other.Other;
 }
