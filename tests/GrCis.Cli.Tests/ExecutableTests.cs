@@ -64,6 +64,15 @@ public class ExecutableTests
     Assert.InRange(CallCountingDelayMs(Path.Combine(AppContext.BaseDirectory, "grcis.runtimeconfig.json")) ?? 100, 0, 10);
   }
 
+  [Fact]
+  public void Grcis_starts_without_the_runtimes_managed_event_sources()
+  {
+    // Built at every start by reflection over their attributes, for listeners grcis never has.
+    string runtimeConfig = Path.Combine(AppContext.BaseDirectory, "grcis.runtimeconfig.json");
+    JsonNode? value = JsonNode.Parse(File.ReadAllText(runtimeConfig))?["runtimeOptions"]?["configProperties"]?["System.Diagnostics.Tracing.EventSource.IsSupported"];
+    Assert.False(value?.GetValue<bool>() ?? true, $"{runtimeConfig} leaves EventSource on");
+  }
+
   /// <summary>The tiering delay a <c>runtimeconfig.json</c> sets, or null when it leaves the runtime's default.</summary>
   internal static int? CallCountingDelayMs(string runtimeConfig)
   {

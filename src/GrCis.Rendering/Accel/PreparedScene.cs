@@ -167,7 +167,10 @@ public sealed partial class PreparedScene : ISceneQuery
   /// <see cref="FirstHit(Vector3d, Vector3d, Intersection?)"/>; with <paramref name="surfaceOnly"/> (only the library's own
   /// shading will read the hit) members that allow it are completed leanly (<see cref="HitCompletion"/>).
   /// </summary>
+  // Never inlined into the shading kernel (WhittedKernel.Shade calls it per ray): inlined there, as the JIT did once Shade
+  // was a little smaller, Two spheres rendered 10-12 % slower (bench/results/2026-12-07-shading-layout.md).
   [SkipLocalsInit]   // the query is started field by field, not zeroed
+  [MethodImpl(MethodImplOptions.NoInlining)]
   internal Intersection? FirstHit(Vector3d p0, Vector3d p1, Intersection? reuse, bool surfaceOnly)
   {
     if (members.Length == 0)
