@@ -63,7 +63,7 @@ public sealed class AlgorithmTests(StudioFixture studio) : IClassFixture<StudioF
     Assert.Contains("algorithm 'bogus'", message);
     Assert.Contains("raytracing, distributed, path", message);
 
-    using HttpResponseMessage animation = await studio.Client.PostAsJsonAsync("/api/animation",
+    using HttpResponseMessage animation = await studio.StartAnimation(
       new { scene = "Five balls", settings = Settings, start = 0.0, end = 1.0, fps = 1.0, algorithm = "Path" });
     Assert.Equal(HttpStatusCode.BadRequest, animation.StatusCode);
     Assert.Contains("algorithm 'Path'", await animation.Content.ReadAsStringAsync());

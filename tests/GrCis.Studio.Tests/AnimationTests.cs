@@ -18,7 +18,7 @@ public sealed class AnimationTests(StudioFixture studio) : IClassFixture<StudioF
   public async Task Frames_of_a_range_are_rendered_kept_for_scrubbing_and_written_to_the_folder()
   {
     string folder = Path.Combine(studio.ScriptsFolder, "frames");
-    using HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation",
+    using HttpResponseMessage started = await studio.StartAnimation(
       new { scene = "Balls", settings = new { width = 32, height = 24 }, start = 0.0, end = 0.4, fps = 10.0, folder });
     Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
     JsonElement done = await WaitForFrames();
@@ -37,11 +37,11 @@ public sealed class AnimationTests(StudioFixture studio) : IClassFixture<StudioF
   [Fact]
   public async Task Frames_are_not_written_outside_the_given_folders_and_a_bad_range_is_refused()
   {
-    using HttpResponseMessage outside = await studio.Client.PostAsJsonAsync("/api/animation",
+    using HttpResponseMessage outside = await studio.StartAnimation(
       new { scene = "Balls", start = 0.0, end = 1.0, fps = 10.0, folder = Path.Combine(studio.Folder, "elsewhere") });
     Assert.Equal(HttpStatusCode.Forbidden, outside.StatusCode);
     Assert.False(Directory.Exists(Path.Combine(studio.Folder, "elsewhere")));
-    using HttpResponseMessage backwards = await studio.Client.PostAsJsonAsync("/api/animation",
+    using HttpResponseMessage backwards = await studio.StartAnimation(
       new { scene = "Balls", start = 2.0, end = 1.0, fps = 10.0 });
     Assert.Equal(HttpStatusCode.BadRequest, backwards.StatusCode);
   }
@@ -51,7 +51,7 @@ public sealed class AnimationTests(StudioFixture studio) : IClassFixture<StudioF
   {
     string folder = Path.Combine(studio.ScriptsFolder, "served");
     object Body(string? into) => new { scene = "Balls", settings = new { width = 24, height = 18 }, start = 0.0, end = 0.1, fps = 10.0, folder = into };
-    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation", Body(folder)))
+    using (HttpResponseMessage started = await studio.StartAnimation(Body(folder)))
       Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
     await WaitForFrames();
     byte[] saved = File.ReadAllBytes(Path.Combine(folder, "out0000.png"));
@@ -61,7 +61,7 @@ public sealed class AnimationTests(StudioFixture studio) : IClassFixture<StudioF
     using (HttpResponseMessage gone = await studio.Client.GetAsync("/api/animation/frame/1.png"))
       Assert.Equal(HttpStatusCode.NotFound, gone.StatusCode);
 
-    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation", Body(null)))
+    using (HttpResponseMessage started = await studio.StartAnimation(Body(null)))
       Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
     await WaitForFrames();
     Assert.Equal(saved, await studio.Client.GetByteArrayAsync("/api/animation/frame/0.png"));

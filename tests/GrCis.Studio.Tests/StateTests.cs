@@ -127,7 +127,7 @@ public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixtu
   [Fact]
   public async Task Stop_ends_an_animation_too()
   {
-    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation",
+    using (HttpResponseMessage started = await studio.StartAnimation(
              new { scene = "Five balls", settings = new { width = 400, height = 300, samplesPerPixel = 16, threads = 2 }, start = 0.0, end = 100.0, fps = 10.0 }))
       Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
     using (HttpResponseMessage stop = await studio.Client.PostAsync("/api/stop", null))
