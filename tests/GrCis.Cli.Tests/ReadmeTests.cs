@@ -166,6 +166,8 @@ public class ReadmeTests
     var config = System.Text.Json.Nodes.JsonNode.Parse(File.ReadAllText(Path.ChangeExtension(tool, ".runtimeconfig.json")))!;
     Assert.False(config["runtimeOptions"]?["configProperties"]?["System.Runtime.TieredPGO"]?.GetValue<bool>() ?? true,
       "the installed tool's runtimeconfig keeps the instrumented tier (System.Runtime.TieredPGO)");
+    Assert.False(config["runtimeOptions"]?["configProperties"]?["System.Diagnostics.Tracing.EventSource.IsSupported"]?.GetValue<bool>() ?? true,
+      "the installed tool's runtimeconfig builds the runtime's managed event sources at every start");
   }
 
   [Fact]
