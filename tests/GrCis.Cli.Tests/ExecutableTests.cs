@@ -69,7 +69,7 @@ public class ExecutableTests
   {
     // Built at every start by reflection over their attributes, for listeners grcis never has.
     string runtimeConfig = Path.Combine(AppContext.BaseDirectory, "grcis.runtimeconfig.json");
-    JsonNode? value = JsonNode.Parse(File.ReadAllText(runtimeConfig))?["runtimeOptions"]?["configProperties"]?["System.Diagnostics.Tracing.EventSource.IsSupported"];
+    JsonNode? value = RuntimeOption(JsonNode.Parse(File.ReadAllText(runtimeConfig))!, "System.Diagnostics.Tracing.EventSource.IsSupported");
     Assert.False(value?.GetValue<bool>() ?? true, $"{runtimeConfig} leaves EventSource on");
   }
 
@@ -77,7 +77,10 @@ public class ExecutableTests
   internal static int? CallCountingDelayMs(string runtimeConfig)
   {
     Assert.True(File.Exists(runtimeConfig), $"{runtimeConfig} not found");
-    JsonNode? value = JsonNode.Parse(File.ReadAllText(runtimeConfig))?["runtimeOptions"]?["configProperties"]?["System.Runtime.TieredCompilation.CallCountingDelayMs"];
-    return value?.GetValue<int>();
+    return RuntimeOption(JsonNode.Parse(File.ReadAllText(runtimeConfig))!, "System.Runtime.TieredCompilation.CallCountingDelayMs")?.GetValue<int>();
   }
+
+  /// <summary>A runtime setting of a parsed <c>runtimeconfig.json</c> (its configProperties), or null when it leaves the runtime's default.</summary>
+  internal static JsonNode? RuntimeOption(JsonNode runtimeConfig, string name) =>
+    runtimeConfig["runtimeOptions"]?["configProperties"]?[name];
 }

@@ -153,9 +153,9 @@ public class ReadmeTests
     foreach (string dll in new[] { "grcis.dll", "GrCis.Rendering.dll", "GrCis.Hosting.dll", "Microsoft.CodeAnalysis.CSharp.dll" })
     {
       string path = Path.Combine(Path.GetDirectoryName(tool)!, dll);
-      Assert.True(IsReadyToRun(path), $"{dll} of the installed tool is not ReadyToRun");
-      // Compiled for this system and processor (the PE machine field a ReadyToRun image carries).
       using var pe = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(path));
+      Assert.True(ToolPackageCheck.ReadyToRunTraits(pe) != null, $"{dll} of the installed tool is not ReadyToRun");
+      // Compiled for this system and processor (the PE machine field a ReadyToRun image carries).
       Assert.Equal(ToolPackageCheck.ReadyToRunMachine(rid), (ushort)pe.PEHeaders.CoffHeader.Machine);
       // With grcis's options: inlining across assemblies, other assemblies' generic code in the image.
       ToolPackageCheck.CompiledAcrossAssemblies(pe, $"{dll} of the installed tool");
@@ -164,9 +164,9 @@ public class ReadmeTests
     using (var library = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(Path.Combine(Path.GetDirectoryName(tool)!, "GrCis.Rendering.dll"))))
       Assert.True(ToolPackageCheck.ReadyToRunTraits(library) is { EmbedsProfile: true }, "the installed tool's GrCis.Rendering.dll embeds no profile");
     var config = System.Text.Json.Nodes.JsonNode.Parse(File.ReadAllText(Path.ChangeExtension(tool, ".runtimeconfig.json")))!;
-    Assert.False(config["runtimeOptions"]?["configProperties"]?["System.Runtime.TieredPGO"]?.GetValue<bool>() ?? true,
+    Assert.False(ExecutableTests.RuntimeOption(config, "System.Runtime.TieredPGO")?.GetValue<bool>() ?? true,
       "the installed tool's runtimeconfig keeps the instrumented tier (System.Runtime.TieredPGO)");
-    Assert.False(config["runtimeOptions"]?["configProperties"]?["System.Diagnostics.Tracing.EventSource.IsSupported"]?.GetValue<bool>() ?? true,
+    Assert.False(ExecutableTests.RuntimeOption(config, "System.Diagnostics.Tracing.EventSource.IsSupported")?.GetValue<bool>() ?? true,
       "the installed tool's runtimeconfig builds the runtime's managed event sources at every start");
   }
 
@@ -175,13 +175,12 @@ public class ReadmeTests
   {
     Assert.True(IsReadyToRun(typeof(object).Assembly.Location)); // the runtime's own, compiled ahead of time
     Assert.False(IsReadyToRun(typeof(ReadmeTests).Assembly.Location));
-  }
 
-  /// <summary>Whether an assembly carries precompiled code (a ReadyToRun header in its CLI header).</summary>
-  internal static bool IsReadyToRun(string dll)
-  {
-    using var reader = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(dll));
-    return reader.PEHeaders.CorHeader is { ManagedNativeHeaderDirectory.Size: > 0 };
+    static bool IsReadyToRun(string dll)
+    {
+      using var pe = new System.Reflection.PortableExecutable.PEReader(File.OpenRead(dll));
+      return ToolPackageCheck.ReadyToRunTraits(pe) != null;
+    }
   }
 
   internal static string GlobalPackagesFolder()

@@ -64,12 +64,12 @@ internal static class ToolPackageCheck
     Assert.Equal(rid, Launcher(Read(zip, folder + launcher)));
 
     JsonNode config = JsonNode.Parse(Read(zip, folder + tool + ".runtimeconfig.json"))!;
-    Assert.Equal(10, config["runtimeOptions"]?["configProperties"]?["System.Runtime.TieredCompilation.CallCountingDelayMs"]?.GetValue<int>());
+    Assert.Equal(10, ExecutableTests.RuntimeOption(config, "System.Runtime.TieredCompilation.CallCountingDelayMs")?.GetValue<int>());
 
     foreach (string dll in readyToRun)
     {
       using var pe = new PEReader(new MemoryStream(Read(zip, folder + dll)));
-      Assert.True(pe.PEHeaders.CorHeader is { ManagedNativeHeaderDirectory.Size: > 0 }, $"{dll} in {Path.GetFileName(nupkg)} is not ReadyToRun");
+      Assert.True(ReadyToRunTraits(pe) != null, $"{dll} in {Path.GetFileName(nupkg)} is not ReadyToRun");
       Assert.True(ReadyToRunMachine(rid) == (ushort)pe.PEHeaders.CoffHeader.Machine,
                   $"{dll} in {Path.GetFileName(nupkg)} is compiled for machine 0x{(ushort)pe.PEHeaders.CoffHeader.Machine:X4}, not {rid}'s 0x{ReadyToRunMachine(rid):X4}");
       // The library inlines its vector operations (another assembly's) in every platform's images.
@@ -94,9 +94,9 @@ internal static class ToolPackageCheck
       Assert.Equal("dotnet", (string?)command.Attribute("Runner"));
     }
     JsonNode config = JsonNode.Parse(Read(zip, Folder + tool + ".runtimeconfig.json"))!;
-    Assert.Equal(10, config["runtimeOptions"]?["configProperties"]?["System.Runtime.TieredCompilation.CallCountingDelayMs"]?.GetValue<int>());
+    Assert.Equal(10, ExecutableTests.RuntimeOption(config, "System.Runtime.TieredCompilation.CallCountingDelayMs")?.GetValue<int>());
     using var pe = new PEReader(new MemoryStream(Read(zip, Folder + tool + ".dll")));
-    Assert.False(pe.PEHeaders.CorHeader is { ManagedNativeHeaderDirectory.Size: > 0 }, "the portable package's tool is ReadyToRun");
+    Assert.True(ReadyToRunTraits(pe) == null, "the portable package's tool is ReadyToRun");
   }
 
   /// <summary>

@@ -11,17 +11,12 @@ namespace GrCis.Studio.Tests;
 /// <summary>Animation in the studio: a time range's frames rendered with progress, kept for scrubbing, written into an allowed folder only.</summary>
 public sealed class AnimationTests(StudioFixture studio) : IClassFixture<StudioFixture>
 {
-  Task<JsonElement> WaitForFrames() =>
-    studio.PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the end of the animation");
-
   [Fact]
   public async Task Frames_of_a_range_are_rendered_kept_for_scrubbing_and_written_to_the_folder()
   {
     string folder = Path.Combine(studio.ScriptsFolder, "frames");
-    using HttpResponseMessage started = await studio.StartAnimation(
+    JsonElement done = await studio.AnimateAndWait(
       new { scene = "Balls", settings = new { width = 32, height = 24 }, start = 0.0, end = 0.4, fps = 10.0, folder });
-    Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
-    JsonElement done = await WaitForFrames();
     int total = done.GetProperty("framesTotal").GetInt32();
     Assert.True(total >= 4, done.ToString());
     Assert.Equal(total, done.GetProperty("framesDone").GetInt32());
@@ -51,9 +46,7 @@ public sealed class AnimationTests(StudioFixture studio) : IClassFixture<StudioF
   {
     string folder = Path.Combine(studio.ScriptsFolder, "served");
     object Body(string? into) => new { scene = "Balls", settings = new { width = 24, height = 18 }, start = 0.0, end = 0.1, fps = 10.0, folder = into };
-    using (HttpResponseMessage started = await studio.StartAnimation(Body(folder)))
-      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
-    await WaitForFrames();
+    await studio.AnimateAndWait(Body(folder));
     byte[] saved = File.ReadAllBytes(Path.Combine(folder, "out0000.png"));
     Assert.Equal(saved, await studio.Client.GetByteArrayAsync("/api/animation/frame/0.png"));
     // The page scrubs through the files themselves: a frame deleted on disk is gone from the page too.
@@ -61,9 +54,7 @@ public sealed class AnimationTests(StudioFixture studio) : IClassFixture<StudioF
     using (HttpResponseMessage gone = await studio.Client.GetAsync("/api/animation/frame/1.png"))
       Assert.Equal(HttpStatusCode.NotFound, gone.StatusCode);
 
-    using (HttpResponseMessage started = await studio.StartAnimation(Body(null)))
-      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
-    await WaitForFrames();
+    await studio.AnimateAndWait(Body(null));
     Assert.Equal(saved, await studio.Client.GetByteArrayAsync("/api/animation/frame/0.png"));
   }
 }

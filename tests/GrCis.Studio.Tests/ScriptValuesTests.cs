@@ -96,10 +96,8 @@ public sealed class ScriptValuesTests(StudioFixture studio) : IClassFixture<Stud
     string name = await AddScript();
     async Task<int> Frames(double? start, double? end, double? fps)
     {
-      using HttpResponseMessage started = await studio.StartAnimation(
+      JsonElement done = await studio.AnimateAndWait(
         new { scene = name, settings = Settings, given = new[] { "Size", "SamplesPerPixel" }, start, end, fps });
-      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
-      JsonElement done = await studio.PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the end of the animation");
       return done.GetProperty("framesTotal").GetInt32();
     }
     Assert.Equal(3, await Frames(null, null, null));     // the script's 0–0.5 s at 4 fps
