@@ -291,7 +291,8 @@ sealed partial class MainForm : Form
 
   async Task ShowExtraViewsAsync()
   {
-    if (controller.IsRendering)
+    // A render that has ended, or was stopped, may still be finishing: its views wait for it (a busy one is not asked).
+    if (!await controller.SettleAsync())
       return;
     extra.Enabled = false;
     Cursor = Cursors.WaitCursor;

@@ -28,9 +28,9 @@ public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixtu
   Task<JsonElement> Status() => studio.Client.GetFromJsonAsync<JsonElement>("/api/status");
 
   /// <summary>Asks for a small render of <paramref name="scene"/> and waits until its script writes <paramref name="marker"/>.</summary>
-  async Task RenderUntil(string scene, string marker, string what)
+  async Task RenderUntil(string scene, string marker, string what, int width = 8, int height = 6)
   {
-    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", new { scene, settings = new { width = 8, height = 6 } }))
+    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/render", new { scene, settings = new { width, height } }))
       Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
     DateTime deadline = DateTime.UtcNow + TimeSpan.FromMinutes(1);
     while (!File.Exists(marker))
@@ -134,5 +134,39 @@ public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixtu
       Assert.Equal(HttpStatusCode.NoContent, stop.StatusCode);
     JsonElement done = await studio.PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the animation to stop");
     Assert.True(done.GetProperty("framesDone").GetInt32() < done.GetProperty("framesTotal").GetInt32());
+  }
+
+  [Fact]
+  public async Task Once_stop_shows_idle_a_move_in_the_history_and_an_animation_wait_for_the_stopped_render_instead_of_refusing()
+  {
+    await studio.RenderAndWait(new { scene = "Five balls", settings = new { width = 16, height = 12 } });
+    string marker = Path.Combine(studio.Folder, "sleep-started").Replace("\\", "/", StringComparison.Ordinal);
+    string sleepy = await AddScript("Sleepy.cs", StuckScripts.Sleeping(marker, 1500));
+    await RenderUntil(sleepy, marker, "the render never reached the script's texture", width: 1, height: 1);
+    using (HttpResponseMessage stop = await studio.Client.PostAsync("/api/stop", null))
+      Assert.Equal(HttpStatusCode.NoContent, stop.StatusCode);
+    Assert.Equal("idle", (await Status()).GetProperty("phase").GetString());
+
+    // The texture still sleeps; the move waits for the stopped render, whose image comes into the history first.
+    using (HttpResponseMessage back = await studio.Client.PostAsync("/api/history/back", null))
+    {
+      Assert.Equal(HttpStatusCode.OK, back.StatusCode);
+      JsonElement list = await back.Content.ReadFromJsonAsync<JsonElement>();
+      JsonElement[] items = [.. list.GetProperty("items").EnumerateArray()];
+      Assert.StartsWith(sleepy, items[^1].GetProperty("label").GetString());
+      Assert.False(items[^1].GetProperty("complete").GetBoolean());
+      Assert.Equal(items.Length - 2, list.GetProperty("position").GetInt32());
+      Assert.StartsWith("Five balls", items[^2].GetProperty("label").GetString());
+    }
+
+    File.Delete(marker);
+    await RenderUntil(sleepy, marker, "the second render never reached the script's texture", width: 1, height: 1);
+    using (HttpResponseMessage stop = await studio.Client.PostAsync("/api/stop", null))
+      Assert.Equal(HttpStatusCode.NoContent, stop.StatusCode);
+    // Asked once, as the page asks: accepted once the stopped render has ended, not refused while it ends.
+    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation",
+             new { scene = "Five balls", settings = new { width = 16, height = 12 }, start = 0.0, end = 0.2, fps = 10.0 }))
+      Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
+    await studio.PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the end of the animation");
   }
 }

@@ -38,4 +38,30 @@ public static class StuckScripts
     root.InsertChild(s, Matrix4d.Identity);
     scene.Intersectable = root;
     """;
+
+  /// <summary>
+  /// A one-pixel scene (render it at 1×1) whose sphere's texture writes <paramref name="marker"/> and then sleeps for
+  /// <paramref name="milliseconds"/>: a class that ignores the stop (no loop to interrupt), so a stopped render ends only
+  /// when the sleep does.
+  /// </summary>
+  public static string Sleeping(string marker, int milliseconds) => $$"""
+    class Sleepy : ITexture
+    {
+      public long Apply(Intersection inter)
+      {
+        System.IO.File.WriteAllText("{{marker}}", "");
+        System.Threading.Thread.Sleep({{milliseconds}});
+        return 0L;
+      }
+    }
+    """ + Camera + """
+
+    var root = new CSGInnerNode(SetOperation.Union);
+    var s = new Sphere();
+    s.SetAttribute(PropertyName.TEXTURE, new Sleepy());
+    root.InsertChild(s, Matrix4d.Identity);
+    scene.Intersectable = root;
+    context[PropertyName.CTX_WIDTH] = 1;
+    context[PropertyName.CTX_HEIGHT] = 1;
+    """;
 }

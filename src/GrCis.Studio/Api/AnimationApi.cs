@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Threading.Tasks;
 using GrCis.Hosting;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
@@ -34,7 +35,7 @@ internal static class AnimationApi
       StudioSceneFiles.FrameGlb(s, k) is byte[] glb ? TypedResults.File(glb, "model/gltf-binary", $"frame{k:0000}.glb") : TypedResults.NotFound());
   }
 
-  static Results<Accepted, ProblemHttpResult> Start(AnimationBody body, StudioSession s, AllowedFiles files, HttpRequest request)
+  static async Task<Results<Accepted, ProblemHttpResult>> Start(AnimationBody body, StudioSession s, AllowedFiles files, HttpRequest request)
   {
     SceneEntry? entry = s.Controller.Catalog.Find(body.Scene ?? "");
     if (entry == null)
@@ -65,8 +66,12 @@ internal static class AnimationApi
     {
       return Problems.BadRequest(e.Message);
     }
-    if (s.Controller.IsRendering || s.Animation is { Running: true })
-      return Problems.Conflict("a render or an animation is running; stop it first");
+    // Busy as the status shows it; a render that has ended, or was stopped, is let finish first (its last image kept).
+    const string running = "a render or an animation is running; stop it first";
+    if (s.Animation is { Running: true })
+      return Problems.Conflict(running);
+    if (!await s.Controller.SettleAsync())
+      return Problems.NotSettled(s.Controller, running);
     entry.ParameterText = body.Param ?? entry.ParameterText;
     s.Controller.Selected = entry;
     s.Controller.Settings = settings;

@@ -1,5 +1,6 @@
 using System.Collections.Generic;
 using System.Linq;
+using System.Threading.Tasks;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
 using Microsoft.AspNetCore.Http;
@@ -31,10 +32,11 @@ internal static class HistoryApi
   static HistoryJson List(RenderHistory h) =>
     new(h.Position, h.CanGoBack, h.CanGoForward, h.Items.Select(r => new HistoryItem(r.ToString(), r.Complete)).ToArray());
 
-  static Results<Ok<HistoryJson>, ProblemHttpResult> Move(StudioSession s, bool back)
+  static async Task<Results<Ok<HistoryJson>, ProblemHttpResult>> Move(StudioSession s, bool back)
   {
-    if (s.Controller.IsRendering)
-      return Problems.Conflict("wait for the render to finish (or stop it)");
+    // Busy as the status shows it; a render that has ended, or was stopped, is let finish first (it adds its image here).
+    if (!await s.Controller.SettleAsync())
+      return Problems.NotSettled(s.Controller, "wait for the render to finish (or stop it)");
     RenderHistory h = s.Controller.History;
     RenderRecord? record = back ? h.Back() : h.Forward();
     if (record == null)

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Diagnostics.CodeAnalysis;
 using System.IO;
 using System.Threading;
+using System.Threading.Tasks;
 using GrCis.Interactive;
 using Microsoft.AspNetCore.Builder;
 using Microsoft.AspNetCore.Http;
@@ -24,8 +25,11 @@ internal static class ViewsApi
 
   public static void MapViewsApi(this IEndpointRouteBuilder api)
   {
-    api.MapPost("/views", Results<Ok<ViewsJson>, ProblemHttpResult> (StudioSession s, CancellationToken cancel) =>
+    api.MapPost("/views", async Task<Results<Ok<ViewsJson>, ProblemHttpResult>> (StudioSession s, CancellationToken cancel) =>
     {
+      // A render that has ended, or was stopped, is let finish first: the views are of its scene and image.
+      if (!await s.Controller.SettleAsync())
+        return Problems.NotSettled(s.Controller, "Wait for the render to finish (or stop it) before computing the extra views.");
       try
       {
         ExtraViews views = s.ComputeViews(cancel);
