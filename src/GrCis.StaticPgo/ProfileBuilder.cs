@@ -24,7 +24,10 @@ internal sealed class ProfileBuilder
   /// </summary>
   public const long RunWeight = 1L << 26;
 
-  /// <summary>Adds a training run's dump at the weight of every other run (<see cref="RunWeight"/>).</summary>
+  /// <summary>
+  /// Adds a training run's dump at the weight of every other run (<see cref="RunWeight"/>). The builder takes the dump:
+  /// its counts are scaled, and later runs' added, in place (a dump is read once, so nothing is copied).
+  /// </summary>
   public void AddRun(IReadOnlyList<ProfiledMethod> dump)
   {
     long total = dump.SelectMany(m => m.Schema).Where(e => e.IsCount).Sum(e => e.Values.Sum());
@@ -40,7 +43,7 @@ internal sealed class ProfileBuilder
     AddDump(dump);
   }
 
-  /// <summary>Adds a dump's counts as they are (<see cref="ProfiledMethod.Add"/>).</summary>
+  /// <summary>Adds a dump's counts as they are (<see cref="ProfiledMethod.Add"/>); the builder takes the dump, as <see cref="AddRun"/> does.</summary>
   public void AddDump(IEnumerable<ProfiledMethod> dump)
   {
     foreach (ProfiledMethod method in dump)
