@@ -72,6 +72,9 @@ internal static class AnimationApi
       return Problems.Conflict(running);
     if (!await s.Controller.SettleAsync())
       return Problems.NotSettled(s.Controller, running);
+    // Another request may have started one while this one waited.
+    if (s.Animation is { Running: true })
+      return Problems.Conflict(running);
     entry.ParameterText = body.Param ?? entry.ParameterText;
     s.Controller.Selected = entry;
     s.Controller.Settings = settings;
