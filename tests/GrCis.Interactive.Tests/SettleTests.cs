@@ -16,52 +16,62 @@ namespace GrCis.Interactive.Tests;
 /// </summary>
 public class SettleTests
 {
-  static DemoController Demo(TempDir tmp, GrCis.Scripting.ScriptHost evaluator, string marker, int sleep)
+  /// <summary>A render of <see cref="StuckScripts.Sleeping"/> whose texture has started its sleep.</summary>
+  sealed class SleepingRender : IDisposable
   {
-    File.WriteAllText(tmp.File("Sleepy.cs"), StuckScripts.Sleeping(marker, sleep));
-    var catalog = new SceneCatalog(evaluator);
-    SceneEntry entry = catalog.AddScriptFile(tmp.File("Sleepy.cs"));
-    return new DemoController(catalog) { Selected = entry, Settings = new RenderSettings { SamplesPerPixel = 1, Threads = 1 } };
-  }
+    readonly TempDir tmp = new();
+    readonly GrCis.Scripting.ScriptHost evaluator = new();
 
-  static void WaitForFile(string path)
-  {
-    var clock = Stopwatch.StartNew();
-    while (!File.Exists(path))
+    public DemoController Demo { get; }
+
+    public Task<RenderResult?> Render { get; }
+
+    public SleepingRender(int sleep, TimeSpan abandonAfter)
     {
-      Assert.True(clock.Elapsed < TimeSpan.FromSeconds(60), "the render never reached the script's texture");
-      Thread.Sleep(20);
+      string marker = tmp.File("started").Replace("\\", "/", StringComparison.Ordinal);
+      File.WriteAllText(tmp.File("Sleepy.cs"), StuckScripts.Sleeping(marker, sleep));
+      var catalog = new SceneCatalog(evaluator);
+      SceneEntry entry = catalog.AddScriptFile(tmp.File("Sleepy.cs"));
+      Demo = new DemoController(catalog)
+      {
+        Selected = entry,
+        Settings = new RenderSettings { SamplesPerPixel = 1, Threads = 1 },
+        AbandonStuckScriptAfter = abandonAfter,
+      };
+      Render = Demo.RenderAsync();
+      var clock = Stopwatch.StartNew();
+      while (!File.Exists(marker))
+      {
+        Assert.True(clock.Elapsed < TimeSpan.FromSeconds(60), "the render never reached the script's texture");
+        Thread.Sleep(20);
+      }
+    }
+
+    public void Dispose()
+    {
+      Demo.Stop();
+      Render.Wait(TimeSpan.FromSeconds(30));
+      Demo.Dispose();
+      evaluator.Dispose();
+      tmp.Dispose();
     }
   }
 
   [Fact]
   public async Task A_busy_render_is_refused_at_once()
   {
-    using var tmp = new TempDir();
-    string marker = tmp.File("started").Replace("\\", "/", StringComparison.Ordinal);
-    using var evaluator = new GrCis.Scripting.ScriptHost();
-    using DemoController demo = Demo(tmp, evaluator, marker, 3000);
-    Task<RenderResult?> render = demo.RenderAsync();
-    WaitForFile(marker);
-
-    Assert.False(await demo.SettleAsync());
+    using var sleeping = new SleepingRender(3000, TimeSpan.FromSeconds(2));
+    Assert.False(await sleeping.Demo.SettleAsync());
     // It did not wait for the render: the texture is still asleep.
-    Assert.True(demo.IsBusy);
-    Assert.False(render.IsCompleted);
-    demo.Stop();
-    await render.WaitAsync(TimeSpan.FromSeconds(30));
+    Assert.True(sleeping.Demo.IsBusy);
+    Assert.False(sleeping.Render.IsCompleted);
   }
 
   [Fact]
   public async Task A_stopped_render_that_is_still_ending_is_waited_for_and_has_added_its_image_when_settled()
   {
-    using var tmp = new TempDir();
-    string marker = tmp.File("started").Replace("\\", "/", StringComparison.Ordinal);
-    using var evaluator = new GrCis.Scripting.ScriptHost();
-    using DemoController demo = Demo(tmp, evaluator, marker, 1500);
-    demo.AbandonStuckScriptAfter = TimeSpan.FromSeconds(30);
-    Task<RenderResult?> render = demo.RenderAsync();
-    WaitForFile(marker);
+    using var sleeping = new SleepingRender(1500, TimeSpan.FromSeconds(30));
+    DemoController demo = sleeping.Demo;
     int kept = demo.History.Items.Count;
 
     demo.Stop();
@@ -71,8 +81,8 @@ public class SettleTests
 
     Assert.True(await demo.SettleAsync());
     Assert.False(demo.IsRendering);
-    Assert.True(render.IsCompleted);
-    RenderResult stopped = (await render)!;
+    Assert.True(sleeping.Render.IsCompleted);
+    RenderResult stopped = (await sleeping.Render)!;
     Assert.True(stopped.Cancelled);
     // The stopped render's image came in before the wait ended, so an action after it (a move back) sees it in place.
     Assert.Equal(kept + 1, demo.History.Items.Count);
@@ -82,20 +92,14 @@ public class SettleTests
   [Fact]
   public async Task A_stopped_render_still_ending_after_the_allowed_wait_is_refused_then_settles()
   {
-    using var tmp = new TempDir();
-    string marker = tmp.File("started").Replace("\\", "/", StringComparison.Ordinal);
-    using var evaluator = new GrCis.Scripting.ScriptHost();
-    using DemoController demo = Demo(tmp, evaluator, marker, 2500);
-    demo.AbandonStuckScriptAfter = TimeSpan.FromMilliseconds(100);
-    Task<RenderResult?> render = demo.RenderAsync();
-    WaitForFile(marker);
-
+    using var sleeping = new SleepingRender(2500, TimeSpan.FromMilliseconds(100));
+    DemoController demo = sleeping.Demo;
     demo.Stop();
     Assert.False(await demo.SettleAsync());
     Assert.False(demo.IsBusy);
     Assert.True(demo.IsRendering);
 
-    await render.WaitAsync(TimeSpan.FromSeconds(30));
+    await sleeping.Render.WaitAsync(TimeSpan.FromSeconds(30));
     Assert.True(await demo.SettleAsync());
   }
 
