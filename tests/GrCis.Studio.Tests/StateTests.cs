@@ -164,7 +164,7 @@ public sealed class StateTests(StudioFixture studio) : IClassFixture<StudioFixtu
     using (HttpResponseMessage stop = await studio.Client.PostAsync("/api/stop", null))
       Assert.Equal(HttpStatusCode.NoContent, stop.StatusCode);
     // Asked once, as the page asks: accepted once the stopped render has ended, not refused while it ends.
-    using (HttpResponseMessage started = await studio.Client.PostAsJsonAsync("/api/animation",
+    using (HttpResponseMessage started = await studio.StartAnimation(
              new { scene = "Five balls", settings = new { width = 16, height = 12 }, start = 0.0, end = 0.2, fps = 10.0 }))
       Assert.Equal(HttpStatusCode.Accepted, started.StatusCode);
     await studio.PollUntil("/api/animation", a => !a.GetProperty("running").GetBoolean(), "the end of the animation");
