@@ -118,9 +118,12 @@ public sealed partial class PreparedScene
     // chosen by T, then member index, whatever the visiting order). Stack entries: an inner node (≥ 0) or a leaf lane
     // (~(node·4 + lane)), with the entry t of its box, re-checked against the shrinking best when popped.
     int size = bvh.StackSize;
-    // On the stack (not zeroed) up to a tree depth of about 340, far beyond any SAH tree of scene members.
-    Span<int> stack = size <= 1024 ? stackalloc int[size] : new int[size];
-    Span<double> stackT = size <= 1024 ? stackalloc double[size] : new double[size];
+    // In the frame (not zeroed) up to a tree depth of about 80, beyond any SAH tree of scene members; fixed buffers
+    // rather than stackalloc, whose dynamic frame costs every call (see WalkStack).
+    Unsafe.SkipInit(out WalkStack<int> ints);
+    Unsafe.SkipInit(out WalkStack<double> times);
+    Span<int> stack = size <= WalkStack<int>.Capacity ? ints : new int[size];
+    Span<double> stackT = size <= WalkStack<double>.Capacity ? times : new double[size];
     int sp = 0;
     int code = 0;
     while (true)

@@ -123,7 +123,8 @@ internal sealed class WhittedKernel
       i.Material = scratch.Material(i.Material!, surface, depth);
       // The library's Phong model writes into a stack buffer instead of a new array per light.
       bool phong = LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && IsPhongMaterial(i.Material) && surface.Length <= 16;
-      Span<double> buffer = stackalloc double[16];
+      Unsafe.SkipInit(out Bands16 lit);
+      Span<double> buffer = lit;
 
       if (lights != null)
         foreach (BoundLight light in lights)
@@ -150,7 +151,8 @@ internal sealed class WhittedKernel
     if (f.DoReflections)
     {
       Vector3d r = Geometry.SpecularReflection(i.Normal, viewer);
-      Span<double> ksBuffer = stackalloc double[16];
+      Unsafe.SkipInit(out Bands16 ksStore);
+      Span<double> ksBuffer = ksStore;
       scoped ReadOnlySpan<double> ks = default;
       bool have;
       if (LibraryTypes.IsLibraryPhongModel(i.ReflectanceModel) && IsPhongMaterial(i.Material) && Unsafe.As<PhongMaterial>(i.Material!) is { Color.Length: > 0 and <= 16 } pm)
@@ -363,5 +365,12 @@ internal sealed class WhittedKernel
   {
     for (int b = 0; b < color.Length; b++)
       color[b] = 0.0;
+  }
+
+  /// <summary>Sixteen bands in the frame (a local, not a stack allocation: no stack-guard cookie per call).</summary>
+  [InlineArray(16)]
+  struct Bands16
+  {
+    double first;
   }
 }
