@@ -351,12 +351,15 @@ public sealed partial class DemoController : IDisposable
     }
   }
 
+  /// <summary>Why <see cref="ComputeExtraViews"/> refuses while a render runs (the studio answers a request with it too).</summary>
+  public const string ExtraViewsNeedIdle = "Wait for the render to finish (or stop it) before computing the extra views.";
+
   /// <summary>Depth, normal and ray maps of the last render (after it finished).</summary>
   public ExtraViews ComputeExtraViews(CancellationToken cancel = default)
   {
     RenderJob job = LastJob ?? throw new InvalidOperationException("Render something first.");
     if (IsRendering)
-      throw new InvalidOperationException("Wait for the render to finish (or stop it) before computing the extra views.");
+      throw new InvalidOperationException(ExtraViewsNeedIdle);
     // The noise map is the last render's own estimate, when that render was of this job.
     NoiseImage? noise = LastResult is RenderResult r && ReferenceEquals(r.Job, job) ? r.Frame.Noise : null;
     return ExtraViews.Compute(job, cancel, noise);

@@ -29,7 +29,7 @@ internal static class ViewsApi
     {
       // A render that has ended, or was stopped, is let finish first: the views are of its scene and image.
       if (!await s.Controller.SettleAsync())
-        return Problems.NotSettled(s.Controller, "Wait for the render to finish (or stop it) before computing the extra views.");
+        return Problems.NotSettled(s.Controller, GrCis.Interactive.DemoController.ExtraViewsNeedIdle);
       try
       {
         ExtraViews views = s.ComputeViews(cancel);
