@@ -61,18 +61,24 @@ if [[ "${MODE:-render}" == whole ]]; then
     grcis_bin=$repo/src/GrCis.Cli/bin/publish/grcis
     dotnet publish "$repo/src/GrCis.Cli" -p:PublishProfile=ReadyToRun -v q -nologo >/dev/null
   fi
-  [[ -x "$grcis_bin" ]] || { echo "povray-compare: no grcis at $grcis_bin" >&2; exit 2; }
+  # A program, not a folder (a folder passes -x): GRCIS names the grcis executable itself.
+  [[ -f "$grcis_bin" && -x "$grcis_bin" ]] || { echo "povray-compare: no grcis program at $grcis_bin (GRCIS names the executable, e.g. <publish folder>/grcis)" >&2; exit 2; }
+  base_bin=${GRCIS_BASE:-}
+  [[ -z "$base_bin" || ( -f "$base_bin" && -x "$base_bin" ) ]] || { echo "povray-compare: no grcis program at GRCIS_BASE=$base_bin" >&2; exit 2; }
   median() { sort -g | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
   # Runs "$@" and appends "wall cpu" to the file $1 ($2... is the command); its output goes to $tmp/out.
   timed() {
     local file=$1; shift
     local t0 t1
     t0=$(date +%s.%N)
-    /usr/bin/time -f '%U %S' -o "$tmp/cpu" "$@" >"$tmp/out" 2>&1
+    if ! /usr/bin/time -f '%U %S' -o "$tmp/cpu" "$@" >"$tmp/out" 2>&1; then
+      echo "povray-compare: '$*' failed:" >&2
+      cat "$tmp/out" >&2
+      exit 1
+    fi
     t1=$(date +%s.%N)
     awk -v a="$t0" -v b="$t1" -v c="$(awk '{ print $1 + $2 }' "$tmp/cpu")" 'BEGIN { print b - a, c }' >>"$file"
   }
-  base_bin=${GRCIS_BASE:-}
   printf '%-12s %-9s %-8s %3s %2s  %9s %9s %9s  %8s %8s %9s  %9s %9s' scene size spp threads n "POV wall" "our wall" "ours/POV" \
     "POV cpu" "our cpu" "cpu ratio" "POV trace" "our render"
   [[ -n "$base_bin" ]] && printf '  %9s %9s %9s %10s' "base wall" "base/POV" "base cpu" "base rend"
