@@ -6,6 +6,7 @@ using System.Reflection;
 using System.Reflection.Emit;
 using Rendering;
 using Scene3D;
+using GrCis.TestSupport;
 using Xunit;
 
 namespace GrCis.Rendering.Tests.Meshes;
@@ -30,7 +31,7 @@ public class WalkStackTests
   public void Walk_uses_no_stackalloc(string name)
   {
     MethodInfo body = Assert.Single(Bodies(), m => m.Name == name);
-    Assert.DoesNotContain(OpCodes.Localloc, Instructions(body.GetMethodBody()!.GetILAsByteArray()!));
+    Assert.DoesNotContain(OpCodes.Localloc, IlOpcodes.Of(body));
   }
 
   [Fact]
@@ -38,7 +39,7 @@ public class WalkStackTests
   {
     // The reader itself: this probe allocates on the stack, so its body must show the opcode.
     MethodInfo probe = typeof(WalkStackTests).GetMethod(nameof(StackallocProbe), BindingFlags.NonPublic | BindingFlags.Static)!;
-    Assert.Contains(OpCodes.Localloc, Instructions(probe.GetMethodBody()!.GetILAsByteArray()!));
+    Assert.Contains(OpCodes.Localloc, IlOpcodes.Of(probe));
   }
 
   [Theory]
@@ -60,33 +61,5 @@ public class WalkStackTests
     Span<int> s = stackalloc int[n];
     s[0] = n;
     return s[0];
-  }
-
-  /// <summary>The opcodes of an IL body in order (each operand skipped by its encoded size).</summary>
-  static List<OpCode> Instructions(byte[] il)
-  {
-    var byValue = new Dictionary<short, OpCode>();
-    foreach (FieldInfo f in typeof(OpCodes).GetFields(BindingFlags.Public | BindingFlags.Static))
-    {
-      var op = (OpCode)f.GetValue(null)!;
-      byValue[op.Value] = op;
-    }
-    var ops = new List<OpCode>();
-    for (int i = 0; i < il.Length;)
-    {
-      OpCode op = byValue[il[i] == 0xFE ? (short)(0xFE00 | il[i + 1]) : il[i]];
-      i += op.Size;
-      ops.Add(op);
-      i += op.OperandType switch
-      {
-        OperandType.InlineNone => 0,
-        OperandType.ShortInlineBrTarget or OperandType.ShortInlineI or OperandType.ShortInlineVar => 1,
-        OperandType.InlineVar => 2,
-        OperandType.InlineI8 or OperandType.InlineR => 8,
-        OperandType.InlineSwitch => 4 + 4 * BitConverter.ToInt32(il, i),
-        _ => 4,
-      };
-    }
-    return ops;
   }
 }
