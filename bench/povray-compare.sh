@@ -61,10 +61,13 @@ if [[ "${MODE:-render}" == whole ]]; then
     grcis_bin=$repo/src/GrCis.Cli/bin/publish/grcis
     dotnet publish "$repo/src/GrCis.Cli" -p:PublishProfile=ReadyToRun -v q -nologo >/dev/null
   fi
-  # A program, not a folder (a folder passes -x): GRCIS names the grcis executable itself.
-  [[ -f "$grcis_bin" && -x "$grcis_bin" ]] || { echo "povray-compare: no grcis program at $grcis_bin (GRCIS names the executable, e.g. <publish folder>/grcis)" >&2; exit 2; }
+  # A program, not a folder (a folder passes -x): GRCIS and GRCIS_BASE name the grcis executable itself.
+  need_program() {
+    [[ -f "$2" && -x "$2" ]] || { echo "povray-compare: no grcis program at $1=$2 (name the executable, e.g. <publish folder>/grcis)" >&2; exit 2; }
+  }
+  need_program GRCIS "$grcis_bin"
   base_bin=${GRCIS_BASE:-}
-  [[ -z "$base_bin" || ( -f "$base_bin" && -x "$base_bin" ) ]] || { echo "povray-compare: no grcis program at GRCIS_BASE=$base_bin" >&2; exit 2; }
+  [[ -z "$base_bin" ]] || need_program GRCIS_BASE "$base_bin"
   median() { sort -g | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
   # Runs "$@" and appends "wall cpu" to the file $1 ($2... is the command); its output goes to $tmp/out.
   timed() {
