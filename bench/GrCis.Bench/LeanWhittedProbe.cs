@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace GrCis.Bench;
 
@@ -101,11 +102,14 @@ public sealed class LeanWhittedProbe
   }
 
   static V Cross(V a, V b) => new(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   static V Point(double[] m, V p) =>
     new(m[0] * p.X + m[1] * p.Y + m[2] * p.Z + m[3], m[4] * p.X + m[5] * p.Y + m[6] * p.Z + m[7], m[8] * p.X + m[9] * p.Y + m[10] * p.Z + m[11]);
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   static V Vector(double[] m, V p) =>
     new(m[0] * p.X + m[1] * p.Y + m[2] * p.Z, m[4] * p.X + m[5] * p.Y + m[6] * p.Z, m[8] * p.X + m[9] * p.Y + m[10] * p.Z);
   // A normal goes through the transpose of world-to-local.
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   static V Normal(double[] m, V p) =>
     new(m[0] * p.X + m[4] * p.Y + m[8] * p.Z, m[1] * p.X + m[5] * p.Y + m[9] * p.Z, m[2] * p.X + m[6] * p.Y + m[10] * p.Z);
 
@@ -145,6 +149,7 @@ public sealed class LeanWhittedProbe
   }
 
   /// <summary>The unit ball of solid <paramref name="k"/>'s frame: both roots of the ray's quadratic.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   static bool Ball(int k, V o, V d, double len2, out double t1, out double t2)
   {
     V lo = Point(WorldToLocal[k], o), ld = Vector(WorldToLocal[k], d);
@@ -161,6 +166,7 @@ public sealed class LeanWhittedProbe
   }
 
   /// <summary>The floor's local z = 0 plane: the ray's t there.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]
   static bool Floor(V o, V d, out double t)
   {
     V lo = Point(WorldToLocal[2], o), ld = Vector(WorldToLocal[2], d);
