@@ -1,4 +1,5 @@
 using BenchmarkDotNet.Attributes;
+using GrCis.Hosting;
 using Rendering;
 using Rendering.Execution;
 using Rendering.Imaging;
@@ -29,7 +30,7 @@ public class LeanWhittedBenchmarks
 
   /// <summary>The library's render of the built-in scene; returns the sum of its pixels.</summary>
   [Benchmark(Baseline = true)]
-  public double Kernel() => Sum(RenderKernel(scene, Width, Height, Grid, new RenderContext()));
+  public double Kernel() => Sum(RenderKernel(scene, Width, Height, Grid).Image);
 
   /// <summary>The lean ray tree; returns the sum of its pixels.</summary>
   [Benchmark]
@@ -41,12 +42,15 @@ public class LeanWhittedBenchmarks
     return sum;
   }
 
-  /// <summary>Renders <paramref name="scene"/> on one thread through the library's tile renderer and Whitted ray tracer.</summary>
-  public static FloatImage RenderKernel(IRayScene scene, int width, int height, int grid, RenderContext context)
+  /// <summary>
+  /// Renders <paramref name="scene"/> on one thread with the library's Whitted ray tracer, through the hosting path every
+  /// front end uses; its statistics count the rays.
+  /// </summary>
+  public static FrameResult RenderKernel(IRayScene scene, int width, int height, int grid)
   {
     var tracer = new RayTracing(scene);
     var synthesizer = new SupersamplingImageSynthesizer { Width = width, Height = height, Supersampling = grid * grid };
-    return TileRenderer.Render(scene, tracer, synthesizer, new RenderOptions { Threads = 1 }, null, default, context);
+    return FrameRendering.Render(scene, tracer, synthesizer, new RenderOptions { Threads = 1 }, context: new RenderContext());
   }
 
   static double Sum(FloatImage image)

@@ -123,15 +123,15 @@ public sealed class LeanWhittedProbe
     for (int k = 0; k < 2; k++)
       if (Ball(k, o, d, len2, out double t1, out double t2))
       {
-        if (t1 > 0.0 && t1 * t1 * len2 > Epsilon2)
+        if (Beyond(t1, len2))
         {
           if (t1 < tBest)
             (tBest, best) = (t1, k);
         }
-        else if (t2 > 0.0 && t2 * t2 * len2 > Epsilon2 && t2 < tBest)
+        else if (Beyond(t2, len2) && t2 < tBest)
           (tBest, best) = (t2, k);
       }
-    if (Floor(o, d, out double t) && t * t * len2 > Epsilon2 && t < tBest)
+    if (Floor(o, d, out double t) && Beyond(t, len2) && t < tBest)
       (tBest, best) = (t, 2);
     return best;
   }
@@ -143,10 +143,13 @@ public sealed class LeanWhittedProbe
     double len2 = V.Dot(d, d);
     for (int k = 0; k < 2; k++)
       if (Ball(k, o, d, len2, out double t1, out double t2) &&
-          (t1 > 0.0 && t1 * t1 * len2 > Epsilon2 && t1 < 1.0 || t2 > 0.0 && t2 * t2 * len2 > Epsilon2 && t2 < 1.0))
+          (Beyond(t1, len2) && t1 < 1.0 || Beyond(t2, len2) && t2 < 1.0))
         return true;
-    return Floor(o, d, out double t) && t * t * len2 > Epsilon2 && t < 1.0;
+    return Floor(o, d, out double t) && Beyond(t, len2) && t < 1.0;
   }
+
+  /// <summary>A root in front of the origin and farther than the epsilon (GrCis's rule for a ray's first record).</summary>
+  static bool Beyond(double t, double len2) => t > 0.0 && t * t * len2 > Epsilon2;
 
   /// <summary>The unit ball of solid <paramref name="k"/>'s frame: both roots of the ray's quadratic.</summary>
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -206,8 +209,8 @@ public sealed class LeanWhittedProbe
     if (viewOut == cosAlpha > 0.0)
     {
       r = normal * (2.0 * cosAlpha) - input;
-      // Total internal reflection takes the transmitted energy (the mirror's coefficient only).
-      if (!withDiffuse && cosAlpha <= 0.0 && -cosAlpha <= m.CosTotal)
+      // Total internal reflection takes the transmitted energy.
+      if (cosAlpha <= 0.0 && -cosAlpha <= m.CosTotal)
         ks = Math.Min(ks + m.Kt, 1.0 - m.Kd);
     }
     else if (withDiffuse)
@@ -236,10 +239,10 @@ public sealed class LeanWhittedProbe
     V normal = Normal(WorldToLocal[k], k < 2 ? local : new V(0.0, 0.0, 1.0)).Unit();
     Material m = k == 0 ? Glass : Yellow;
     double sr = m.R, sg = m.G, sb = m.B;
-    if (k == 2 && ((long)Math.Floor(local.X * CheckerFrequency) + (long)Math.Floor(local.Y * CheckerFrequency) & 1) != 0)
-      (sr, sg, sb) = (1.0, 1.0, 1.0);
-    else if (k == 2)
-      (sr, sg, sb) = (0.3, 0.0, 0.0);
+    if (k == 2)
+      (sr, sg, sb) = ((long)Math.Floor(local.X * CheckerFrequency) + (long)Math.Floor(local.Y * CheckerFrequency) & 1) != 0
+        ? (1.0, 1.0, 1.0)
+        : (0.3, 0.0, 0.0);
 
     V viewer = -d.Unit();
     double ambient = Ambient * (V.Dot(viewer, normal) > 0.0 ? m.Ka : m.Ka * m.Kt);

@@ -1,5 +1,4 @@
 using Rendering;
-using Rendering.Execution;
 
 namespace GrCis.Bench.Tests;
 
@@ -15,14 +14,14 @@ public class LeanWhittedProbeTests
     const int width = 80, height = 60, grid = 4;
     var scene = new DefaultRayScene();
     Scenes.TwoSpheres(scene, "");
-    var context = new RenderContext();
-    float[] kernel = LeanWhittedBenchmarks.RenderKernel(scene, width, height, grid, context).Data;
+    GrCis.Hosting.FrameResult frame = LeanWhittedBenchmarks.RenderKernel(scene, width, height, grid);
+    float[] kernel = frame.Image.Data;
     var probe = new LeanWhittedProbe();
     double[] lean = probe.Render(width, height, grid);
 
     // Rays: closest-hit and shadow queries alike (the kernel counts both); 4 % apart at 640×480 when this was written.
     long leanRays = probe.Queries + probe.ShadowQueries;
-    Assert.InRange((double)leanRays / context.Rays, 0.92, 1.02);
+    Assert.InRange((double)leanRays / frame.Statistics.Rays, 0.92, 1.02);
     Assert.True(probe.Queries >= width * height * grid * grid, $"{probe.Queries} queries");
     Assert.InRange((double)probe.Hits / probe.Queries, 0.55, 0.75);
 
