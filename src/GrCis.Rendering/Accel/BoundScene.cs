@@ -34,6 +34,12 @@ internal sealed class BoundScene
   /// <summary>The scene's geometry.</summary>
   public readonly IIntersectable? Intersectable;
 
+  /// <summary>
+  /// The prepared scene when the kernel's plain-surface path shades this binding's rays (set once, by the kernel, when it
+  /// binds: <c>WhittedKernel.PlainSceneOf</c>); null: every ray takes the general path.
+  /// </summary>
+  public PreparedScene? Plain;
+
   public BoundScene(WhittedKernel kernel, IRayScene scene)
   {
     Kernel = kernel;

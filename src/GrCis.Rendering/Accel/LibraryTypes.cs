@@ -93,6 +93,37 @@ internal static partial class LibraryTypes
   [MethodImpl(MethodImplOptions.AggressiveInlining)]
   public static bool CopiesIntoScratch(IMaterial material) => material.GetType() == typeof(PhongMaterial);
 
+  /// <summary>
+  /// A member the Whitted kernel may shade without a hit object (its plain-surface path): exactly the library's
+  /// <see cref="Sphere"/> or <see cref="Plane"/>, completed surface-only, shaded by the library's Phong model and exactly a
+  /// <see cref="PhongMaterial"/> with no RECURSION function, textured by nothing but exact <see cref="CheckerTexture"/>s,
+  /// every colour of 1 to 16 bands. Decided when the scene is prepared.
+  /// </summary>
+  public static bool IsPlainSurface(in PreparedMember m)
+  {
+    if (m.Csg != null || m.Direct is not (DirectSolid.Sphere or DirectSolid.Plane) || !m.AttributesCached || m.Recursion != null ||
+        m.Completion is not (HitCompletion.Sphere or HitCompletion.SphereTextured or HitCompletion.Plane) ||
+        !IsLibraryPhongModel(m.Model) || m.Material?.GetType() != typeof(PhongMaterial) ||
+        !FitsBands(m.Material.Color) || m.Color != null && !FitsBands(m.Color))
+      return false;
+    if (m.Textures != null)
+      foreach (ITexture t in m.Textures)
+        if (t.GetType() != typeof(CheckerTexture) || !FitsBands(((CheckerTexture)t).Color2))
+          return false;
+    return true;
+  }
+
+  static bool FitsBands(double[]? color) => color is { Length: > 0 and <= 16 };
+
+  /// <summary>
+  /// A <see cref="RayTracing"/> class that keeps Whitted's secondary directions (<c>ReflectionDirection</c>,
+  /// <c>RefractionDirection</c>): the kernel's plain-surface path, which has no hit object to pass them, may take its rays.
+  /// </summary>
+  public static bool KeepsWhittedDirections(RayTracing function) =>
+    !SubclassCheck.OverridesAnyBelow(function.GetType(), typeof(RayTracing), WhittedDirections);
+
+  static readonly string[] WhittedDirections = [nameof(RayTracing.ReflectionDirection), nameof(RayTracing.RefractionDirection)];
+
   // ---------------------------------------------------------------- image functions (decided once per function)
 
   /// <summary>An image function class overriding a method that sees hits (<see cref="RayCasting.HitReaders"/>): it may read anything of a hit.</summary>

@@ -55,6 +55,9 @@ public sealed partial class PreparedScene : ISceneQuery
   // Union-merge semantics over all members; false: one member whose raw list the scene returns.
   readonly bool union;
 
+  // Every member a plain surface (PlainSurfaces).
+  readonly bool plainSurfaces;
+
   long fallbacks;
 
   /// <summary>The intersectable this snapshot was prepared from.</summary>
@@ -137,6 +140,7 @@ public sealed partial class PreparedScene : ISceneQuery
       anyHit = capabilities.ListCount == 0 && !Array.Exists(members, m => m.NoShadow);
     }
     lineBoxes = Array.Exists(always, k => members[k].HasLineBox);
+    plainSurfaces = union && Array.TrueForAll(members, m => LibraryTypes.IsPlainSurface(m));
   }
 
 
@@ -195,6 +199,51 @@ public sealed partial class PreparedScene : ISceneQuery
     if (q.BestIndex == int.MaxValue)
       return null;
     return list ?? Complete(ref Solid(q.BestIndex, q.BestLeaf), q.BestHit, reuse, surfaceOnly);
+  }
+
+  /// <summary>
+  /// True when every member is a plain surface (<see cref="LibraryTypes.IsPlainSurface"/>) under union semantics: the
+  /// Whitted kernel may shade this scene's hits from <see cref="FirstRecord"/> without hit objects.
+  /// </summary>
+  internal bool PlainSurfaces => plainSurfaces;
+
+  /// <summary>Member <paramref name="index"/> as the preparation bound it.</summary>
+  internal ref readonly PreparedMember Member(int index) => ref members[index];
+
+  /// <summary>
+  /// The record <see cref="FirstHit(Vector3d, Vector3d, Intersection?, bool)"/> completes, left as a record: 1 with the
+  /// member and its record, 0 when the ray hits nothing, -1 when the answer is not a member's own record (a list member's
+  /// hit, a CSG leaf's, or the faithful path's), which <see cref="FirstHit(Vector3d, Vector3d, Intersection?, bool)"/> gives.
+  /// </summary>
+  [SkipLocalsInit]   // the query is started field by field, not zeroed
+  [MethodImpl(MethodImplOptions.NoInlining)]   // as FirstHit: kept out of the shading kernel
+  internal int FirstRecord(in Vector3d p0, in Vector3d p1, out int member, out SolidRecord hit)
+  {
+    member = -1;
+    hit = default;
+    if (!union)
+      return members.Length == 0 ? 0 : -1;
+    Unsafe.SkipInit(out Query q);
+    q.Start(p1.LengthSquared, double.PositiveInfinity);
+    Intersection? list = null;
+    if (!Closest(ref q, ref list, p0, p1))
+      return -1;
+    if (q.InsideIndex >= 0)
+    {
+      // As FirstHit: the inside member's exit, unless another member is entered first (or at the same T).
+      if ((q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT) || q.InsideLeaf >= 0)
+        return -1;
+      member = q.InsideIndex;
+      hit = q.InsideHit;
+      return 1;
+    }
+    if (q.BestIndex == int.MaxValue)
+      return 0;
+    if (list != null || q.BestLeaf >= 0)
+      return -1;
+    member = q.BestIndex;
+    hit = q.BestHit;
+    return 1;
   }
 
   /// <summary>The solid a record belongs to: the member itself, or leaf <paramref name="leaf"/> of its CSG kernel.</summary>

@@ -22,11 +22,15 @@ namespace Rendering.Accel;
 /// array per light; the thread's shading scratch is fetched once per sample.
 /// </para>
 /// </summary>
-internal sealed class WhittedKernel
+internal sealed partial class WhittedKernel
 {
   readonly RayTracing function;
 
-  WhittedKernel(RayTracing function) => this.function = function;
+  WhittedKernel(RayTracing function)
+  {
+    this.function = function;
+    plainFunction = !function.firstHitOverridden && LibraryTypes.KeepsWhittedDirections(function);
+  }
 
   /// <summary>
   /// The kernel of <paramref name="function"/>, or null when it must be sampled through its own <c>GetSample</c>:
@@ -54,6 +58,8 @@ internal sealed class WhittedKernel
       if (camera == null || !camera.GetRay(x, y, out p0, out p1))
         return 11L;
     }
+    if (bound.Plain != null && scratch.Observer == null)
+      return ShadePlain(scratch, bound, 0, 1.0, p0, p1, color);
     return Shade(scratch, bound, 0, 1.0, ref p0, ref p1, color);
   }
 
@@ -61,7 +67,11 @@ internal sealed class WhittedKernel
   BoundScene Bind(ShadingScratch scratch, IRayScene scene)
   {
     BoundScene? bound = scratch.Bound;
-    return bound != null && bound.Kernel == this && bound.Scene == scene ? bound : scratch.Bound = new BoundScene(this, scene);
+    if (bound != null && bound.Kernel == this && bound.Scene == scene)
+      return bound;
+    scratch.Bound = bound = new BoundScene(this, scene);
+    bound.Plain = PlainSceneOf(scratch, bound);   // after the binding is the thread's: the prepared scene is looked up through it
+    return bound;
   }
 
   /// <summary><see cref="RayTracing.shade"/> of the function.</summary>
@@ -87,13 +97,7 @@ internal sealed class WhittedKernel
     if (i == null)
     {
       f.rayRegisterer?.RegisterRay(AbstractRayRegisterer.RayType.rayVisualizerNormal, depth, p0, direction * 100000.0);
-      IBackground? background = library ? bound.Background : sc.Background;
-      if (bound.DefaultBackground != null)
-        hash = bound.DefaultBackground.Fill(color);
-      else if (background != null)
-        hash = background.GetColor(p1, color);
-      else
-        hash = RayTracing.FillBackground(sc, color);
+      hash = Background(bound, p1, color);
       goto done;
     }
 
@@ -222,6 +226,17 @@ internal sealed class WhittedKernel
     // Every way out passes here, so an observer sees the end of each ray it saw begin.
     observer?.EndRay(kind, rayDepth, p0, p1, i);
     return hash;
+  }
+
+  /// <summary>The background's colour of a ray that hits nothing, into <paramref name="color"/>; returns the hash.</summary>
+  static long Background(BoundScene bound, in Vector3d p1, double[] color)
+  {
+    IBackground? background = bound.Library ? bound.Background : bound.Scene.Background;
+    if (bound.DefaultBackground != null)
+      return bound.DefaultBackground.Fill(color);
+    if (background != null)
+      return background.GetColor(p1, color);
+    return RayTracing.FillBackground(bound.Scene, color);
   }
 
   /// <summary>
@@ -353,7 +368,7 @@ internal sealed class WhittedKernel
   }
 
   /// <summary>color += k · src; a one-element src adds the same value to every band.</summary>
-  static void AddScaled(double[] color, double[] src, double k)
+  static void AddScaled(double[] color, ReadOnlySpan<double> src, double k)
   {
     for (int b = 0; b < color.Length; b++)
       color[b] += k * src[Math.Min(b, src.Length - 1)];

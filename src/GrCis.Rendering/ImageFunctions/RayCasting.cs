@@ -15,7 +15,7 @@ public class RayCasting : IImageFunction
   protected internal const long HASH_LIGHT = 101L;
 
   /// <summary>Factor of the path hash for each texture applied to the hit (with the texture's own hash).</summary>
-  protected const long HASH_TEXTURE = 11L;
+  protected internal const long HASH_TEXTURE = 11L;
 
   /// <summary>The scene given to the constructor or set through <see cref="Scene"/>; null = the scene being rendered (<see cref="MT.scene"/>).</summary>
   protected IRayScene? scene;

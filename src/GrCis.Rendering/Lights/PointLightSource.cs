@@ -58,10 +58,13 @@ public class PointLightSource : ILightSource
   public virtual double[]? GetIntensity(Intersection intersection, out Vector3d dir) => Intensity(intersection, out dir);
 
   /// <summary><see cref="GetIntensity"/> of this class itself (the prepared Whitted kernel calls it directly for exactly this type).</summary>
-  internal double[]? Intensity(Intersection intersection, out Vector3d dir)
+  internal double[]? Intensity(Intersection intersection, out Vector3d dir) => Intensity(intersection.CoordWorld, intersection.Normal, out dir);
+
+  /// <summary><see cref="GetIntensity"/> of this class at world point <paramref name="point"/> with unit normal <paramref name="normal"/>.</summary>
+  internal double[]? Intensity(in Vector3d point, in Vector3d normal, out Vector3d dir)
   {
-    dir = (position ?? Vector3d.Zero) - intersection.CoordWorld;
-    if (Vector3d.Dot(dir, intersection.Normal) <= 0.0)
+    dir = (position ?? Vector3d.Zero) - point;
+    if (Vector3d.Dot(dir, normal) <= 0.0)
       return null;
     return intensity;
   }

@@ -49,19 +49,25 @@ public class PhongModel : IReflectanceModel
   /// The same computation into a caller's buffer of <c>mat.Color.Length</c> bands (the shading hot path
   /// uses it to avoid one array per light and hit).
   /// </summary>
-  internal static void ColorReflection(PhongMaterial mat, in Vector3d normal, in Vector3d input, in Vector3d output, ReflectionComponent comp, Span<double> result)
+  internal static void ColorReflection(PhongMaterial mat, in Vector3d normal, in Vector3d input, in Vector3d output, ReflectionComponent comp, Span<double> result) =>
+    ColorReflection(mat, mat.Color, normal, input, output, comp, result);
+
+  /// <summary>
+  /// The same computation for <paramref name="mat"/>'s coefficients and the colour <paramref name="color"/> in place of
+  /// <c>mat.Color</c> (the prepared kernel shades a hit's surface colour without a material copy per hit).
+  /// </summary>
+  internal static void ColorReflection(PhongMaterial mat, ReadOnlySpan<double> color, in Vector3d normal, in Vector3d input, in Vector3d output, ReflectionComponent comp, Span<double> result)
   {
     // Ambient light has no direction.
     if (input.X == 0.0 && input.Y == 0.0 && input.Z == 0.0)
-      Ambient(mat, Vector3d.Dot(output, normal) > 0.0, result);
+      Ambient(mat, color, Vector3d.Dot(output, normal) > 0.0, result);
     else
-      Directional(mat, normal, input.Normalized(), output, comp, result);
+      Directional(mat, color, normal, input.Normalized(), output, comp, result);
   }
 
-  static void Ambient(PhongMaterial mat, bool viewOut, Span<double> result)
+  static void Ambient(PhongMaterial mat, ReadOnlySpan<double> color, bool viewOut, Span<double> result)
   {
     double coef = viewOut ? mat.Ka : mat.Ka * mat.Kt;
-    double[] color = mat.Color;
     result = result[..color.Length];
     for (int i = 0; i < result.Length; i++)
       result[i] = coef * color[i];
@@ -72,7 +78,11 @@ public class PhongModel : IReflectanceModel
   /// of a non-zero input, given normalized (by <see cref="Vector3d.Normalized"/>): a caller that already has that
   /// value (the shading's view direction) saves its square root and division.
   /// </summary>
-  internal static void Directional(PhongMaterial mat, in Vector3d normal, in Vector3d unitInput, in Vector3d output, ReflectionComponent comp, Span<double> result)
+  internal static void Directional(PhongMaterial mat, in Vector3d normal, in Vector3d unitInput, in Vector3d output, ReflectionComponent comp, Span<double> result) =>
+    Directional(mat, mat.Color, normal, unitInput, output, comp, result);
+
+  /// <summary><see cref="Directional(PhongMaterial, in Vector3d, in Vector3d, in Vector3d, ReflectionComponent, Span{double})"/> with <paramref name="color"/> in place of <c>mat.Color</c>.</summary>
+  internal static void Directional(PhongMaterial mat, ReadOnlySpan<double> color, in Vector3d normal, in Vector3d unitInput, in Vector3d output, ReflectionComponent comp, Span<double> result)
   {
     bool viewOut = Vector3d.Dot(output, normal) > 0.0;
     Vector3d input = unitInput;
@@ -122,7 +132,6 @@ public class PhongModel : IReflectanceModel
         specular = coefficient * ks * Geometry.IntPow(cosBeta, mat.H);
     }
 
-    double[] color = mat.Color;
     result = result[..color.Length];
     for (int i = 0; i < result.Length; i++)
       result[i] = diffuse * color[i] + specular;

@@ -187,7 +187,7 @@ public class Plane : DefaultSceneNode, ISolid, IRecordSolid
   }
 
   /// <summary>Texture coordinates of local point <paramref name="p"/>: scaled to the rectangle, or the triangle's.</summary>
-  Vector2d TextureCoordAt(in Vector3d p) =>
+  internal Vector2d TextureCoordAt(in Vector3d p) =>
     Triangle
       ? new Vector2d(p.X * XMax, p.Y * YMax)
       : new Vector2d(CanonicU ? p.X : (p.X - XMin) * ScaleU, CanonicV ? p.Y : (p.Y - YMin) * ScaleV);

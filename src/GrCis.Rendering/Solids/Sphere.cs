@@ -112,7 +112,7 @@ public class Sphere : DefaultSceneNode, ISolid, IRecordSolid
   }
 
   /// <summary>Longitude and colatitude/π of local point <paramref name="p"/> (<paramref name="r"/>: its distance from the z axis).</summary>
-  static Vector2d TextureCoordAt(in Vector3d p, double r) =>
+  internal static Vector2d TextureCoordAt(in Vector3d p, double r) =>
     new(SolidSupport.Longitude(p.X, p.Y), Math.Atan2(r, p.Z) / Math.PI);
 
   /// <summary>

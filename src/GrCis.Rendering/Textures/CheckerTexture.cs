@@ -1,5 +1,6 @@
 using System;
 using MathSupport;
+using OpenTK.Mathematics;
 
 namespace Rendering;
 
@@ -33,12 +34,19 @@ public class CheckerTexture : ITexture
   /// <param name="inter">A completed hit.</param>
   public virtual long Apply(Intersection inter)
   {
-    long ui = (long)Math.Floor(inter.TextureCoord.X * Fu);
-    long vi = (long)Math.Floor(inter.TextureCoord.Y * Fv);
     // GrCis gives the hit its own copy of Color2; a pooled hit's own colour array takes the values instead.
-    if (((ui + vi) & 1) != 0 && !inter.TryCopySurfaceColor(Color2))
+    if (IsOdd(inter.TextureCoord, out long hash) && !inter.TryCopySurfaceColor(Color2))
       inter.SurfaceColor = (double[])Color2.Clone();
     inter.textureApplied = true;
-    return ui + (long)RandomStatic.numericRecipes((ulong)vi);
+    return hash;
+  }
+
+  /// <summary>True when texture coordinate <paramref name="uv"/> lies in an odd cell; <paramref name="hash"/> is the cell's hash (what <see cref="Apply"/> returns).</summary>
+  internal bool IsOdd(in Vector2d uv, out long hash)
+  {
+    long ui = (long)Math.Floor(uv.X * Fu);
+    long vi = (long)Math.Floor(uv.Y * Fv);
+    hash = ui + (long)RandomStatic.numericRecipes((ulong)vi);
+    return ((ui + vi) & 1) != 0;
   }
 }
