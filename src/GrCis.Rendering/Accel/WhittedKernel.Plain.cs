@@ -124,12 +124,7 @@ internal sealed partial class WhittedKernel
       if (newImportance >= f.MinImportance)
       {
         hash += RayTracing.HASH_REFLECT * ShadePlain(scratch, bound, depth, newImportance, point, r, comp);
-        if (ks.Length >= bands)
-          for (int b = 0; b < bands; b++)
-            color[b] += ks[b] * comp[b];
-        else
-          for (int b = 0; b < bands; b++)
-            color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
+        AddWeighted(color, ks, comp);
       }
     }
 

@@ -191,12 +191,7 @@ internal sealed partial class WhittedKernel
             if (observer != null)
               scratch.NextKind = RayKind.Reflected;
             hash += RayTracing.HASH_REFLECT * Shade(scratch, bound, depth, newImportance, ref origin, ref reflected, comp);
-            if (ks.Length >= bands)
-              for (int b = 0; b < bands; b++)
-                color[b] += ks[b] * comp[b];
-            else
-              for (int b = 0; b < bands; b++)
-                color[b] += ks[Math.Min(b, ks.Length - 1)] * comp[b];
+            AddWeighted(color, ks, comp);
           }
         }
       }
@@ -365,6 +360,19 @@ internal sealed partial class WhittedKernel
     else
       for (int b = 0; b < bands; b++)
         color[b] += transmit * light[Math.Min(b, light.Length - 1)] * reflected[Math.Min(b, reflected.Length - 1)];
+  }
+
+  /// <summary>color += weights · src, band by band; weights with fewer bands repeat their last one.</summary>
+  [MethodImpl(MethodImplOptions.AggressiveInlining)]   // once per reflected ray, a short loop
+  static void AddWeighted(double[] color, ReadOnlySpan<double> weights, double[] src)
+  {
+    int bands = color.Length;
+    if (weights.Length >= bands)
+      for (int b = 0; b < bands; b++)
+        color[b] += weights[b] * src[b];
+    else
+      for (int b = 0; b < bands; b++)
+        color[b] += weights[Math.Min(b, weights.Length - 1)] * src[b];
   }
 
   /// <summary>color += k · src; a one-element src adds the same value to every band.</summary>

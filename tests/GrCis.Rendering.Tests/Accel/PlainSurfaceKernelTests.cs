@@ -15,21 +15,6 @@ namespace GrCis.Rendering.Tests.Accel;
 /// </summary>
 public class PlainSurfaceKernelTests
 {
-  sealed class TextbookRayTracing(IRayScene scene) : RayTracing(scene)
-  {
-    public override long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color) =>
-      base.shade(depth, importance, ref p0, ref p1, color);
-  }
-
-  sealed class WiderMirror : RayTracing
-  {
-    protected internal override bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction)
-    {
-      direction = mirror + new Vector3d(0.0, 0.05, 0.0);
-      return true;
-    }
-  }
-
   sealed class OwnLight(Vector3d position, double intensity) : PointLightSource(position, intensity);
 
   sealed class OwnChecker(double fu, double fv, double[] color2) : CheckerTexture(fu, fv, color2);
@@ -42,7 +27,7 @@ public class PlainSurfaceKernelTests
     return scene;
   }
 
-  /// <summary>Whether <paramref name="function"/>'s kernel shades <paramref name="scene"/> on the plain path (bound on this thread).</summary>
+  /// <summary>Whether <paramref name="function"/>'s kernel shades its scene on the plain path (bound on this thread).</summary>
   static bool TakesPlainPath(RayTracing function)
   {
     function.Prepare();
@@ -78,7 +63,7 @@ public class PlainSurfaceKernelTests
 
     // A subclass's own mirror direction (the plain path has no hit to hand it).
     DefaultRayScene mirrored = Scene("Two spheres");
-    Assert.False(TakesPlainPath(new WiderMirror { Scene = mirrored }));
+    Assert.False(TakesPlainPath(new WhittedKernelTests.WiderMirror { Scene = mirrored }));
     // A light of a script's class.
     DefaultRayScene lit = Scene("Two spheres");
     lit.Sources!.Add(new OwnLight(new Vector3d(3.0, 5.0, -4.0), 0.5));
@@ -132,7 +117,7 @@ public class PlainSurfaceKernelTests
     // One scene for both: a hit's hash is its solid's object hash.
     DefaultRayScene scene = Scene("Two spheres");
     var function = new RayTracing(scene);
-    var textbook = new TextbookRayTracing(scene);
+    var textbook = new WhittedKernelTests.TextbookRayTracing(scene);
     Apply(variant, scene, function, textbook);
     Assert.True(TakesPlainPath(function), $"{variant}: the plain path was not taken");
     WhittedKernel kernel = WhittedKernel.For(function)!;

@@ -18,7 +18,7 @@ namespace GrCis.Rendering.Tests.Accel;
 public class WhittedKernelTests
 {
   /// <summary>Overrides <c>shade</c> (by calling it): the renderer must sample it through the teaching class.</summary>
-  sealed class TextbookRayTracing(IRayScene scene) : RayTracing(scene)
+  internal sealed class TextbookRayTracing(IRayScene scene) : RayTracing(scene)
   {
     public override long shade(int depth, double importance, ref Vector3d p0, ref Vector3d p1, double[] color) =>
       base.shade(depth, importance, ref p0, ref p1, color);
@@ -34,7 +34,8 @@ public class WhittedKernelTests
     public override long GetSample(double x, double y, double[] color) => base.GetSample(x, y, color);
   }
 
-  sealed class WiderMirror : RayTracing
+  /// <summary>A subclass with its own mirrored direction (a hook the kernel asks the function for).</summary>
+  internal sealed class WiderMirror : RayTracing
   {
     protected internal override bool ReflectionDirection(Intersection i, Vector3d mirror, int depth, out Vector3d direction)
     {
