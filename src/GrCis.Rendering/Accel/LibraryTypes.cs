@@ -95,14 +95,15 @@ internal static partial class LibraryTypes
 
   /// <summary>
   /// A member the Whitted kernel may shade without a hit object (its plain-surface path): exactly the library's
-  /// <see cref="Sphere"/> or <see cref="Plane"/>, completed surface-only, shaded by the library's Phong model and exactly a
-  /// <see cref="PhongMaterial"/> with no RECURSION function, textured by nothing but exact <see cref="CheckerTexture"/>s,
-  /// every colour of 1 to 16 bands. Decided when the scene is prepared.
+  /// <see cref="Sphere"/>, <see cref="Plane"/> or <see cref="Cube"/>, completed surface-only, shaded by the library's Phong
+  /// model and exactly a <see cref="PhongMaterial"/> with no RECURSION function, textured by nothing but exact
+  /// <see cref="CheckerTexture"/>s, every colour of 1 to 16 bands. Decided when the scene is prepared.
   /// </summary>
   public static bool IsPlainSurface(in PreparedMember m)
   {
-    if (m.Csg != null || m.Direct is not (DirectSolid.Sphere or DirectSolid.Plane) || !m.AttributesCached || m.Recursion != null ||
-        m.Completion is not (HitCompletion.Sphere or HitCompletion.SphereTextured or HitCompletion.Plane) ||
+    bool solid = m.Direct is DirectSolid.Sphere or DirectSolid.Plane || m.RecordSolid?.GetType() == typeof(Cube);
+    if (m.Csg != null || !solid || !m.AttributesCached || m.Recursion != null ||
+        m.Completion is not (HitCompletion.Sphere or HitCompletion.SphereTextured or HitCompletion.Plane or HitCompletion.Cube) ||
         !IsLibraryPhongModel(m.Model) || m.Material?.GetType() != typeof(PhongMaterial) ||
         !FitsBands(m.Material.Color) || m.Color != null && !FitsBands(m.Color))
       return false;

@@ -6,7 +6,7 @@ using OpenTK.Mathematics;
 namespace Rendering.Accel;
 
 /// <summary>
-/// The kernel's plain-surface path: <see cref="Shade"/> for a scene of library balls and planes shaded by the Phong
+/// The kernel's plain-surface path: <see cref="Shade"/> for a scene of library balls, planes and cubes shaded by the Phong
 /// model (checkers at most) and lit by point and ambient lights, with the hit kept as a record on the stack. Where the
 /// general path fills a pooled <see cref="Intersection"/> (reset field by field, completed, textured) and copies the
 /// material with the surface colour per hit, this one computes the same world point, normal, surface colour and hash
@@ -154,9 +154,16 @@ internal sealed partial class WhittedKernel
   /// </summary>
   static long Surface(in PreparedMember m, in SolidRecord hit, out Vector3d point, out Vector3d normal, Span<double> color, out int bands)
   {
-    bool sphere = m.Direct == DirectSolid.Sphere;
+    HitCompletion shape = m.Completion;
     point = Vector3d.TransformPosition(hit.CoordLocal, m.LocalToWorld);
-    normal = Vector3d.TransformNormalInverse(sphere ? hit.CoordLocal : Vector3d.UnitZ, m.WorldToLocal);
+    // The local normal the solid's hit set-up gives: the point itself on the unit ball, +z on the plane, the face's axis on the cube.
+    Vector3d local = shape switch
+    {
+      HitCompletion.Plane => Vector3d.UnitZ,
+      HitCompletion.Cube => Cube.FaceNormal(hit.Data),
+      _ => hit.CoordLocal,
+    };
+    normal = Vector3d.TransformNormalInverse(local, m.WorldToLocal);
     normal.Normalize();
     if (hit.Enter != hit.Front)
       normal = -normal;
@@ -179,9 +186,12 @@ internal sealed partial class WhittedKernel
     if (m.Textures is { First: not null } textures)
     {
       Vector3d p = hit.CoordLocal;
-      Vector2d uv = sphere
-        ? Sphere.TextureCoordAt(p, Math.Sqrt(p.X * p.X + p.Y * p.Y))
-        : Unsafe.As<Plane>(m.RecordSolid).TextureCoordAt(p);
+      Vector2d uv = shape switch
+      {
+        HitCompletion.Plane => Unsafe.As<Plane>(m.RecordSolid).TextureCoordAt(p),
+        HitCompletion.Cube => Cube.TextureCoordAt(p, local),
+        _ => Sphere.TextureCoordAt(p, Math.Sqrt(p.X * p.X + p.Y * p.Y)),
+      };
       foreach (ITexture texture in textures)
       {
         CheckerTexture checker = Unsafe.As<CheckerTexture>(texture);

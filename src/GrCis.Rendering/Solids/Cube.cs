@@ -119,7 +119,7 @@ public class Cube : DefaultSceneNode, ISolid, IRecordSolid
   }
 
   /// <summary>Outward normal of face 2·axis (positive side) or 2·axis + 1 (negative side).</summary>
-  static Vector3d FaceNormal(int face)
+  internal static Vector3d FaceNormal(int face)
   {
     Vector3d n = Vector3d.Zero;
     n[face >> 1] = (face & 1) == 0 ? 1.0 : -1.0;
@@ -140,7 +140,7 @@ public class Cube : DefaultSceneNode, ISolid, IRecordSolid
   }
 
   /// <summary>Texture coordinates on the face with normal <paramref name="n"/>: the two coordinates along it.</summary>
-  static Vector2d TextureCoordAt(in Vector3d p, in Vector3d n) =>
+  internal static Vector2d TextureCoordAt(in Vector3d p, in Vector3d n) =>
     n.X != 0.0 ? new Vector2d(p.Y, p.Z) : n.Y != 0.0 ? new Vector2d(p.X, p.Z) : new Vector2d(p.X, p.Y);
 
   /// <summary>The part of <see cref="CompleteIntersection"/> the library's shading reads (same arithmetic): no tangents.</summary>

@@ -52,8 +52,8 @@ public class PlainSurfaceKernelTests
       if (takes)
         plain.Add(name);
     }
-    // The scenes of balls and planes; the others have cubes, cylinders, CSG, tori, Bézier patches or (Test scene) an area light.
-    Assert.Equal(["Five balls", "Sphere on the plane", "Two spheres", "Sphere flake"], plain);
+    // The scenes of balls, planes and cubes; the others have cylinders, CSG, tori, Bézier patches or (Test scene) an area light.
+    Assert.Equal(["Five balls", "Sphere on the plane", "Two spheres", "Sphere flake", "Cubes"], plain);
   }
 
   [Fact]
@@ -78,10 +78,15 @@ public class PlainSurfaceKernelTests
     Assert.False(TakesPlainPath(new DistributedRayTracing(Scene("Two spheres"))));
   }
 
-  /// <summary>The settings the plain path reads, one changed at a time (and none).</summary>
+  /// <summary>
+  /// The settings the plain path reads, one changed at a time (and none), on Two spheres; the other plain scenes as they
+  /// are, and Cubes with a checker on a cube (its face's texture coordinates).
+  /// </summary>
   public static IEnumerable<object[]> Variants() =>
     new[] { "default", "fresnel", "transparent shadows", "no shadows", "no reflections", "no refractions", "no lights",
-            "two-band colour", "two checkers", "shallow" }.Select(v => new object[] { v });
+            "two-band colour", "two checkers", "shallow" }.Select(v => new object[] { "Two spheres", v })
+    .Concat(new[] { "Five balls", "Sphere on the plane", "Sphere flake", "Cubes" }.Select(n => new object[] { n, "default" }))
+    .Append(["Cubes", "two checkers"]);
 
   static void Apply(string variant, DefaultRayScene scene, params RayTracing[] functions)
   {
@@ -104,7 +109,8 @@ public class PlainSurfaceKernelTests
         root.Children.First().SetAttribute(PropertyName.COLOR, new[] { 0.5, 0.2 });
         break;
       case "two checkers":
-        // A second checker with two bands over the floor's: the surface colour changes length between them.
+        // A second checker with two bands over the last child's colour (Two spheres: the floor's checker; Cubes: a cube's
+        // own colour): the surface colour changes length between them.
         ((DefaultSceneNode)root.Children.Last()).AddTexture(new CheckerTexture(2.0, 1.5, [0.2, 0.9]));
         break;
     }
@@ -112,14 +118,14 @@ public class PlainSurfaceKernelTests
 
   [Theory]
   [MemberData(nameof(Variants))]
-  public void Plain_path_gives_shades_colours_rays_and_hashes(string variant)
+  public void Plain_path_gives_shades_colours_rays_and_hashes(string name, string variant)
   {
     // One scene for both: a hit's hash is its solid's object hash.
-    DefaultRayScene scene = Scene("Two spheres");
+    DefaultRayScene scene = Scene(name);
     var function = new RayTracing(scene);
     var textbook = new WhittedKernelTests.TextbookRayTracing(scene);
     Apply(variant, scene, function, textbook);
-    Assert.True(TakesPlainPath(function), $"{variant}: the plain path was not taken");
+    Assert.True(TakesPlainPath(function), $"{name}, {variant}: the plain path was not taken");
     WhittedKernel kernel = WhittedKernel.For(function)!;
     var k = new double[3];
     var t = new double[3];
@@ -138,9 +144,9 @@ public class PlainSurfaceKernelTests
         Assert.Equal(scratch.Hits - hitsBefore, hits);
         for (int c = 0; c < 3; c++)
           Assert.True(BitConverter.DoubleToInt64Bits(t[c]) == BitConverter.DoubleToInt64Bits(k[c]),
-                      $"{variant}, pixel ({x}, {y}), band {c}: kernel {k[c]:R}, shade {t[c]:R}");
+                      $"{name}, {variant}, pixel ({x}, {y}), band {c}: kernel {k[c]:R}, shade {t[c]:R}");
         hashes.Add(hash);
       }
-    Assert.True(hashes.Count > 10, $"{variant}: {hashes.Count} distinct hashes");
+    Assert.True(hashes.Count > 10, $"{name}, {variant}: {hashes.Count} distinct hashes");
   }
 }
