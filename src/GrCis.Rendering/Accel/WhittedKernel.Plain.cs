@@ -84,8 +84,7 @@ internal sealed partial class WhittedKernel
         double transmit = 1.0;
         if (f.DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0))
         {
-          scratch.Rays++;
-          transmit = f.TransparentShadows ? f.ShadowTransmittance(point, dir) : ps.Occluded(point, dir) ? 0.0 : 1.0;
+          transmit = Transmittance(scratch, point, dir);
           if (transmit <= 0.0)
           {
             scratch.Hits++;   // a blocked shadow ray

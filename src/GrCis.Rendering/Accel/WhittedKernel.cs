@@ -256,13 +256,7 @@ internal sealed partial class WhittedKernel
     double transmit = 1.0;
     if (f.DoShadows && (dir.X != 0.0 || dir.Y != 0.0 || dir.Z != 0.0))
     {
-      if (f.TransparentShadows)
-      {
-        scratch.Rays++;
-        transmit = f.ShadowTransmittance(i.CoordWorld, dir);
-      }
-      else
-        transmit = Occluded(scratch, i.CoordWorld, dir) ? 0.0 : 1.0;
+      transmit = Transmittance(scratch, i.CoordWorld, dir);
       scratch.Observer?.ShadowRay(i.CoordWorld, dir, transmit <= 0.0);
       if (transmit <= 0.0)
       {
@@ -297,12 +291,18 @@ internal sealed partial class WhittedKernel
     return ps.FirstHit(p0, p1, scratch.Intersection(depth), ReferenceEquals(ps, f.surfaceOnly));
   }
 
-  /// <summary><see cref="RayTracing"/>'s shadow query (the kernel serves only functions that keep it), counting the ray.</summary>
-  bool Occluded(ShadingScratch scratch, Vector3d p0, Vector3d dir)
+  /// <summary>
+  /// The share of a light that reaches <paramref name="p0"/> along <paramref name="dir"/>, counting the shadow ray: the
+  /// function's <see cref="RayTracing.ShadowTransmittance"/> with <c>TransparentShadows</c>, else 0 or 1 by
+  /// <see cref="RayTracing"/>'s shadow query (the kernel serves only functions that keep it).
+  /// </summary>
+  double Transmittance(ShadingScratch scratch, in Vector3d p0, in Vector3d dir)
   {
     scratch.Rays++;
+    if (function.TransparentShadows)
+      return function.ShadowTransmittance(p0, dir);
     PreparedScene? ps = Prepared(scratch);
-    return ps != null ? ps.AnyHit(p0, dir) : function.Lists.AnyHit(p0, dir);
+    return (ps != null ? ps.AnyHit(p0, dir) : function.Lists.AnyHit(p0, dir)) ? 0.0 : 1.0;
   }
 
   /// <summary>
