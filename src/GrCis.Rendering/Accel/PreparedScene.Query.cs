@@ -26,6 +26,12 @@ public sealed partial class PreparedScene
     public int InsideLeaf;
     public double InsideT;
 
+    /// <summary>
+    /// With a member the ray starts inside: another member is entered before that member's exit (or at the same T), so
+    /// the union rule does not decide the first record and the faithful path does.
+    /// </summary>
+    public readonly bool EnteredBeforeExit => BestIndex != int.MaxValue && EntryT <= InsideT;
+
     // Shadow queries: stop at the first blocker (Found), then only members that may contain the origin are visited.
     public bool Any;
     public bool Found;

@@ -55,9 +55,6 @@ public sealed partial class PreparedScene : ISceneQuery
   // Union-merge semantics over all members; false: one member whose raw list the scene returns.
   readonly bool union;
 
-  // Every member a plain surface (PlainSurfaces).
-  readonly bool plainSurfaces;
-
   long fallbacks;
 
   /// <summary>The intersectable this snapshot was prepared from.</summary>
@@ -140,7 +137,7 @@ public sealed partial class PreparedScene : ISceneQuery
       anyHit = capabilities.ListCount == 0 && !Array.Exists(members, m => m.NoShadow);
     }
     lineBoxes = Array.Exists(always, k => members[k].HasLineBox);
-    plainSurfaces = union && Array.TrueForAll(members, m => LibraryTypes.IsPlainSurface(m));
+    PlainSurfaces = union && Array.TrueForAll(members, m => LibraryTypes.IsPlainSurface(m));
   }
 
 
@@ -192,7 +189,7 @@ public sealed partial class PreparedScene : ISceneQuery
     {
       // Starting inside one member: the union's first record is that member's exit, unless another
       // member is entered first (or at the same T): then the faithful path decides.
-      if (q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT)
+      if (q.EnteredBeforeExit)
         return ListFirstHit(p0, p1);
       return Complete(ref Solid(q.InsideIndex, q.InsideLeaf), q.InsideHit, reuse, surfaceOnly);
     }
@@ -205,7 +202,7 @@ public sealed partial class PreparedScene : ISceneQuery
   /// True when every member is a plain surface (<see cref="LibraryTypes.IsPlainSurface"/>) under union semantics: the
   /// Whitted kernel may shade this scene's hits from <see cref="FirstRecord"/> without hit objects.
   /// </summary>
-  internal bool PlainSurfaces => plainSurfaces;
+  internal bool PlainSurfaces { get; }
 
   /// <summary>Member <paramref name="index"/> as the preparation bound it.</summary>
   internal ref readonly PreparedMember Member(int index) => ref members[index];
@@ -231,7 +228,7 @@ public sealed partial class PreparedScene : ISceneQuery
     if (q.InsideIndex >= 0)
     {
       // As FirstHit: the inside member's exit, unless another member is entered first (or at the same T).
-      if ((q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT) || q.InsideLeaf >= 0)
+      if (q.EnteredBeforeExit || q.InsideLeaf >= 0)
         return -1;
       member = q.InsideIndex;
       hit = q.InsideHit;
@@ -332,7 +329,7 @@ public sealed partial class PreparedScene : ISceneQuery
   {
     if (q.InsideIndex >= 0)
     {
-      if ((q.BestIndex != int.MaxValue && q.EntryT <= q.InsideT) || Solid(q.InsideIndex, q.InsideLeaf).NoShadow)
+      if (q.EnteredBeforeExit || Solid(q.InsideIndex, q.InsideLeaf).NoShadow)
         return ListOccluded(p0, dir);
       return NotFar(q.InsideT, len2);
     }
